@@ -1,0 +1,9 @@
+// The sub-commands of the volgrid CLI. Each takes the arguments after the program name (argv[0] is the
+// sub-command's own name), prints results to stdout, errors to stderr, and returns the exit code.
+#pragma once
+
+int runDelaunayCommand(int argc, char** argv); // volgrid delaunay INPUT.node|--random N [--seed S] ...
+int runMeshCommand(int argc, char** argv);     // volgrid mesh SURFACE OUT.vtu ...
+int runQualityCommand(int argc, char** argv);  // volgrid quality MESH.vtu [--json]
+int runPrepCommand(int argc, char** argv);     // volgrid prep IN... OUT ...
+int runCheckCommand(int argc, char** argv);    // volgrid check SURFACE [--json]

@@ -1,0 +1,2 @@
+#include "Commands.h"
+int runQualityCommand(int, char**) { return 1; }

@@ -1,0 +1,62 @@
+// volgrid: the command-line face of VolGrid. `volgrid help` lists the sub-commands.
+#include "Commands.h"
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+namespace
+{
+struct SubCommand
+{
+  const char* name;
+  int (*run)(int, char**);
+  const char* summary;
+};
+
+const SubCommand kCommands[] = {
+  { "delaunay", runDelaunayCommand,
+    "INPUT.node | --random N [--seed S]  [--check] [--json] [--out FILE.vtu]: Delaunay tetrahedralization" },
+  { "quality", runQualityCommand, "MESH.vtu [--json] [--bins N]: volume or surface grid quality summary" },
+};
+
+int printUsage(FILE* out)
+{
+  std::fprintf(out, "usage: volgrid COMMAND [ARGS]\n\ncommands:\n");
+  for (const SubCommand& c : kCommands)
+  {
+    std::fprintf(out, "  %-9s %s\n", c.name, c.summary);
+  }
+  return out == stderr ? 2 : 0;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc < 2)
+  {
+    return printUsage(stderr);
+  }
+  const std::string command = argv[1];
+  if (command == "help" || command == "--help" || command == "-h")
+  {
+    return printUsage(stdout);
+  }
+  for (const SubCommand& c : kCommands)
+  {
+    if (command == c.name)
+    {
+      try
+      {
+        return c.run(argc - 1, argv + 1);
+      }
+      catch (const std::exception& e)
+      {
+        std::fprintf(stderr, "volgrid %s: internal error: %s\n", c.name, e.what());
+        return 3;
+      }
+    }
+  }
+  std::fprintf(stderr, "volgrid: unknown command '%s'\n", command.c_str());
+  return printUsage(stderr);
+}
