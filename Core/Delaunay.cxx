@@ -1,0 +1,688 @@
+#include "Delaunay.h"
+
+#include "Predicates.h"
+#include "SpatialSort.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace volgrid
+{
+
+namespace
+{
+constexpr int kFV[4][3] = { { 1, 3, 2 }, { 0, 2, 3 }, { 0, 3, 1 }, { 0, 1, 2 } };
+constexpr uint8_t kInCavity = TetMesh::kMarkA;
+constexpr uint8_t kOutside = TetMesh::kMarkB; // tested, not in conflict
+
+inline bool samePoint(const double* a, const double* b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+// Key of the undirected edge {a,b} (a or b may be kGhostVertex).
+inline uint64_t edgeKey(int32_t a, int32_t b)
+{
+  const uint32_t x = static_cast<uint32_t>(a + 1), y = static_cast<uint32_t>(b + 1);
+  return x < y ? (uint64_t(x) << 32) | y : (uint64_t(y) << 32) | x;
+}
+
+// For a new tet with the cavity face opposite `f`, the face g (g != f) contains the new point and the
+// edge made of the two local indices other than f and g: kOther[f][g] = {x, y}.
+struct EdgePair
+{
+  int8_t x, y;
+};
+constexpr EdgePair kOther[4][4] = {
+  { { -1, -1 }, { 2, 3 }, { 1, 3 }, { 1, 2 } },
+  { { 2, 3 }, { -1, -1 }, { 0, 3 }, { 0, 2 } },
+  { { 1, 3 }, { 0, 3 }, { -1, -1 }, { 0, 1 } },
+  { { 1, 2 }, { 0, 2 }, { 0, 1 }, { -1, -1 } },
+};
+} // namespace
+
+// ---------------------------------------------------------------------------------------------------
+struct DelaunayInserter::Impl
+{
+  TetMesh& mesh;
+  uint64_t rng;
+  int32_t last = -1;
+  uint64_t walkSteps = 0;
+  uint64_t cavityTets = 0;
+
+  // Reused buffers (no allocation in the insertion loop once they have grown).
+  struct BoundaryFace
+  {
+    int32_t v[4];    // the new tet: the cavity tet's vertices with the new point at position `face`
+    int32_t outside; // neighbour code of the tet across the face (outside the cavity)
+    int32_t face;
+  };
+  std::vector<int32_t> cavity, stack, outside;
+  std::vector<BoundaryFace> boundary;
+  struct HashSlot
+  {
+    uint64_t key;
+    int32_t code;
+    uint32_t stamp;
+  };
+  std::vector<HashSlot> table;
+  uint32_t stamp = 0;
+
+  // Bucket grid (PointLocation::BucketGrid).
+  bool grid = false;
+  double glo[3] = { 0, 0, 0 }, gscale[3] = { 0, 0, 0 };
+  int gres = 1;
+  std::vector<int32_t> bucketHead; // last vertex registered in the bucket
+  std::vector<int32_t> vertexNext; // next vertex in the same bucket
+  std::vector<int32_t> vertexTet;  // a tet (probably still) incident to the vertex
+
+  Impl(TetMesh& m, uint64_t seed) : mesh(m), rng(seed | 1) {}
+
+  uint32_t random()
+  {
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return static_cast<uint32_t>(rng);
+  }
+
+  int32_t liveTet(int32_t hint) const
+  {
+    if (hint >= 0 && hint < mesh.tetCapacity() && !mesh.isFree(hint))
+      return hint;
+    if (last >= 0 && last < mesh.tetCapacity() && !mesh.isFree(last))
+      return last;
+    for (int32_t t = 0; t < mesh.tetCapacity(); ++t)
+      if (!mesh.isFree(t))
+        return t;
+    return -1;
+  }
+
+  int32_t walk(const double* p, int32_t t)
+  {
+    const int32_t* V = mesh.tetVertices.data();
+    const int32_t* N = mesh.tetNeighbors.data();
+    const double* P = mesh.points.data();
+    int32_t prev = -1;
+    uint32_t bits = 0;
+    int bitsLeft = 0;
+    for (;;)
+    {
+      ++walkSteps;
+      const int32_t* w = V + 4 * static_cast<size_t>(t);
+      if ((w[0] | w[1] | w[2] | w[3]) < 0)
+      {
+        // Ghost: p strictly beyond its hull face -> located (the ghost is in conflict); else go inside.
+        const int k = w[0] < 0 ? 0 : w[1] < 0 ? 1 : w[2] < 0 ? 2 : 3;
+        if (prev < 0)
+        {
+          const int o = predicates::orient3d(P + 3 * static_cast<size_t>(w[kFV[k][0]]),
+            P + 3 * static_cast<size_t>(w[kFV[k][1]]), P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
+          if (o > 0)
+            return t;
+        }
+        else
+          return t; // entered from a finite tet through a face that p strictly sees: in conflict
+        prev = t;
+        t = N[4 * static_cast<size_t>(t) + k] >> 2;
+        continue;
+      }
+      if (bitsLeft == 0)
+      {
+        bits = random();
+        bitsLeft = 16;
+      }
+      const int r = static_cast<int>(bits & 3);
+      bits >>= 2;
+      --bitsLeft;
+      int32_t next = -1;
+      for (int j = 0; j < 4; ++j)
+      {
+        const int i = (r + j) & 3;
+        const int32_t u = N[4 * static_cast<size_t>(t) + i] >> 2;
+        if (u == prev)
+          continue;
+        const int o = predicates::orient3d(P + 3 * static_cast<size_t>(w[kFV[i][0]]),
+          P + 3 * static_cast<size_t>(w[kFV[i][1]]), P + 3 * static_cast<size_t>(w[kFV[i][2]]), p);
+        if (o < 0)
+        {
+          next = u;
+          break;
+        }
+      }
+      if (next < 0)
+        return t;
+      prev = t;
+      t = next;
+    }
+  }
+
+  bool inConflict(int32_t u, const double* p, int32_t v) const
+  {
+    const int32_t* w = mesh.tetVertices.data() + 4 * static_cast<size_t>(u);
+    const double* P = mesh.points.data();
+    if ((w[0] | w[1] | w[2] | w[3]) < 0)
+    {
+      const int k = w[0] < 0 ? 0 : w[1] < 0 ? 1 : w[2] < 0 ? 2 : 3;
+      const int o = predicates::orient3d(P + 3 * static_cast<size_t>(w[kFV[k][0]]),
+        P + 3 * static_cast<size_t>(w[kFV[k][1]]), P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
+      if (o != 0)
+        return o > 0;
+      // p on the plane of the hull face: same answer as the finite tet across it.
+      u = mesh.tetNeighbors[4 * static_cast<size_t>(u) + k] >> 2;
+      w = mesh.tetVertices.data() + 4 * static_cast<size_t>(u);
+    }
+    return predicates::insphereSoS(P + 3 * static_cast<size_t>(w[0]), P + 3 * static_cast<size_t>(w[1]),
+             P + 3 * static_cast<size_t>(w[2]), P + 3 * static_cast<size_t>(w[3]), p, w[0], w[1], w[2], w[3],
+             v) > 0;
+  }
+
+  int32_t gridStart(const double* p) const
+  {
+    int c[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double f = (p[a] - glo[a]) * gscale[a];
+      c[a] = f <= 0 ? 0 : f >= gres - 1 ? gres - 1 : static_cast<int>(f);
+    }
+    const double* P = mesh.points.data();
+    // Search rings of buckets around p's bucket; nearest vertex of the first non-empty ring. Give up
+    // after a few rings (the walk from the last tet takes over): early on most buckets are empty.
+    for (int ring = 0; ring <= std::min(2, gres); ++ring)
+    {
+      int32_t best = -1;
+      double bestD = 0;
+      for (int i = std::max(0, c[0] - ring); i <= std::min(gres - 1, c[0] + ring); ++i)
+        for (int j = std::max(0, c[1] - ring); j <= std::min(gres - 1, c[1] + ring); ++j)
+          for (int k = std::max(0, c[2] - ring); k <= std::min(gres - 1, c[2] + ring); ++k)
+          {
+            if (std::max({ std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2]) }) != ring)
+              continue;
+            for (int32_t v = bucketHead[(static_cast<size_t>(i) * gres + j) * gres + k]; v >= 0;
+                 v = vertexNext[v])
+            {
+              const double* q = P + 3 * static_cast<size_t>(v);
+              const double d =
+                (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]);
+              if (best < 0 || d < bestD)
+              {
+                best = v;
+                bestD = d;
+              }
+            }
+          }
+      if (best >= 0)
+      {
+        const int32_t t = vertexTet[best];
+        if (t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t))
+          return t;
+        return -1;
+      }
+    }
+    return -1;
+  }
+
+  void gridRegister(int32_t v, int32_t t)
+  {
+    if (!grid)
+      return;
+    if (static_cast<size_t>(v) >= vertexNext.size())
+    {
+      vertexNext.resize(static_cast<size_t>(v) + 1 + static_cast<size_t>(v) / 4, -1);
+      vertexTet.resize(vertexNext.size(), -1);
+    }
+    const double* p = mesh.point(v);
+    int c[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double f = (p[a] - glo[a]) * gscale[a];
+      c[a] = f <= 0 ? 0 : f >= gres - 1 ? gres - 1 : static_cast<int>(f);
+    }
+    const size_t b = (static_cast<size_t>(c[0]) * gres + c[1]) * gres + c[2];
+    vertexNext[v] = bucketHead[b];
+    bucketHead[b] = v;
+    vertexTet[v] = t;
+  }
+
+  // Hash of the cavity boundary edges: returns the code stored by the twin face, or stores `code`.
+  int32_t matchEdge(uint64_t key, int32_t code, uint32_t mask)
+  {
+    uint32_t h = static_cast<uint32_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+    for (;;)
+    {
+      HashSlot& s = table[h];
+      if (s.stamp != stamp)
+      {
+        s.key = key;
+        s.code = code;
+        s.stamp = stamp;
+        return -1;
+      }
+      if (s.key == key)
+        return s.code;
+      h = (h + 1) & mask;
+    }
+  }
+
+  Result insert(int32_t v, int32_t hint)
+  {
+    Result res;
+    const double* p = mesh.point(v);
+    int32_t start = -1;
+    if (grid)
+      start = gridStart(p);
+    if (start < 0)
+      start = liveTet(hint);
+    int32_t t = walk(p, start);
+
+    uint8_t* F = mesh.tetFlags.data();
+    int32_t* V = mesh.tetVertices.data();
+    int32_t* N = mesh.tetNeighbors.data();
+    {
+      const int32_t* w = V + 4 * static_cast<size_t>(t);
+      if ((w[0] | w[1] | w[2] | w[3]) >= 0)
+        for (int k = 0; k < 4; ++k)
+          if (samePoint(mesh.point(w[k]), p))
+          {
+            res.tet = t;
+            res.duplicateOf = w[k];
+            last = t;
+            return res;
+          }
+    }
+
+    // ---- cavity: tets in conflict, grown by adjacency from t (which contains p, hence in conflict)
+    cavity.clear();
+    stack.clear();
+    outside.clear();
+    boundary.clear();
+    F[t] |= kInCavity;
+    cavity.push_back(t);
+    stack.push_back(t);
+    int32_t ghostDelta = 0;
+    while (!stack.empty())
+    {
+      const int32_t c = stack.back();
+      stack.pop_back();
+      const int32_t* wc = V + 4 * static_cast<size_t>(c);
+      if ((wc[0] | wc[1] | wc[2] | wc[3]) < 0)
+        --ghostDelta;
+      for (int f = 0; f < 4; ++f)
+      {
+        const int32_t code = N[4 * static_cast<size_t>(c) + f];
+        const int32_t u = code >> 2;
+        const uint8_t fl = F[u];
+        if (fl & kInCavity)
+          continue;
+        if (!(fl & kOutside))
+        {
+          if (inConflict(u, p, v))
+          {
+            F[u] |= kInCavity;
+            cavity.push_back(u);
+            stack.push_back(u);
+            continue;
+          }
+          F[u] |= kOutside;
+          outside.push_back(u);
+        }
+        BoundaryFace bf;
+        bf.v[0] = wc[0];
+        bf.v[1] = wc[1];
+        bf.v[2] = wc[2];
+        bf.v[3] = wc[3];
+        bf.v[f] = v;
+        bf.outside = code;
+        bf.face = f;
+        boundary.push_back(bf);
+      }
+    }
+    cavityTets += cavity.size();
+    for (int32_t u : outside)
+      F[u] &= static_cast<uint8_t>(~kOutside);
+
+    // ---- new tets: reuse the cavity slots, then free/appended slots
+    const size_t nb = boundary.size();
+    const size_t nc = cavity.size();
+    for (size_t i = nc; i < nb; ++i)
+    {
+      cavity.push_back(mesh.newTet(0, 0, 0, 0));
+    }
+    F = mesh.tetFlags.data();
+    V = mesh.tetVertices.data();
+    N = mesh.tetNeighbors.data();
+    uint32_t size = 64;
+    while (size < 4 * nb)
+      size <<= 1;
+    if (table.size() < size)
+      table.assign(size, HashSlot{ 0, 0, 0 }), stamp = 0;
+    if (++stamp == 0)
+    {
+      for (HashSlot& s : table)
+        s.stamp = 0;
+      stamp = 1;
+    }
+    const uint32_t mask = size - 1;
+    for (size_t i = 0; i < nb; ++i)
+    {
+      const BoundaryFace& bf = boundary[i];
+      const int32_t s = cavity[i];
+      int32_t* ws = V + 4 * static_cast<size_t>(s);
+      ws[0] = bf.v[0];
+      ws[1] = bf.v[1];
+      ws[2] = bf.v[2];
+      ws[3] = bf.v[3];
+      if ((bf.v[0] | bf.v[1] | bf.v[2] | bf.v[3]) < 0)
+        ++ghostDelta;
+      F[s] = 0;
+      int32_t* ns = N + 4 * static_cast<size_t>(s);
+      ns[bf.face] = bf.outside;
+      N[bf.outside] = (s << 2) | bf.face;
+      for (int g = 0; g < 4; ++g)
+      {
+        if (g == bf.face)
+          continue;
+        const EdgePair e = kOther[bf.face][g];
+        const int32_t twin = matchEdge(edgeKey(bf.v[e.x], bf.v[e.y]), (s << 2) | g, mask);
+        if (twin >= 0)
+        {
+          ns[g] = twin;
+          N[twin] = (s << 2) | g;
+        }
+      }
+    }
+    // Leftover cavity slots (the cavity had more tets than boundary faces).
+    for (size_t i = nb; i < nc; ++i)
+    {
+      const int32_t s = cavity[i];
+      int32_t* ws = V + 4 * static_cast<size_t>(s);
+      ws[0] = ws[1] = ws[2] = ws[3] = 0; // so that freeTet does not count it as a ghost
+      mesh.freeTet(s);
+    }
+    mesh.adjustGhostCount(ghostDelta);
+    last = cavity[nb - 1];
+    res.tet = last;
+    gridRegister(v, last);
+    return res;
+  }
+};
+
+DelaunayInserter::DelaunayInserter(TetMesh& mesh, uint64_t seed) : impl_(new Impl(mesh, seed)) {}
+DelaunayInserter::~DelaunayInserter() = default;
+
+int32_t DelaunayInserter::locate(const double* p, int32_t hint)
+{
+  const int32_t start = impl_->liveTet(hint);
+  return start < 0 ? -1 : impl_->walk(p, start);
+}
+
+DelaunayInserter::Result DelaunayInserter::insert(int32_t v, int32_t hint)
+{
+  return impl_->insert(v, hint);
+}
+
+void DelaunayInserter::enableBucketGrid(const double lo[3], const double hi[3], size_t expectedVertices)
+{
+  Impl& m = *impl_;
+  m.grid = true;
+  // About 4 vertices per bucket at the end: the paper's depth-limited octree with leaf buckets.
+  int res = 1;
+  while (static_cast<size_t>(res) * res * res * 4 < expectedVertices && res < 512)
+    ++res;
+  m.gres = res;
+  for (int a = 0; a < 3; ++a)
+  {
+    m.glo[a] = lo[a];
+    const double ext = hi[a] - lo[a];
+    m.gscale[a] = ext > 0 ? res / ext : 0.0;
+  }
+  m.bucketHead.assign(static_cast<size_t>(res) * res * res, -1);
+  m.vertexNext.assign(std::max<size_t>(expectedVertices, static_cast<size_t>(m.mesh.numVertices())), -1);
+  m.vertexTet.assign(m.vertexNext.size(), -1);
+}
+
+void DelaunayInserter::registerVertex(int32_t v, int32_t tet)
+{
+  impl_->gridRegister(v, tet);
+}
+
+int32_t DelaunayInserter::lastTet() const { return impl_->last; }
+uint64_t DelaunayInserter::walkSteps() const { return impl_->walkSteps; }
+uint64_t DelaunayInserter::cavityTets() const { return impl_->cavityTets; }
+
+// ---------------------------------------------------------------------------------------------------
+int32_t initDelaunayTet(TetMesh& mesh, int32_t a, int32_t b, int32_t c, int32_t d)
+{
+  const int o = predicates::orient3d(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d));
+  assert(o != 0);
+  if (o < 0)
+    std::swap(a, b);
+  const int32_t t = mesh.newTet(a, b, c, d);
+  int32_t ghosts[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    int32_t f[3];
+    mesh.faceVertices(t, i, f);
+    // Reverse the face so that the vertex at infinity (outside) sees it positively.
+    ghosts[i] = mesh.newTet(f[0], f[2], f[1], TetMesh::kGhostVertex);
+    mesh.link(t, i, ghosts[i], 3);
+  }
+  // Ghost faces 0,1,2 contain the vertex at infinity and a hull edge: pair them by edge.
+  for (int i = 0; i < 4; ++i)
+    for (int g = 0; g < 3; ++g)
+    {
+      if (mesh.neighborCode(ghosts[i], g) >= 0)
+        continue;
+      const EdgePair e = kOther[3][g];
+      const uint64_t key = edgeKey(mesh.vertex(ghosts[i], e.x), mesh.vertex(ghosts[i], e.y));
+      for (int j = 0; j < 4; ++j)
+        for (int h = 0; h < 3 && j != i; ++h)
+        {
+          const EdgePair e2 = kOther[3][h];
+          if (edgeKey(mesh.vertex(ghosts[j], e2.x), mesh.vertex(ghosts[j], e2.y)) == key)
+            mesh.link(ghosts[i], g, ghosts[j], h);
+        }
+    }
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------------
+namespace
+{
+
+// Merge exact duplicates among Hilbert-sorted ids (equal coordinates have equal keys). Fills
+// inputToVertex for the merged ones and removes them from ids; the representative is the lowest id.
+void mergeDuplicates(const double* xyz, std::vector<int32_t>& ids, const std::vector<uint64_t>& keys,
+  std::vector<int32_t>& inputToVertex)
+{
+  size_t out = 0;
+  const size_t n = ids.size();
+  std::vector<int32_t> run;
+  for (size_t i = 0; i < n;)
+  {
+    size_t j = i + 1;
+    while (j < n && keys[j] == keys[i])
+      ++j;
+    if (j == i + 1)
+    {
+      ids[out++] = ids[i];
+      i = j;
+      continue;
+    }
+    run.assign(ids.begin() + static_cast<std::ptrdiff_t>(i), ids.begin() + static_cast<std::ptrdiff_t>(j));
+    std::sort(run.begin(), run.end(), [&](int32_t a, int32_t b) {
+      const double* p = xyz + 3 * static_cast<size_t>(a);
+      const double* q = xyz + 3 * static_cast<size_t>(b);
+      if (p[0] != q[0])
+        return p[0] < q[0];
+      if (p[1] != q[1])
+        return p[1] < q[1];
+      if (p[2] != q[2])
+        return p[2] < q[2];
+      return a < b;
+    });
+    int32_t rep = -1;
+    for (size_t k = 0; k < run.size(); ++k)
+    {
+      if (k > 0 && samePoint(xyz + 3 * static_cast<size_t>(run[k]), xyz + 3 * static_cast<size_t>(rep)))
+      {
+        inputToVertex[run[k]] = rep;
+        continue;
+      }
+      rep = run[k];
+      ids[out++] = rep;
+    }
+    i = j;
+  }
+  ids.resize(out);
+}
+
+bool collinear(const double* a, const double* b, const double* c)
+{
+  return predicates::orient2dProjected(a, b, c, 0) == 0 && predicates::orient2dProjected(a, b, c, 1) == 0 &&
+    predicates::orient2dProjected(a, b, c, 2) == 0;
+}
+
+} // namespace
+
+Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options, TetMesh& mesh,
+  std::vector<int32_t>& inputToVertex, Progress* progress, DelaunayReport* report)
+{
+  SilentProgress silent;
+  if (!progress)
+    progress = &silent;
+  DelaunayReport localReport;
+  DelaunayReport& rep = report ? *report : localReport;
+  rep = DelaunayReport();
+  rep.numInput = n;
+  mesh.clear();
+  inputToVertex.clear();
+  if (n == 0 || !xyz)
+    return Status::failure(ErrorKind::EmptyInput, "The point set is empty.");
+  // Tet indices are stored as (tet<<2)|face in int32: about 6.5 tets per point -> 2^29 / 7 points.
+  if (n > (size_t(1) << 29) / 8)
+    return Status::failure(ErrorKind::InvalidOption,
+      "Too many points (" + std::to_string(n) + "); at most " + std::to_string((size_t(1) << 29) / 8) +
+        " are supported.");
+  {
+    size_t bad = 0;
+    std::vector<int64_t> first;
+    for (size_t i = 0; i < n; ++i)
+    {
+      const double* p = xyz + 3 * i;
+      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+      {
+        if (first.size() < 5)
+          first.push_back(static_cast<int64_t>(i));
+        ++bad;
+      }
+    }
+    if (bad)
+      return Status::failure(ErrorKind::NonFinitePoint,
+        std::to_string(bad) + " point(s) have NaN or infinite coordinates (first id " +
+          std::to_string(first[0]) + ").",
+        first);
+  }
+  progress->report(0.0, "Sorting points");
+
+  // Insertion order (and exact duplicate merging when sorting).
+  inputToVertex.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    inputToVertex[i] = static_cast<int32_t>(i);
+  std::vector<int32_t> order(n);
+  for (size_t i = 0; i < n; ++i)
+    order[i] = static_cast<int32_t>(i);
+  if (options.spatialSort)
+  {
+    std::vector<uint64_t> keys;
+    hilbertSort(xyz, order, &keys);
+    mergeDuplicates(xyz, order, keys, inputToVertex);
+    std::vector<uint64_t>().swap(keys);
+    brioRounds(order, options.seed);
+  }
+
+  // Points; tets: ~6.6 per point for uniform random points (plus a little slack, then 1.5x growth).
+  mesh.reserve(n, static_cast<size_t>(6.7 * static_cast<double>(order.size())) + 64);
+  mesh.points.assign(xyz, xyz + 3 * n);
+
+  // First tet: four affinely independent points, the earliest in insertion order.
+  const size_t m = order.size();
+  size_t ia = 0, ib = m, ic = m, id = m;
+  for (size_t k = 1; k < m && ib == m; ++k)
+    if (!samePoint(mesh.point(order[k]), mesh.point(order[ia])))
+      ib = k;
+  for (size_t k = ib + 1; k < m && ic == m; ++k)
+    if (!collinear(mesh.point(order[ia]), mesh.point(order[ib]), mesh.point(order[k])))
+      ic = k;
+  for (size_t k = ic + 1; k < m && id == m; ++k)
+    if (predicates::orient3d(mesh.point(order[ia]), mesh.point(order[ib]), mesh.point(order[ic]),
+          mesh.point(order[k])) != 0)
+      id = k;
+  if (id >= m)
+  {
+    mesh.clear();
+    const char* what = ib >= m ? "identical" : ic >= m ? "collinear" : "coplanar";
+    return Status::failure(ErrorKind::DegenerateInput,
+      "All " + std::to_string(n) + " points are " + what +
+        ": a tetrahedralization needs at least four affinely independent points.");
+  }
+  initDelaunayTet(mesh, order[ia], order[ib], order[ic], order[id]);
+
+  DelaunayInserter inserter(mesh, options.seed);
+  if (options.location == PointLocation::BucketGrid)
+  {
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; ++a)
+      lo[a] = hi[a] = xyz[a];
+    for (size_t i = 0; i < n; ++i)
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], xyz[3 * i + a]);
+        hi[a] = std::max(hi[a], xyz[3 * i + a]);
+      }
+    inserter.enableBucketGrid(lo, hi, n);
+    for (int32_t t = 0; t < mesh.tetCapacity(); ++t)
+      if (!mesh.isGhost(t))
+        for (int k = 0; k < 4; ++k)
+          inserter.registerVertex(mesh.vertex(t, k), t);
+  }
+  progress->report(0.0, "Inserting points");
+  constexpr size_t kReportEvery = size_t(1) << 16;
+  size_t done = 4;
+  for (size_t k = 0; k < m; ++k)
+  {
+    if (k == ia || k == ib || k == ic || k == id)
+      continue;
+    const int32_t v = order[k];
+    const DelaunayInserter::Result r = inserter.insert(v, -1);
+    if (r.duplicateOf >= 0)
+      inputToVertex[v] = r.duplicateOf;
+    if ((++done & (kReportEvery - 1)) == 0)
+    {
+      progress->report(static_cast<double>(done) / static_cast<double>(m), "Inserting points");
+      if (progress->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
+    }
+  }
+  // Duplicates found during insertion (input order, no sorting) map to the earlier-inserted point,
+  // which is the lowest id: insertion follows the input order apart from the first four points, and
+  // none of those can have an earlier twin (they are the first points that differ / are not collinear
+  // / not coplanar).
+  for (size_t i = 0; i < n; ++i)
+    if (inputToVertex[i] != static_cast<int32_t>(i))
+    {
+      ++rep.numDuplicates;
+      if (rep.firstDuplicates.size() < 5)
+        rep.firstDuplicates.push_back(static_cast<int64_t>(i));
+    }
+  rep.numVertices = n - rep.numDuplicates;
+  rep.walkSteps = inserter.walkSteps();
+  rep.cavityTets = inserter.cavityTets();
+  if (!options.keepGhosts)
+    mesh.removeGhostTets();
+  progress->report(1.0, "Inserting points");
+  return Status::success();
+}
+
+} // namespace volgrid
