@@ -1,0 +1,102 @@
+/**
+ * @class   vtkVolGridQuality
+ * @brief   Volume and surface grid quality of the VolGrid paper (section 8.2), threaded, with statistics.
+ *
+ * Input: a vtkUnstructuredGrid (tetrahedra are measured) or a vtkPolyData (triangles are measured).
+ * Other cells are skipped: their values are NaN and a warning says how many there were.
+ *
+ * Output port 0: the input with per-cell arrays added.
+ *  - Volume grids: AspectRatio, MinDihedralAngle, MaxDihedralAngle (degrees), MinSolidAngle (steradians),
+ *    Volume (signed: inverted tets are negative), VolumeGradient (largest |volume difference| with a
+ *    face neighbour), RadiusEdgeRatio, RadiusRatio (vtkMeshQuality's tet radius ratio).
+ *  - Surface grids: AspectRatio, Area, MinAngle, MaxAngle (degrees).
+ *  - Quality: a copy of the selected metric (see SetMetric), so that ParaView colours by it at once.
+ *  Field data: per metric a 6-component array "<Metric>Statistics" (Count, Min, Max, Mean, StdDev,
+ *  WorstCell), and the grid-wide figures (NumberOfTetrahedra, SkippedCells, TotalVolume; or for
+ *  surfaces NumberOfElements, SurfaceArea, EnclosedVolume, BoundaryEdges, BoundaryLoops,
+ *  NonManifoldEdges, Shells, SkippedCells).
+ *
+ * Output port 1: a vtkTable with one row per histogram bin, ready for a bar chart: Bin, and per metric
+ * "<Metric>_BinStart", "<Metric>_BinEnd", "<Metric>_Count" (the counts of a metric sum to the number of
+ * measured cells). Its field data carries the same summary arrays as port 0, including the index of the
+ * worst cell per metric.
+ *
+ * The metric definitions and their values for degenerate elements are those of Core/Quality.h; the
+ * statistics are those of Core/QualityStatistics.h. The loops run with vtkSMPTools; all results are
+ * bit-identical for any number of threads. If the process uses the Sequential SMP backend (the default
+ * of ParaView's VTK), the filter runs its loops with the STDThread backend for its own duration.
+ */
+#ifndef vtkVolGridQuality_h
+#define vtkVolGridQuality_h
+
+#include "vtkPassInputTypeAlgorithm.h"
+#include "vtkVolGridFiltersModule.h"
+
+class VTKVOLGRIDFILTERS_EXPORT vtkVolGridQuality : public vtkPassInputTypeAlgorithm
+{
+public:
+  static vtkVolGridQuality* New();
+  vtkTypeMacro(vtkVolGridQuality, vtkPassInputTypeAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Metrics
+  {
+    ASPECT_RATIO = 0,
+    MIN_DIHEDRAL_ANGLE = 1,
+    MAX_DIHEDRAL_ANGLE = 2,
+    MIN_SOLID_ANGLE = 3,
+    VOLUME = 4,
+    VOLUME_GRADIENT = 5,
+    RADIUS_EDGE_RATIO = 6,
+    RADIUS_RATIO = 7,
+    AREA = 8,
+    MIN_ANGLE = 9,
+    MAX_ANGLE = 10
+  };
+
+  ///@{
+  /**
+   * The metric copied into the "Quality" array (default MIN_DIHEDRAL_ANGLE). A volume metric selected
+   * for a surface uses its surface counterpart and vice versa: dihedral and solid angles <-> triangle
+   * angles (min to MinAngle, max to MaxAngle), Volume and VolumeGradient <-> Area, RadiusEdgeRatio and
+   * RadiusRatio -> AspectRatio.
+   */
+  vtkSetClampMacro(Metric, int, ASPECT_RATIO, MAX_ANGLE);
+  vtkGetMacro(Metric, int);
+  ///@}
+
+  ///@{
+  /** Number of histogram bins per metric, in [1, 10000] (default 20). */
+  vtkSetClampMacro(BinCount, int, 1, 10000);
+  vtkGetMacro(BinCount, int);
+  ///@}
+
+  /** The name of a metric's array ("AspectRatio", ...), or nullptr for an invalid value. */
+  static const char* GetMetricName(int metric);
+
+  /** After an update: the number of cells that were skipped (not tetrahedra / not triangles). */
+  vtkGetMacro(NumberOfSkippedCells, vtkIdType);
+
+protected:
+  vtkVolGridQuality();
+  ~vtkVolGridQuality() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Metric;
+  int BinCount;
+  vtkIdType NumberOfSkippedCells;
+
+private:
+  vtkVolGridQuality(const vtkVolGridQuality&) = delete;
+  void operator=(const vtkVolGridQuality&) = delete;
+
+  struct Internals;
+  friend struct Internals;
+  bool Execute(class vtkDataSet* input, class vtkDataSet* output, class vtkTable* table);
+};
+
+#endif
