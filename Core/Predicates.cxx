@@ -1,0 +1,695 @@
+// Exact geometric predicates: filtered double evaluation, exact fallback with expansion arithmetic.
+//
+// Structure of every predicate:
+//   1. Fast path: evaluate the determinant in doubles from coordinate differences, and a sound forward
+//      error bound B = c * permanent + U (see "Error bounds" below). If |det| > B the sign is certain.
+//   2. Exact path (rare): scale the inputs by a power of two so that no product can overflow or lose
+//      bits to underflow (the sign of a homogeneous determinant is invariant under positive scaling),
+//      then evaluate exactly with expansions. A first exact stage uses the differences when they are
+//      exact (typical of grids and near-duplicate coordinates); otherwise the determinant is expanded
+//      over the raw coordinates, where every product is exact.
+//
+// Error bounds. With the standard model fl(x op y) = (x op y)(1 + d), |d| <= eps = 2^-53, every monomial
+// of a determinant evaluated by a tree of + and * comes out multiplied by prod(1 + d_j) over the n
+// roundings on its path (input differences included), so |computed - exact| <= gamma_n * permanent,
+// gamma_n = n eps / (1 - n eps). The permanent is itself computed in doubles (same tree, absolute
+// values), and the bound c * permanent once more; the constants c below take all of that into account
+// with slack (n = 8 for orient3d, 16 for insphere, 12 for incircle3d, 3 for orient2d).
+// Gradual underflow adds an absolute error <= 2^-1075 per product, amplified by the factors that later
+// multiply it; U is a (generous) bound on that, tiny unless the inputs are tiny or huge. Overflow gives
+// inf/NaN in det or in the permanent, and then the comparison fails and the exact path decides.
+#include "Predicates.h"
+
+#include "ExpansionArithmetic.h"
+
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <utility>
+
+namespace volgrid
+{
+namespace predicates
+{
+namespace
+{
+using namespace expansion;
+
+constexpr double kEps = 0x1p-53;
+constexpr double kOrient3dBound = (8.0 + 256.0 * kEps) * kEps;
+constexpr double kInsphereBound = (16.0 + 1024.0 * kEps) * kEps;
+constexpr double kIncircleBound = (12.0 + 512.0 * kEps) * kEps;
+constexpr double kOrient2dBound = (3.0 + 64.0 * kEps) * kEps;
+
+inline int signOf(double x)
+{
+  return (x > 0.0) - (x < 0.0);
+}
+
+// A small fixed-capacity expansion (stack storage; no allocation anywhere in this file).
+template <int N>
+struct Exp
+{
+  double v[N];
+  int n = 0;
+};
+
+// ---------------------------------------------------------------------------------------------------
+// Scaling into the safe exponent window.
+
+// Exponents of the largest and of the lowest set bit over a set of doubles (zeros ignored).
+struct BitRange
+{
+  int top = INT_MIN; // floor(log2 |x|) of the largest |x|
+  int low = INT_MAX; // exponent of the least significant set bit over all x
+};
+
+inline int countTrailingZeros(uint64_t m)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(m);
+#else
+  int n = 0;
+  while ((m & 1u) == 0)
+  {
+    m >>= 1;
+    ++n;
+  }
+  return n;
+#endif
+}
+
+inline int floorLog2(uint64_t m)
+{
+  int n = -1;
+  while (m)
+  {
+    m >>= 1;
+    ++n;
+  }
+  return n;
+}
+
+inline void includeInRange(BitRange& r, double x)
+{
+  if (x == 0.0)
+  {
+    return;
+  }
+  uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  uint64_t mant = bits & ((uint64_t(1) << 52) - 1);
+  int top;
+  int low;
+  if (biased == 0)
+  { // subnormal: mant * 2^-1074
+    top = -1074 + floorLog2(mant);
+    low = -1074 + countTrailingZeros(mant);
+  }
+  else
+  {
+    mant |= uint64_t(1) << 52;
+    top = biased - 1023;
+    low = biased - 1075 + countTrailingZeros(mant);
+  }
+  r.top = top > r.top ? top : r.top;
+  r.low = low < r.low ? low : r.low;
+}
+
+// Copies n points into out, scaled by a power of two chosen so that every coordinate x satisfies
+// |x| < 2^(maxTop+1) and has no set bit below 2^minLow. For a determinant of degree k the caller picks
+// maxTop so that no partial result can overflow (nor the splitter, 2^27 x), and minLow = -960/k so
+// that every nonzero product of components has magnitude >= 2^-960, where two-product is exact.
+// Returns false when the inputs span more bits than the window (only for absurd mixes such as 1e-300
+// and 1e+300 in one call); the scaling is then the best possible but not guaranteed exact.
+bool scaleInto(const double* const* pts, int n, int maxTop, int minLow, double (*out)[3])
+{
+  BitRange r;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      includeInRange(r, pts[i][k]);
+    }
+  }
+  int shift = 0;
+  bool exact = true;
+  if (r.top != INT_MIN && (r.top > maxTop || r.low < minLow))
+  {
+    shift = maxTop - r.top;
+    exact = r.low + shift >= minLow;
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      out[i][k] = shift ? std::ldexp(pts[i][k], shift) : pts[i][k];
+    }
+  }
+  return exact;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Exact building blocks over points given as plain doubles (raw coordinates or exact differences).
+
+// p[i] * q[j] - q[i] * p[j], exactly (<= 4 components).
+inline void minor2(double pi, double pj, double qi, double qj, Exp<4>& h)
+{
+  double a1, a0, b1, b0;
+  twoProduct(pi, qj, a1, a0);
+  twoProduct(qi, pj, b1, b0);
+  const double e[2] = { a0, a1 };
+  const double f[2] = { -b0, -b1 };
+  h.n = sumExpansions(2, e, 2, f, h.v);
+}
+
+// det of rows p,q,r (columns x,y,z) expanded along z: pz*m(q,r) - qz*m(p,r) + rz*m(p,q), with the xy
+// minors given. <= 24 components.
+inline void det3FromMinors(double pz, double qz, double rz, const Exp<4>& mqr, const Exp<4>& mpr,
+  const Exp<4>& mpq, Exp<24>& h)
+{
+  double t1[8], t2[8], t3[8], t12[16];
+  const int n1 = scaleExpansion(mqr.n, mqr.v, pz, t1);
+  const int n2 = scaleExpansion(mpr.n, mpr.v, -qz, t2);
+  const int n3 = scaleExpansion(mpq.n, mpq.v, rz, t3);
+  const int n12 = sumExpansions(n1, t1, n2, t2, t12);
+  h.n = sumExpansions(n12, t12, n3, t3, h.v);
+}
+
+// |p|^2 exactly (<= 6 components).
+inline void squaredNorm(const double* p, Exp<6>& h)
+{
+  double x[2], y[2], z[2], xy[4];
+  twoSquare(p[0], x[1], x[0]);
+  twoSquare(p[1], y[1], y[0]);
+  twoSquare(p[2], z[1], z[0]);
+  const int nxy = sumExpansions(2, x, 2, y, xy);
+  h.n = sumExpansions(nxy, xy, 2, z, h.v);
+}
+
+// Index of the xy minor of points i < j among 5, and of the triple i < j < k (bit masks keep it simple).
+inline int pairMask(int i, int j)
+{
+  return (1 << i) | (1 << j);
+}
+
+// All xy minors and z-expanded 3x3 determinants among up to 5 points (raw coordinates).
+struct Minors
+{
+  Exp<4> m2[32];  // by pair mask
+  Exp<24> m3[32]; // by triple mask
+
+  void computePairs(const double (*p)[3], int n)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      for (int j = i + 1; j < n; ++j)
+      {
+        minor2(p[i][0], p[i][1], p[j][0], p[j][1], m2[pairMask(i, j)]);
+      }
+    }
+  }
+  // det3 of rows p[i], p[j], p[k] in that order, i < j < k.
+  void computeTriple(const double (*p)[3], int i, int j, int k)
+  {
+    det3FromMinors(p[i][2], p[j][2], p[k][2], m2[pairMask(j, k)], m2[pairMask(i, k)], m2[pairMask(i, j)],
+      m3[pairMask(i, j) | (1 << k)]);
+  }
+  const Exp<24>& triple(int i, int j, int k) const { return m3[(1 << i) | (1 << j) | (1 << k)]; }
+};
+
+// Orientation determinant O(q0,q1,q2,q3) = det[q1-q0; q2-q0; q3-q0] of the points with indices
+// i < j < k < l, from the 3x3 determinants of raw coordinates:
+//   O = det3(j,k,l) - det3(i,k,l) + det3(i,j,l) - det3(i,j,k)   (<= 96 components)
+// (expand det[q 1] along the column of ones; det[q 1] = -O).
+inline int orientFromTriples(const Minors& m, int i, int j, int k, int l, double* h)
+{
+  double neg[24], s1[48], s2[48];
+  const Exp<24>& jkl = m.triple(j, k, l);
+  const Exp<24>& ikl = m.triple(i, k, l);
+  const Exp<24>& ijl = m.triple(i, j, l);
+  const Exp<24>& ijk = m.triple(i, j, k);
+  negateExpansion(ikl.n, ikl.v, neg);
+  const int n1 = sumExpansions(jkl.n, jkl.v, ikl.n, neg, s1);
+  negateExpansion(ijk.n, ijk.v, neg);
+  const int n2 = sumExpansions(ijl.n, ijl.v, ijk.n, neg, s2);
+  return sumExpansions(n1, s1, n2, s2, h);
+}
+
+// Differences q - o for three points, exactly when possible. Returns true when all 9 are exact.
+inline bool exactDifferences(const double (*p)[3], int origin, const int* others, double (*d)[3])
+{
+  bool exact = true;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double tail;
+      twoDiff(p[others[r]][k], p[origin][k], d[r][k], tail);
+      exact = exact && tail == 0.0;
+    }
+  }
+  return exact;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Exact orient3d.
+
+constexpr int kOrient3dTop = 330; // |det| <= 24 M^3 < 2^1023
+constexpr int kOrient3dLow = -320;
+
+int orient3dExact(const double* a, const double* b, const double* c, const double* d)
+{
+  const double* in[4] = { a, b, c, d };
+  double p[4][3];
+  scaleInto(in, 4, kOrient3dTop, kOrient3dLow, p);
+
+  // Stage 1: exact differences -> det[u; v; w] of single doubles (<= 24 components).
+  double u[3][3];
+  const int others[3] = { 1, 2, 3 };
+  if (exactDifferences(p, 0, others, u))
+  {
+    Exp<4> m01, m02, m12;
+    minor2(u[0][0], u[0][1], u[1][0], u[1][1], m01);
+    minor2(u[0][0], u[0][1], u[2][0], u[2][1], m02);
+    minor2(u[1][0], u[1][1], u[2][0], u[2][1], m12);
+    Exp<24> det;
+    det3FromMinors(u[0][2], u[1][2], u[2][2], m12, m02, m01, det);
+    return expansionSign(det.n, det.v);
+  }
+
+  // Stage 2: raw coordinates.
+  Minors m;
+  m.computePairs(p, 4);
+  m.computeTriple(p, 1, 2, 3);
+  m.computeTriple(p, 0, 2, 3);
+  m.computeTriple(p, 0, 1, 3);
+  m.computeTriple(p, 0, 1, 2);
+  double o[96];
+  const int n = orientFromTriples(m, 0, 1, 2, 3, o);
+  return expansionSign(n, o);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Exact insphere. The lifted determinant
+//   L = det | p_i  |p_i|^2  1 |_{i = a,b,c,d,e}   (5x5)
+// equals D = det[p'_i, |p'_i|^2]_{i=a..d} with p' = p - e (subtract row e, then use that the lifted
+// column differs from |p'|^2 by a combination of the coordinate columns). Raising the lift of e raises L
+// by the cofactor orient3d(a,b,c,d) > 0 (positive tet) and moves e outside, so inside <=> L < 0 and
+// insphere = -sign(L).
+
+constexpr int kInsphereTop = 200; // |L| <= 360 M^5 < 2^1023, components <= 24 M^3 < 2^995 for split
+constexpr int kInsphereLow = -192;
+
+int insphereExact(const double* a, const double* b, const double* c, const double* d, const double* e)
+{
+  const double* in[5] = { a, b, c, d, e };
+  double p[5][3];
+  scaleInto(in, 5, kInsphereTop, kInsphereLow, p);
+
+  // Stage 1: exact differences from e.
+  //   D = -w_a det3(b',c',d') + w_b det3(a',c',d') - w_c det3(a',b',d') + w_d det3(a',b',c')
+  double q[4][3];
+  bool exact = true;
+  for (int i = 0; i < 4 && exact; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double tail;
+      twoDiff(p[i][k], p[4][k], q[i][k], tail);
+      exact = exact && tail == 0.0;
+    }
+  }
+  if (exact)
+  {
+    Minors m;
+    m.computePairs(q, 4);
+    m.computeTriple(q, 1, 2, 3);
+    m.computeTriple(q, 0, 2, 3);
+    m.computeTriple(q, 0, 1, 3);
+    m.computeTriple(q, 0, 1, 2);
+    const Exp<24>* minors[4] = { &m.triple(1, 2, 3), &m.triple(0, 2, 3), &m.triple(0, 1, 3),
+      &m.triple(0, 1, 2) };
+    double terms[4][288];
+    int tn[4];
+    double scratch[multiplyScratchSize(24, 6)];
+    for (int i = 0; i < 4; ++i)
+    {
+      Exp<6> w;
+      squaredNorm(q[i], w);
+      const Exp<24>& t = *minors[i];
+      tn[i] = multiplyExpansions(t.n, t.v, w.n, w.v, terms[i], scratch);
+      if ((i & 1) == 0)
+      {
+        negateExpansion(tn[i], terms[i], terms[i]);
+      }
+    }
+    double s01[576], s23[576], det[1152];
+    const int n01 = sumExpansions(tn[0], terms[0], tn[1], terms[1], s01);
+    const int n23 = sumExpansions(tn[2], terms[2], tn[3], terms[3], s23);
+    const int n = sumExpansions(n01, s01, n23, s23, det);
+    return -expansionSign(n, det);
+  }
+
+  // Stage 2: raw coordinates. L = sum_i C_i |p_i|^2 with the cofactors of the lifted column
+  //   C_i = (-1)^i * O(the other four points in order)   (i = 0..4 for a..e).
+  Minors m;
+  m.computePairs(p, 5);
+  for (int i = 0; i < 5; ++i)
+  {
+    for (int j = i + 1; j < 5; ++j)
+    {
+      for (int k = j + 1; k < 5; ++k)
+      {
+        m.computeTriple(p, i, j, k);
+      }
+    }
+  }
+  double acc[2][5760];
+  int accLen = 0;
+  int cur = 0;
+  for (int i = 0; i < 5; ++i)
+  {
+    int idx[4];
+    for (int j = 0, r = 0; j < 5; ++j)
+    {
+      if (j != i)
+      {
+        idx[r++] = j;
+      }
+    }
+    double cof[96];
+    int cn = orientFromTriples(m, idx[0], idx[1], idx[2], idx[3], cof);
+    if (i & 1)
+    {
+      negateExpansion(cn, cof, cof);
+    }
+    Exp<6> w;
+    squaredNorm(p[i], w);
+    double term[1152];
+    double scratch[multiplyScratchSize(96, 6)];
+    const int tn = multiplyExpansions(cn, cof, w.n, w.v, term, scratch);
+    if (i == 0)
+    {
+      std::memcpy(acc[cur], term, sizeof(double) * tn);
+      accLen = tn;
+    }
+    else
+    {
+      accLen = sumExpansions(accLen, acc[cur], tn, term, acc[1 - cur]);
+      cur = 1 - cur;
+    }
+  }
+  return -expansionSign(accLen, acc[cur]);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Exact orient2d on the plane (i, j) = ((k+1)%3, (k+2)%3): det[b-a; c-a] = m(b,c) - m(a,c) + m(a,b).
+
+constexpr int kOrient2dTop = 500;
+constexpr int kOrient2dLow = -480;
+
+int orient2dExact(const double* a, const double* b, const double* c, int i, int j)
+{
+  const double* in[3] = { a, b, c };
+  double p[3][3];
+  scaleInto(in, 3, kOrient2dTop, kOrient2dLow, p);
+  Exp<4> mbc, mac, mab;
+  minor2(p[1][i], p[1][j], p[2][i], p[2][j], mbc);
+  minor2(p[0][i], p[0][j], p[2][i], p[2][j], mac);
+  minor2(p[0][i], p[0][j], p[1][i], p[1][j], mab);
+  double neg[4], s[8], h[12];
+  negateExpansion(mac.n, mac.v, neg);
+  const int ns = sumExpansions(mbc.n, mbc.v, mac.n, neg, s);
+  const int n = sumExpansions(ns, s, mab.n, mab.v, h);
+  return expansionSign(n, h);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Exact incircle3d determinant, relative to a, in the projected frame (i, j):
+//   E = det[[X_p, Y_p, W_p]]_{p=b,c,d},  X = p_i - a_i, Y = p_j - a_j, W = |p - a|^2 (all 3 axes).
+// Differences are kept as exact two-term expansions.
+
+constexpr int kIncircleTop = 250; // |E| <= 288 M^4
+constexpr int kIncircleLow = -240;
+
+int incircleDeterminantExact(const double* a, const double* b, const double* c, const double* d, int i, int j)
+{
+  const double* in[4] = { a, b, c, d };
+  double p[4][3];
+  scaleInto(in, 4, kIncircleTop, kIncircleLow, p);
+  Exp<2> X[3], Y[3];
+  Exp<24> W[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    double h, t;
+    twoDiff(p[r + 1][i], p[0][i], h, t);
+    X[r].n = makeExpansion(h, t, X[r].v);
+    twoDiff(p[r + 1][j], p[0][j], h, t);
+    Y[r].n = makeExpansion(h, t, Y[r].v);
+    double sq[3][8];
+    int sn[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      double dk[2];
+      twoDiff(p[r + 1][k], p[0][k], h, t);
+      const int dn = makeExpansion(h, t, dk);
+      double scratch[multiplyScratchSize(2, 2)];
+      sn[k] = multiplyExpansions(dn, dk, dn, dk, sq[k], scratch);
+    }
+    double s01[16];
+    const int n01 = sumExpansions(sn[0], sq[0], sn[1], sq[1], s01);
+    W[r].n = sumExpansions(n01, s01, sn[2], sq[2], W[r].v);
+  }
+  // Minor M(r,s) = X_r Y_s - X_s Y_r (<= 16 components).
+  auto minor = [&](int r, int s, double* out) {
+    double p1[8], p2[8], scratch[multiplyScratchSize(2, 2)];
+    const int n1 = multiplyExpansions(X[r].n, X[r].v, Y[s].n, Y[s].v, p1, scratch);
+    const int n2 = multiplyExpansions(X[s].n, X[s].v, Y[r].n, Y[r].v, p2, scratch);
+    negateExpansion(n2, p2, p2);
+    return sumExpansions(n1, p1, n2, p2, out);
+  };
+  // E = W_b M(c,d) - W_c M(b,d) + W_d M(b,c)
+  double terms[3][768];
+  int tn[3];
+  const int pairs[3][2] = { { 1, 2 }, { 0, 2 }, { 0, 1 } };
+  for (int r = 0; r < 3; ++r)
+  {
+    double mm[16];
+    const int mn = minor(pairs[r][0], pairs[r][1], mm);
+    double scratch[multiplyScratchSize(16, 24)];
+    tn[r] = multiplyExpansions(mn, mm, W[r].n, W[r].v, terms[r], scratch);
+  }
+  negateExpansion(tn[1], terms[1], terms[1]);
+  double s01[1536], e[2304];
+  const int n01 = sumExpansions(tn[0], terms[0], tn[1], terms[1], s01);
+  const int n = sumExpansions(n01, s01, tn[2], terms[2], e);
+  return expansionSign(n, e);
+}
+
+inline void projectedAxes(int dropAxis, int& i, int& j)
+{
+  i = dropAxis == 0 ? 1 : (dropAxis == 1 ? 2 : 0);
+  j = dropAxis == 0 ? 2 : (dropAxis == 1 ? 0 : 1);
+}
+
+// Filtered incircle determinant sign (see incircleDeterminantExact for the definition).
+int incircleDeterminant(const double* a, const double* b, const double* c, const double* d, int i, int j)
+{
+  const double xb = b[i] - a[i], yb = b[j] - a[j];
+  const double xc = c[i] - a[i], yc = c[j] - a[j];
+  const double xd = d[i] - a[i], yd = d[j] - a[j];
+  const double bx = b[0] - a[0], by = b[1] - a[1], bz = b[2] - a[2];
+  const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
+  const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
+  const double wb = (bx * bx + by * by) + bz * bz;
+  const double wc = (cx * cx + cy * cy) + cz * cz;
+  const double wd = (dx * dx + dy * dy) + dz * dz;
+  const double mcd = xc * yd - xd * yc;
+  const double mbd = xb * yd - xd * yb;
+  const double mbc = xb * yc - xc * yb;
+  const double det = (wb * mcd - wc * mbd) + wd * mbc;
+  const double pcd = std::fabs(xc * yd) + std::fabs(xd * yc);
+  const double pbd = std::fabs(xb * yd) + std::fabs(xd * yb);
+  const double pbc = std::fabs(xb * yc) + std::fabs(xc * yb);
+  const double perm = (wb * pcd + wc * pbd) + wd * pbc;
+  const double under = 0x1p-1072 * (((wb + wc) + wd) + ((pcd + pbd) + pbc) + 1.0);
+  const double bound = kIncircleBound * perm + under;
+  if (det > bound || -det > bound)
+  {
+    return signOf(det);
+  }
+  return incircleDeterminantExact(a, b, c, d, i, j);
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------------
+
+int orient3d(const double* a, const double* b, const double* c, const double* d)
+{
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+  const double vywz = vy * wz, vzwy = vz * wy;
+  const double vzwx = vz * wx, vxwz = vx * wz;
+  const double vxwy = vx * wy, vywx = vy * wx;
+  const double det = (ux * (vywz - vzwy) + uy * (vzwx - vxwz)) + uz * (vxwy - vywx);
+  const double aux = std::fabs(ux), auy = std::fabs(uy), auz = std::fabs(uz);
+  const double perm = (aux * (std::fabs(vywz) + std::fabs(vzwy)) + auy * (std::fabs(vzwx) + std::fabs(vxwz))) +
+    auz * (std::fabs(vxwy) + std::fabs(vywx));
+  const double under = 0x1p-1071 * (((aux + auy) + auz) + 1.0);
+  const double bound = kOrient3dBound * perm + under;
+  if (det > bound || -det > bound)
+  {
+    return signOf(det);
+  }
+  return orient3dExact(a, b, c, d);
+}
+
+int insphere(const double* a, const double* b, const double* c, const double* d, const double* e)
+{
+  const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
+  const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
+  const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
+  const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
+  const double x0y1 = x0 * y1, x1y0 = x1 * y0, x0y2 = x0 * y2, x2y0 = x2 * y0;
+  const double x0y3 = x0 * y3, x3y0 = x3 * y0, x1y2 = x1 * y2, x2y1 = x2 * y1;
+  const double x1y3 = x1 * y3, x3y1 = x3 * y1, x2y3 = x2 * y3, x3y2 = x3 * y2;
+  const double m01 = x0y1 - x1y0, m02 = x0y2 - x2y0, m03 = x0y3 - x3y0;
+  const double m12 = x1y2 - x2y1, m13 = x1y3 - x3y1, m23 = x2y3 - x3y2;
+  const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
+  const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
+  const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
+  const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
+  const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
+  const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
+  const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
+  const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
+  // D = -w0 d123 + w1 d023 - w2 d013 + w3 d012 (expansion along the lifted column); insphere = -sign(D).
+  const double det = (w1 * d023 - w0 * d123) + (w3 * d012 - w2 * d013);
+
+  const double p01 = std::fabs(x0y1) + std::fabs(x1y0), p02 = std::fabs(x0y2) + std::fabs(x2y0);
+  const double p03 = std::fabs(x0y3) + std::fabs(x3y0), p12 = std::fabs(x1y2) + std::fabs(x2y1);
+  const double p13 = std::fabs(x1y3) + std::fabs(x3y1), p23 = std::fabs(x2y3) + std::fabs(x3y2);
+  const double az0 = std::fabs(z0), az1 = std::fabs(z1), az2 = std::fabs(z2), az3 = std::fabs(z3);
+  const double q123 = (az1 * p23 + az2 * p13) + az3 * p12;
+  const double q023 = (az0 * p23 + az2 * p03) + az3 * p02;
+  const double q013 = (az0 * p13 + az1 * p03) + az3 * p01;
+  const double q012 = (az0 * p12 + az1 * p02) + az2 * p01;
+  const double perm = (w1 * q023 + w0 * q123) + (w3 * q012 + w2 * q013);
+  const double wsum = ((w0 + w1) + (w2 + w3)) + 4.0;
+  const double under = 0x1p-1069 * (wsum * wsum + ((q123 + q023) + (q013 + q012)));
+  const double bound = kInsphereBound * perm + under;
+  if (det > bound || -det > bound)
+  {
+    return -signOf(det);
+  }
+  return insphereExact(a, b, c, d, e);
+}
+
+int insphereSoS(const double* a, const double* b, const double* c, const double* d, const double* e,
+  int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide)
+{
+  const int s = insphere(a, b, c, d, e);
+  if (s != 0)
+  {
+    return s;
+  }
+  // Exactly cospherical. Lifts |p_i|^2 + eps^(r_i), the largest id having the largest perturbation:
+  // L_eps = sum_i eps^(r_i) C_i, so sign(L_eps) = sign(C_i) of the largest id with C_i != 0, and the
+  // result is -sign(L_eps). Cofactors of the lifted column (i = 0..4 for a..e):
+  //   C_a = +O(b,c,d,e), C_b = -O(a,c,d,e), C_c = +O(a,b,d,e), C_d = -O(a,b,c,e), C_e = +O(a,b,c,d).
+  const double* pts[5] = { a, b, c, d, e };
+  int64_t ids[5] = { ida, idb, idc, idd, ide };
+  int order[5] = { 0, 1, 2, 3, 4 };
+  // Sort indices by decreasing id (insertion sort on 5 elements).
+  for (int i = 1; i < 5; ++i)
+  {
+    const int v = order[i];
+    int j = i - 1;
+    while (j >= 0 && ids[order[j]] < ids[v])
+    {
+      order[j + 1] = order[j];
+      --j;
+    }
+    order[j + 1] = v;
+  }
+  for (int r = 0; r < 5; ++r)
+  {
+    const int i = order[r];
+    const double* q[4];
+    for (int j = 0, k = 0; j < 5; ++j)
+    {
+      if (j != i)
+      {
+        q[k++] = pts[j];
+      }
+    }
+    const int o = orient3d(q[0], q[1], q[2], q[3]);
+    if (o != 0)
+    {
+      const int cofactor = (i & 1) ? -o : o;
+      return -cofactor;
+    }
+  }
+  return 0; // unreachable when orient3d(a,b,c,d) != 0 (the precondition)
+}
+
+int incircle3d(const double* a, const double* b, const double* c, const double* d)
+{
+  // Drop the axis along which the triangle's normal is largest (so the projection is not degenerate);
+  // the answer does not depend on the choice for coplanar input, only exactness needs a nonzero
+  // projected orientation.
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double n[3] = { std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz),
+    std::fabs(ux * vy - uy * vx) };
+  int axes[3] = { 0, 1, 2 };
+  if (n[axes[1]] > n[axes[0]])
+  {
+    std::swap(axes[0], axes[1]);
+  }
+  if (n[axes[2]] > n[axes[1]])
+  {
+    std::swap(axes[1], axes[2]);
+  }
+  if (n[axes[1]] > n[axes[0]])
+  {
+    std::swap(axes[0], axes[1]);
+  }
+  for (int t = 0; t < 3; ++t)
+  {
+    const int k = axes[t];
+    const int o = orient2dProjected(a, b, c, k);
+    if (o != 0)
+    {
+      int i, j;
+      projectedAxes(k, i, j);
+      // Lifting argument: E = (W_d - h(d)) * orient2d, h the plane through the lifted a, b, c; d is
+      // inside the circle iff W_d < h(d).
+      return -incircleDeterminant(a, b, c, d, i, j) * o;
+    }
+  }
+  return 0; // a, b, c collinear
+}
+
+int orient2dProjected(const double* a, const double* b, const double* c, int dropAxis)
+{
+  int i, j;
+  projectedAxes(dropAxis, i, j);
+  const double ui = b[i] - a[i], uj = b[j] - a[j];
+  const double vi = c[i] - a[i], vj = c[j] - a[j];
+  const double l = ui * vj, r = uj * vi;
+  const double det = l - r;
+  const double bound = kOrient2dBound * (std::fabs(l) + std::fabs(r)) + 0x1p-1073;
+  if (det > bound || -det > bound)
+  {
+    return signOf(det);
+  }
+  return orient2dExact(a, b, c, i, j);
+}
+
+} // namespace predicates
+} // namespace volgrid
