@@ -1,0 +1,69 @@
+// VTK-free readers for the surface formats VTK lacks or reads wrongly:
+//   .off (OFF/COFF/NOFF/CNOFF/STOFF, polygons triangulated), Medit .mesh (ASCII; Triangles and
+//   Quadrilaterals, everything else skipped), TetGen .poly/.smesh (polygon facets triangulated by ear
+//   clipping in the facet plane; nodes from the sibling .node file when the node list is empty),
+//   gmsh .msh (ASCII v2.x and v4.x; triangles and quadrangles), .stl (ASCII and binary; lenient ASCII:
+//   several solids, text after the last `endsolid`).
+// Every error is a Status whose message names the file, the line and the problem; a malformed file
+// never crashes the reader. Status.h has no dedicated I/O kind: unreadable/malformed files use
+// ErrorKind::InvalidOption (the file argument is invalid), empty files ErrorKind::EmptyInput,
+// NaN/Inf coordinates ErrorKind::NonFinitePoint.
+#pragma once
+
+#include "Status.h"
+#include "SurfaceMesh.h"
+
+#include <string>
+#include <vector>
+
+namespace volgrid
+{
+
+struct SurfaceReadOptions
+{
+  // Merge exactly coincident points after reading (point order of first occurrences kept). STL is
+  // always merged (it has no connectivity); for the other formats the file's numbering is kept when
+  // false.
+  bool mergeCoincidentPoints = true;
+};
+
+struct SurfaceReadInfo
+{
+  std::string format;            // "OFF", "Medit", "TetGen poly", "TetGen smesh", "gmsh 2.2", "STL ascii"...
+  int64_t filePoints = 0;         // point records in the file (STL: 3 per facet)
+  int64_t fileFaces = 0;          // faces/facets/elements read (before triangulation)
+  int64_t polygonFaces = 0;       // faces with more than three corners that were triangulated
+  int64_t fanFallbacks = 0;       // polygons that ear clipping could not handle (fan used instead)
+  int64_t mergedPoints = 0;       // points removed by exact merging
+  int64_t skippedElements = 0;    // elements of other kinds skipped (tets, edges, ...)
+  int64_t solids = 0;             // STL solids
+  std::vector<std::string> warnings;
+};
+
+// True when readSurface knows the file's extension (case-insensitive).
+bool surfaceReaderSupports(const std::string& path);
+
+// Reads by extension. The mesh is cleared first.
+Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
+
+Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
+Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
+// .poly and .smesh (chosen by extension).
+Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
+Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
+Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
+
+// Triangulates a planar (or nearly planar) polygon given by point ids of `points` (3 doubles each) by
+// ear clipping in the polygon's plane: orientation tests are exact (projected orient2d), and among the
+// valid ears the best-shaped one is cut first. Triangles keep the loop's orientation. Returns false
+// (and appends a fan for what is left) when no ear exists (self-intersecting or degenerate polygon).
+bool triangulatePolygon(const std::vector<double>& points, const std::vector<int32_t>& loop,
+  std::vector<int32_t>& triangles);
+
+} // namespace volgrid
