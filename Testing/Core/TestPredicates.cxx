@@ -456,6 +456,52 @@ TEST(Predicates, SignsInvariantUnderPowerOfTwoScalingAndTranslation)
   EXPECT_EQ(checks, 3900);
 }
 
+// Any finite doubles: coordinates spread over the whole exponent range in one call (the exact path then
+// cannot scale into a safe window and uses big integers), including subnormals, against rationals.
+TEST(Predicates, WideExponentRangeAgainstRational)
+{
+  std::mt19937_64 rng(43);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> ex(-1074, 1000), axis(0, 2), ulp(-2, 2);
+  auto wide = [&]() {
+    Pt p;
+    for (auto& x : p)
+      x = (rng() % 4 == 0) ? 0.0 : std::ldexp(u(rng), ex(rng) / static_cast<int>(rng() % 3 + 1));
+    return p;
+  };
+  int zeros = 0;
+  for (int t = 0; t < 3000; ++t)
+  {
+    std::array<Pt, 5> p;
+    for (auto& q : p)
+      q = wide();
+    if (t % 4 == 1) // flat: shared z, or e on a vertex (nudged or not)
+      p[3][2] = p[2][2] = p[1][2] = p[0][2];
+    if (t % 4 == 2)
+      p[4] = nudge(p[rng() % 4], axis(rng), (t % 8 == 2) ? 0 : ulp(rng));
+    const int ro = refOrient3d(p[0], p[1], p[2], p[3]);
+    ASSERT_EQ(orient(p[0], p[1], p[2], p[3]), ro) << t;
+    zeros += ro == 0;
+    if (ro != 0)
+    {
+      const int rs = refInsphere(p[0], p[1], p[2], p[3], p[4]);
+      ASSERT_EQ(insph(p[0], p[1], p[2], p[3], p[4]), rs) << t;
+      zeros += rs == 0;
+    }
+    for (int k = 0; k < 3; ++k)
+      ASSERT_EQ(P::orient2dProjected(p[0].data(), p[1].data(), p[2].data(), k), refOrient2dProjected(p[0], p[1], p[2], k));
+    // Coplanar quadruple for incircle3d: all on the plane z = p0.z.
+    Pt q[4] = { p[0], p[1], p[2], p[4] };
+    for (auto& v : q)
+      v[2] = p[0][2];
+    if (refOrient2dProjected(q[0], q[1], q[2], 2) != 0)
+    {
+      ASSERT_EQ(incirc(q[0], q[1], q[2], q[3]), refIncircle3d(q[0], q[1], q[2], q[3])) << t;
+    }
+  }
+  EXPECT_GT(zeros, 300);
+}
+
 // ---- incircle3d and orient2dProjected --------------------------------------------------------------------
 TEST(Predicates, Orient2dProjectedConvention)
 {
