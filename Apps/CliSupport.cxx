@@ -1,0 +1,75 @@
+#include "CliSupport.h"
+
+#include <sys/resource.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace volgrid
+{
+namespace cli
+{
+
+bool parseLong(const char* command, const char* option, const char* text, long long& value)
+{
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtoll(text, &end, 10);
+  if (end == text || *end != '\0' || errno != 0)
+  {
+    std::fprintf(stderr, "volgrid %s: %s expects an integer, got '%s'\n", command, option, text);
+    return false;
+  }
+  return true;
+}
+
+bool parseDouble(const char* command, const char* option, const char* text, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(value))
+  {
+    std::fprintf(stderr, "volgrid %s: %s expects a finite number, got '%s'\n", command, option, text);
+    return false;
+  }
+  return true;
+}
+
+double peakResidentMiB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux reports KiB
+}
+
+std::string jsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (const char c : s)
+  {
+    switch (c)
+    {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20)
+        {
+          char buffer[8];
+          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+          out += buffer;
+        }
+        else
+        {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+} // namespace cli
+} // namespace volgrid

@@ -1,0 +1,37 @@
+// Small helpers shared by the CLI sub-commands: argument scanning, timing, memory, JSON strings.
+#pragma once
+
+#include <chrono>
+#include <string>
+
+namespace volgrid
+{
+namespace cli
+{
+// Parses a number argument; prints "volgrid CMD: OPTION expects ..." and returns false when malformed.
+bool parseLong(const char* command, const char* option, const char* text, long long& value);
+bool parseDouble(const char* command, const char* option, const char* text, double& value);
+
+// Peak resident memory of this process so far, in MiB.
+double peakResidentMiB();
+
+// A JSON string literal for s (quotes and escapes included).
+std::string jsonString(const std::string& s);
+
+class Stopwatch
+{
+public:
+  Stopwatch()
+    : start_(std::chrono::steady_clock::now())
+  {
+  }
+  double seconds() const
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+private:
+  std::chrono::steady_clock::time_point start_;
+};
+} // namespace cli
+} // namespace volgrid
