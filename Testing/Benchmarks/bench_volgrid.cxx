@@ -6,7 +6,7 @@ namespace volgrid_bench
 {
 bool runVolGrid(const std::vector<double>&, const VolGridSettings&, Meter&, EngineResult& result)
 {
-  result.error = "the volgrid engine is not built (Core/Delaunay.h did not exist at configure time)";
+  result.error = "the volgrid engine is not built (no Core/Delaunay.h at configure time, or -DVOLGRID_BENCH_VOLGRID=OFF)";
   return false;
 }
 } // namespace volgrid_bench
