@@ -89,8 +89,9 @@ public:
     int32_t duplicateOf = -1; // >= 0: the point equals this existing vertex, nothing was inserted
   };
   // Insert mesh vertex v (its coordinates already in mesh.points, e.g. from mesh.addPoint) and restore
-  // the Delaunay property. v must not be used by any tet yet.
-  Result insert(int32_t v, int32_t hint = -1);
+  // the Delaunay property. v must not be used by any tet yet. `next` (optional): where the next point
+  // to insert is, so that lastTet() becomes the new tet closest to it (shorter next walk).
+  Result insert(int32_t v, int32_t hint = -1, const double* next = nullptr);
 
   // Optional bucket-grid point location (PointLocation::BucketGrid): box of all points to come and the
   // expected number of vertices. Inserted vertices are registered automatically.
@@ -98,6 +99,11 @@ public:
   // Register an existing mesh vertex in the bucket grid (only needed for vertices not inserted by this
   // inserter) with a tet incident to it.
   void registerVertex(int32_t v, int32_t tet);
+
+  // Simulation of Simplicity ids of the vertices (ids[v] for vertex v; must outlive the inserter).
+  // Default (nullptr): the vertex ids themselves. Lets a caller store vertices in another order than the
+  // ids that define the unique triangulation.
+  void setSoSIds(const int32_t* ids);
 
   int32_t lastTet() const;
   uint64_t walkSteps() const;
