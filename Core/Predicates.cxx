@@ -28,6 +28,7 @@
 //   incircle3d: U = 2^-1072 (sum W + sum P2 + 1)
 //   orient2d:   U = 2^-1073
 #include "Predicates.h"
+#include "PredicatesInline.h"
 
 #include "ExpansionArithmetic.h"
 
@@ -44,16 +45,9 @@ namespace
 {
 using namespace expansion;
 
-constexpr double kEps = 0x1p-53;
-constexpr double kOrient3dBound = (8.0 + 256.0 * kEps) * kEps;
-constexpr double kInsphereBound = (16.0 + 1024.0 * kEps) * kEps;
+using detail::kEps;
+using detail::signOf;
 constexpr double kIncircleBound = (12.0 + 512.0 * kEps) * kEps;
-constexpr double kOrient2dBound = (3.0 + 64.0 * kEps) * kEps;
-
-inline int signOf(double x)
-{
-  return (x > 0.0) - (x < 0.0);
-}
 
 // A small fixed-capacity expansion (stack storage; no allocation anywhere in this file).
 template <int N>
@@ -536,7 +530,7 @@ int incircleDeterminantWide(const double* const* in, int i, int j)
 constexpr int kOrient3dTop = 330; // |det| <= 24 M^3 < 2^1023
 constexpr int kOrient3dLow = -320;
 
-int orient3dExact(const double* a, const double* b, const double* c, const double* d)
+int orient3dExactImpl(const double* a, const double* b, const double* c, const double* d)
 {
   const double* in[4] = { a, b, c, d };
   double p[4][3];
@@ -582,7 +576,7 @@ int orient3dExact(const double* a, const double* b, const double* c, const doubl
 constexpr int kInsphereTop = 200; // |L| <= 360 M^5 < 2^1023, components <= 24 M^3 < 2^995 for split
 constexpr int kInsphereLow = -192;
 
-int insphereExact(const double* a, const double* b, const double* c, const double* d, const double* e)
+int insphereExactImpl(const double* a, const double* b, const double* c, const double* d, const double* e)
 {
   const double* in[5] = { a, b, c, d, e };
   double p[5][3];
@@ -693,7 +687,7 @@ int insphereExact(const double* a, const double* b, const double* c, const doubl
 constexpr int kOrient2dTop = 500;
 constexpr int kOrient2dLow = -480;
 
-int orient2dExact(const double* a, const double* b, const double* c, int i, int j)
+int orient2dExactImpl(const double* a, const double* b, const double* c, int i, int j)
 {
   const double* in[3] = { a, b, c };
   double p[3][3];
@@ -816,79 +810,34 @@ int incircleDeterminant(const double* a, const double* b, const double* c, const
 
 // ---------------------------------------------------------------------------------------------------
 
-int orient3d(const double* a, const double* b, const double* c, const double* d)
+namespace detail
 {
-  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
-  const double vywz = vy * wz, vzwy = vz * wy;
-  const double vzwx = vz * wx, vxwz = vx * wz;
-  const double vxwy = vx * wy, vywx = vy * wx;
-  const double det = (ux * (vywz - vzwy) + uy * (vzwx - vxwz)) + uz * (vxwy - vywx);
-  const double aux = std::fabs(ux), auy = std::fabs(uy), auz = std::fabs(uz);
-  const double perm = (aux * (std::fabs(vywz) + std::fabs(vzwy)) + auy * (std::fabs(vzwx) + std::fabs(vxwz))) +
-    auz * (std::fabs(vxwy) + std::fabs(vywx));
-  const double under = 0x1p-1020 * (((aux + auy) + auz) + 1.0);
-  const double bound = kOrient3dBound * (perm + under);
-  if (det > bound || -det > bound)
-  {
-    return signOf(det);
-  }
-  return orient3dExact(a, b, c, d);
+int orient3dExact(const double* a, const double* b, const double* c, const double* d)
+{
+  return orient3dExactImpl(a, b, c, d);
 }
 
-int insphere(const double* a, const double* b, const double* c, const double* d, const double* e)
+int insphereExact(const double* a, const double* b, const double* c, const double* d, const double* e)
 {
-  const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
-  const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
-  const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
-  const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
-  const double x0y1 = x0 * y1, x1y0 = x1 * y0, x0y2 = x0 * y2, x2y0 = x2 * y0;
-  const double x0y3 = x0 * y3, x3y0 = x3 * y0, x1y2 = x1 * y2, x2y1 = x2 * y1;
-  const double x1y3 = x1 * y3, x3y1 = x3 * y1, x2y3 = x2 * y3, x3y2 = x3 * y2;
-  const double m01 = x0y1 - x1y0, m02 = x0y2 - x2y0, m03 = x0y3 - x3y0;
-  const double m12 = x1y2 - x2y1, m13 = x1y3 - x3y1, m23 = x2y3 - x3y2;
-  const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
-  const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
-  const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
-  const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
-  const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
-  const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
-  const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
-  const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
-  // D = -w0 d123 + w1 d023 - w2 d013 + w3 d012 (expansion along the lifted column); insphere = -sign(D).
-  const double det = (w1 * d023 - w0 * d123) + (w3 * d012 - w2 * d013);
-
-  const double p01 = std::fabs(x0y1) + std::fabs(x1y0), p02 = std::fabs(x0y2) + std::fabs(x2y0);
-  const double p03 = std::fabs(x0y3) + std::fabs(x3y0), p12 = std::fabs(x1y2) + std::fabs(x2y1);
-  const double p13 = std::fabs(x1y3) + std::fabs(x3y1), p23 = std::fabs(x2y3) + std::fabs(x3y2);
-  const double az0 = std::fabs(z0), az1 = std::fabs(z1), az2 = std::fabs(z2), az3 = std::fabs(z3);
-  const double q123 = (az1 * p23 + az2 * p13) + az3 * p12;
-  const double q023 = (az0 * p23 + az2 * p03) + az3 * p02;
-  const double q013 = (az0 * p13 + az1 * p03) + az3 * p01;
-  const double q012 = (az0 * p12 + az1 * p02) + az2 * p01;
-  const double perm = (w1 * q023 + w0 * q123) + (w3 * q012 + w2 * q013);
-  const double wsum = ((w0 + w1) + (w2 + w3)) + 4.0;
-  const double under = 0x1p-1020 * (wsum * wsum + ((q123 + q023) + (q013 + q012)));
-  const double bound = kInsphereBound * (perm + under);
-  if (det > bound || -det > bound)
-  {
-    return -signOf(det);
-  }
-  return insphereExact(a, b, c, d, e);
+  return insphereExactImpl(a, b, c, d, e);
 }
 
-int insphereSoS(const double* a, const double* b, const double* c, const double* d, const double* e,
+int orient2dExact(const double* a, const double* b, const double* c, int i, int j)
+{
+  return orient2dExactImpl(a, b, c, i, j);
+}
+
+int insphereSoSTie(const double* a, const double* b, const double* c, const double* d, const double* e,
   int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide)
 {
-  const int s = insphere(a, b, c, d, e);
-  if (s != 0)
-  {
-    return s;
-  }
-  // Exactly cospherical. Lifts |p_i|^2 + eps^(r_i), the largest id having the largest perturbation:
-  // L_eps = sum_i eps^(r_i) C_i, so sign(L_eps) = sign(C_i) of the largest id with C_i != 0, and the
-  // result is -sign(L_eps). Cofactors of the lifted column (i = 0..4 for a..e):
+  // Exactly cospherical. Lifting perturbation: point i is lifted to |p_i|^2 + eps^(r_i), where r_i is
+  // the rank of id_i in DECREASING order (the largest id gets the largest perturbation, eps^1). This is
+  // the power-distance (weight -eps^(r_i)) regular triangulation of a generic weighted set for every
+  // small eps > 0: unique, independent of insertion order, and without flat tetrahedra. The 5x5 lifted
+  // determinant is linear in the lifted column, so
+  //   L_eps = L + sum_i eps^(r_i) C_i,   L = 0 here,
+  // so sign(L_eps) = sign(C_i) for the largest id with C_i != 0, and the result is -sign(L_eps). C_e is
+  // orient3d(a,b,c,d) != 0, so the search ends. Cofactors of the lifted column (i = 0..4 for a..e):
   //   C_a = +O(b,c,d,e), C_b = -O(a,c,d,e), C_c = +O(a,b,d,e), C_d = -O(a,b,c,e), C_e = +O(a,b,c,d).
   const double* pts[5] = { a, b, c, d, e };
   int64_t ids[5] = { ida, idb, idc, idd, ide };
@@ -916,7 +865,7 @@ int insphereSoS(const double* a, const double* b, const double* c, const double*
         q[k++] = pts[j];
       }
     }
-    const int o = orient3d(q[0], q[1], q[2], q[3]);
+    const int o = orient3dInline(q[0], q[1], q[2], q[3]);
     if (o != 0)
     {
       const int cofactor = (i & 1) ? -o : o;
@@ -924,6 +873,28 @@ int insphereSoS(const double* a, const double* b, const double* c, const double*
     }
   }
   return 0; // unreachable when orient3d(a,b,c,d) != 0 (the precondition)
+}
+} // namespace detail
+
+int orient3d(const double* a, const double* b, const double* c, const double* d)
+{
+  return orient3dInline(a, b, c, d);
+}
+
+int insphere(const double* a, const double* b, const double* c, const double* d, const double* e)
+{
+  return insphereInline(a, b, c, d, e);
+}
+
+int insphereSoS(const double* a, const double* b, const double* c, const double* d, const double* e,
+  int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide)
+{
+  return insphereSoSInline(a, b, c, d, e, ida, idb, idc, idd, ide);
+}
+
+int orient2dProjected(const double* a, const double* b, const double* c, int dropAxis)
+{
+  return orient2dProjectedInline(a, b, c, dropAxis);
 }
 
 int incircle3d(const double* a, const double* b, const double* c, const double* d)
@@ -962,22 +933,6 @@ int incircle3d(const double* a, const double* b, const double* c, const double* 
     }
   }
   return 0; // a, b, c collinear
-}
-
-int orient2dProjected(const double* a, const double* b, const double* c, int dropAxis)
-{
-  int i, j;
-  projectedAxes(dropAxis, i, j);
-  const double ui = b[i] - a[i], uj = b[j] - a[j];
-  const double vi = c[i] - a[i], vj = c[j] - a[j];
-  const double l = ui * vj, r = uj * vi;
-  const double det = l - r;
-  const double bound = kOrient2dBound * ((std::fabs(l) + std::fabs(r)) + 0x1p-1021);
-  if (det > bound || -det > bound)
-  {
-    return signOf(det);
-  }
-  return orient2dExact(a, b, c, i, j);
 }
 
 } // namespace predicates

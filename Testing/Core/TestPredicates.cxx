@@ -4,6 +4,7 @@
 // (circumcentres rather than lifted determinants).
 #include "ExpansionArithmetic.h"
 #include "Predicates.h"
+#include "PredicatesInline.h"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -583,6 +584,25 @@ TEST(Predicates, Incircle3dCoplanar)
     zeros += ref == 0;
   }
   EXPECT_GT(zeros, 100);
+}
+
+TEST(Predicates, InlineVersionsAgree)
+{
+  std::mt19937_64 rng(47);
+  std::uniform_int_distribution<int> small(0, 2);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int t = 0; t < 5000; ++t)
+  {
+    std::array<Pt, 5> p;
+    for (auto& q : p)
+      q = (t % 2) ? Pt{ double(small(rng)), double(small(rng)), double(small(rng)) } : Pt{ u(rng), u(rng), u(rng) };
+    const double *a = p[0].data(), *b = p[1].data(), *c = p[2].data(), *d = p[3].data(), *e = p[4].data();
+    ASSERT_EQ(P::orient3dInline(a, b, c, d), P::orient3d(a, b, c, d));
+    ASSERT_EQ(P::insphereInline(a, b, c, d, e), P::insphere(a, b, c, d, e));
+    ASSERT_EQ(P::orient2dProjectedInline(a, b, c, t % 3), P::orient2dProjected(a, b, c, t % 3));
+    if (P::orient3d(a, b, c, d) != 0)
+      ASSERT_EQ(P::insphereSoSInline(a, b, c, d, e, 1, 2, 3, 4, 5), P::insphereSoS(a, b, c, d, e, 1, 2, 3, 4, 5));
+  }
 }
 
 // ---- Simulation of Simplicity ------------------------------------------------------------------------------
