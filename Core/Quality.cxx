@@ -247,51 +247,85 @@ void measureTets(const double* points, const Id* tets, int64_t begin, int64_t en
   }
 }
 
-template <typename Id>
-void PointTets::build(const Id* tets, int64_t numTets, int64_t numPoints)
+void PointTets::reset(int64_t numPoints, int64_t numTets)
 {
+  NumPoints = numPoints;
+  NumTets = numTets;
   Offsets.assign(static_cast<size_t>(numPoints) + 1, 0);
-  for (int64_t i = 0; i < 4 * numTets; ++i)
+  Cursor.clear();
+  Items.reset();
+}
+
+template <typename Id>
+void PointTets::count(const Id* tets, int64_t pointBegin, int64_t pointEnd)
+{
+  int64_t* counts = Offsets.data() + 1;
+  for (int64_t i = 0; i < 4 * NumTets; ++i)
   {
-    ++Offsets[static_cast<size_t>(tets[i]) + 1];
-  }
-  std::partial_sum(Offsets.begin(), Offsets.end(), Offsets.begin());
-  Items.resize(static_cast<size_t>(4 * numTets));
-  std::vector<int64_t> cursor(Offsets.begin(), Offsets.end() - 1);
-  for (int64_t t = 0; t < numTets; ++t)
-  {
-    for (int k = 0; k < 4; ++k)
+    const int64_t p = static_cast<int64_t>(tets[i]);
+    if (p >= pointBegin && p < pointEnd)
     {
-      Items[static_cast<size_t>(cursor[static_cast<size_t>(tets[4 * t + k])]++)] = t;
+      ++counts[p];
     }
   }
 }
+
+void PointTets::finishCounts()
+{
+  std::partial_sum(Offsets.begin(), Offsets.end(), Offsets.begin());
+  Cursor.assign(Offsets.begin(), Offsets.end() - 1);
+  Items.reset(new int64_t[static_cast<size_t>(4 * NumTets)]);
+}
+
+template <typename Id>
+void PointTets::fill(const Id* tets, int64_t pointBegin, int64_t pointEnd)
+{
+  for (int64_t i = 0; i < 4 * NumTets; ++i)
+  {
+    const int64_t p = static_cast<int64_t>(tets[i]);
+    if (p >= pointBegin && p < pointEnd)
+    {
+      Items[Cursor[p]++] = i / 4;
+    }
+  }
+}
+
+namespace
+{
+template <typename Id>
+inline bool holds(const Id* w, Id p)
+{
+  return w[0] == p || w[1] == p || w[2] == p || w[3] == p;
+}
+} // namespace
 
 template <typename Id>
 void volumeGradient(const Id* tets, const double* volumes, const PointTets& incidence, int64_t begin,
   int64_t end, double* gradient)
 {
-  // Face k of tet t is opposite its vertex k; its neighbours are the other tets incident to the face's
-  // three points: scan the tets of the face's first point and test the other two.
+  // The face neighbours of t are the tets other than t that share three of its points. Those sharing the
+  // three faces through v0 are in v0's row and hold two of v1, v2, v3; those sharing the face opposite v0
+  // are in v1's row and hold v2 and v3 but not v0 (holding all four, they would be t or a duplicate of t).
   for (int64_t t = begin; t < end; ++t)
   {
     const Id* v = tets + 4 * t;
+    const double vt = volumes[t];
     double g = 0.0;
-    for (int k = 0; k < 4; ++k)
+    for (const int64_t* it = incidence.begin(v[0]); it != incidence.end(v[0]); ++it)
     {
-      const Id a = v[(k + 1) & 3], b = v[(k + 2) & 3], c = v[(k + 3) & 3];
-      for (const int64_t* it = incidence.begin(a); it != incidence.end(a); ++it)
+      const Id* w = tets + 4 * *it;
+      const bool h1 = holds(w, v[1]), h2 = holds(w, v[2]);
+      if (h1 && h2 ? !holds(w, v[3]) : (h1 || h2) && holds(w, v[3]))
       {
-        const int64_t s = *it;
-        if (s == t)
-          continue;
-        const Id* w = tets + 4 * s;
-        const bool hasB = w[0] == b || w[1] == b || w[2] == b || w[3] == b;
-        const bool hasC = w[0] == c || w[1] == c || w[2] == c || w[3] == c;
-        if (hasB && hasC)
-        {
-          g = std::max(g, std::fabs(volumes[t] - volumes[s]));
-        }
+        g = std::max(g, std::fabs(vt - volumes[*it]));
+      }
+    }
+    for (const int64_t* it = incidence.begin(v[1]); it != incidence.end(v[1]); ++it)
+    {
+      const Id* w = tets + 4 * *it;
+      if (holds(w, v[2]) && holds(w, v[3]) && !holds(w, v[0]))
+      {
+        g = std::max(g, std::fabs(vt - volumes[*it]));
       }
     }
     gradient[t] = g;
@@ -300,7 +334,8 @@ void volumeGradient(const Id* tets, const double* volumes, const PointTets& inci
 
 #define VOLGRID_QUALITY_INSTANTIATE(Id)                                                                 \
   template void measureTets<Id>(const double*, const Id*, int64_t, int64_t, const TetMetricArrays&);     \
-  template void PointTets::build<Id>(const Id*, int64_t, int64_t);                                     \
+  template void PointTets::count<Id>(const Id*, int64_t, int64_t);                                     \
+  template void PointTets::fill<Id>(const Id*, int64_t, int64_t);                                      \
   template void volumeGradient<Id>(const Id*, const double*, const PointTets&, int64_t, int64_t, double*);
 VOLGRID_QUALITY_INSTANTIATE(int)
 VOLGRID_QUALITY_INSTANTIATE(long)

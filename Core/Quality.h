@@ -30,6 +30,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace volgrid
@@ -104,19 +105,38 @@ struct SurfaceSummary
 // points: flat xyz; tris: 3 point ids per triangle. Ids must be in [0, numPoints).
 SurfaceSummary surfaceSummary(const double* points, int64_t numPoints, const int64_t* tris, int64_t numTris);
 
-// Face adjacency for the VolumeGradient: the tets incident to each point, in compressed rows.
+// Face adjacency for the VolumeGradient: the tets incident to each point, in compressed rows, each row in
+// increasing tet order. build() does it serially. A threaded caller runs reset(), then count() for
+// disjoint point ranges concurrently, finishCounts(), then fill() for disjoint point ranges concurrently:
+// every call reads all the tets but touches only its own points' rows, so there is no shared write and the
+// rows are the same whatever the split.
 class PointTets
 {
 public:
-  // Builds the incidence of tets [0, numTets) (4 ids each) over numPoints points.
   template <typename Id>
-  void build(const Id* tets, int64_t numTets, int64_t numPoints);
-  const int64_t* begin(int64_t point) const { return Items.data() + Offsets[point]; }
-  const int64_t* end(int64_t point) const { return Items.data() + Offsets[point + 1]; }
+  void build(const Id* tets, int64_t numTets, int64_t numPoints)
+  {
+    reset(numPoints, numTets);
+    count(tets, 0, numPoints);
+    finishCounts();
+    fill(tets, 0, numPoints);
+  }
+  void reset(int64_t numPoints, int64_t numTets);
+  template <typename Id>
+  void count(const Id* tets, int64_t pointBegin, int64_t pointEnd);
+  void finishCounts();
+  template <typename Id>
+  void fill(const Id* tets, int64_t pointBegin, int64_t pointEnd);
+
+  const int64_t* begin(int64_t point) const { return Items.get() + Offsets[point]; }
+  const int64_t* end(int64_t point) const { return Items.get() + Offsets[point + 1]; }
 
 private:
-  std::vector<int64_t> Offsets;
-  std::vector<int64_t> Items;
+  int64_t NumPoints = 0;
+  int64_t NumTets = 0;
+  std::vector<int64_t> Offsets; // counts shifted by one, then row starts
+  std::vector<int64_t> Cursor;  // insertion positions during fill()
+  std::unique_ptr<int64_t[]> Items;
 };
 
 // VolumeGradient (paper 8.2) of tets [begin, end): the largest |V(t) - V(n)| over the tets n that share a

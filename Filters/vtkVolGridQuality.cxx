@@ -200,7 +200,20 @@ struct vtkVolGridQuality::Internals
     }
     self->SetProgressText("Face adjacency");
     vq::PointTets incidence;
-    incidence.build(tets, numTets, numPoints);
+    incidence.reset(numPoints, numTets);
+    // One point range per thread: each pass reads all tets but writes only its own points' rows.
+    const vtkIdType ranges = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+    auto pointRanges = [&](auto pass) {
+      vtkSMPTools::For(0, ranges, 1, [&](vtkIdType first, vtkIdType last) {
+        for (vtkIdType r = first; r < last; ++r)
+        {
+          pass(numPoints * r / ranges, numPoints * (r + 1) / ranges);
+        }
+      });
+    };
+    pointRanges([&](vtkIdType b, vtkIdType e) { incidence.count(tets, b, e); });
+    incidence.finishCounts();
+    pointRanges([&](vtkIdType b, vtkIdType e) { incidence.fill(tets, b, e); });
     self->UpdateProgress(0.6);
     self->SetProgressText("Volume gradient");
     return parallelBlocks(self, numTets, 0.6, 0.85,
