@@ -1,0 +1,271 @@
+#include "BoundaryCheck.h"
+
+#include "BoundaryRecovery.h"
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace volgrid
+{
+
+namespace
+{
+
+// Neumaier summation.
+struct Sum
+{
+  double s = 0, c = 0;
+  void add(double x)
+  {
+    const double t = s + x;
+    if (std::fabs(s) >= std::fabs(x))
+      c += (s - t) + x;
+    else
+      c += (x - t) + s;
+    s = t;
+  }
+  double value() const { return s + c; }
+};
+
+double det3(const double* a, const double* b, const double* c, const double* d)
+{
+  const double e0[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double e1[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double e2[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+  return e0[0] * (e1[1] * e2[2] - e1[2] * e2[1]) - e0[1] * (e1[0] * e2[2] - e1[2] * e2[0]) +
+    e0[2] * (e1[0] * e2[1] - e1[1] * e2[0]);
+}
+
+bool sameCyclic(const int32_t* f, const int32_t* s)
+{
+  for (int r = 0; r < 3; ++r)
+    if (f[0] == s[r] && f[1] == s[(r + 1) % 3] && f[2] == s[(r + 2) % 3])
+      return true;
+  return false;
+}
+
+} // namespace
+
+std::string BoundaryCheckReport::summary() const
+{
+  std::ostringstream os;
+  os << tets << " tets";
+  if (invertedTets)
+    os << ", " << invertedTets << " inverted";
+  if (badIds)
+    os << ", " << badIds << " with bad ids";
+  if (overSharedFaces)
+    os << ", " << overSharedFaces << " faces in >2 tets";
+  if (sameOrientationFaces)
+    os << ", " << sameOrientationFaces << " badly oriented shared faces";
+  os << "; " << boundaryFaces << " boundary faces";
+  if (boundaryFacesNotInput)
+    os << ", " << boundaryFacesNotInput << " not input triangles";
+  if (inputTrianglesNotFaces)
+    os << ", " << inputTrianglesNotFaces << " input triangles missing";
+  if (boundaryPointsAdded)
+    os << ", " << boundaryPointsAdded << " added points on the boundary";
+  if (inputTrianglesInterior)
+    os << ", " << inputTrianglesInterior << " interface triangles";
+  os.precision(12);
+  os << "; volume " << tetVolume << " vs " << enclosedVolume << " (rel. error " << relativeVolumeError << ")";
+  os << (ok() ? " OK" : " FAILED");
+  return os.str();
+}
+
+BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, int32_t numInputPoints,
+  const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles, double expected)
+{
+  BoundaryCheckReport r;
+  const int64_t np = static_cast<int64_t>(points.size() / 3);
+  const int64_t nt = static_cast<int64_t>(tets.size() / 4);
+  r.tets = nt;
+  struct Use
+  {
+    int32_t tet;
+    int32_t v[3]; // orientation as seen from the tet (outward normal... as listed by the tet)
+    int count;
+  };
+  std::unordered_map<TriKey, Use, TriKeyHash> faces;
+  faces.reserve(static_cast<size_t>(nt) * 2 + 16);
+  Sum vol;
+  auto note = [&](int64_t id) {
+    if (r.firstProblems.size() < 8)
+      r.firstProblems.push_back(id);
+  };
+  for (int64_t t = 0; t < nt; ++t)
+  {
+    const int32_t* v = tets.data() + 4 * t;
+    bool bad = false;
+    for (int i = 0; i < 4; ++i)
+    {
+      if (v[i] < 0 || v[i] >= np)
+        bad = true;
+      for (int j = i + 1; j < 4; ++j)
+        bad = bad || v[i] == v[j];
+    }
+    if (bad)
+    {
+      ++r.badIds;
+      note(t);
+      continue;
+    }
+    const double *a = &points[3 * static_cast<size_t>(v[0])], *b = &points[3 * static_cast<size_t>(v[1])],
+                 *c = &points[3 * static_cast<size_t>(v[2])], *d = &points[3 * static_cast<size_t>(v[3])];
+    if (predicates::orient3d(a, b, c, d) <= 0)
+    {
+      ++r.invertedTets;
+      note(t);
+    }
+    vol.add(det3(a, b, c, d) / 6.0);
+    for (int i = 0; i < 4; ++i)
+    {
+      const int* fv = TetMesh::kFaceVertex[i];
+      const int32_t f[3] = { v[fv[0]], v[fv[1]], v[fv[2]] };
+      auto it = faces.find(TriKey(f[0], f[1], f[2]));
+      if (it == faces.end())
+        faces.emplace(TriKey(f[0], f[1], f[2]), Use{ static_cast<int32_t>(t), { f[0], f[1], f[2] }, 1 });
+      else
+      {
+        ++it->second.count;
+        if (it->second.count == 2 && sameCyclic(f, it->second.v))
+        {
+          ++r.sameOrientationFaces;
+          note(t);
+        }
+        if (it->second.count == 3)
+        {
+          ++r.overSharedFaces;
+          note(t);
+        }
+      }
+    }
+  }
+  r.tetVolume = vol.value();
+  r.enclosedVolume = expected;
+  r.relativeVolumeError = std::fabs(r.tetVolume - expected) / std::max(std::fabs(expected), 1e-300);
+  // Boundary faces vs input triangles.
+  std::unordered_map<TriKey, int32_t, TriKeyHash> input;
+  const int64_t ntri = static_cast<int64_t>(triangles.size() / 3);
+  input.reserve(static_cast<size_t>(ntri) * 2 + 16);
+  for (int64_t t = 0; t < ntri; ++t)
+    input.emplace(TriKey(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]), static_cast<int32_t>(t));
+  std::vector<uint8_t> onBoundary(static_cast<size_t>(np), 0);
+  for (auto& [key, use] : faces)
+  {
+    if (use.count != 1)
+      continue;
+    ++r.boundaryFaces;
+    if (!input.count(key))
+    {
+      ++r.boundaryFacesNotInput;
+      note(use.tet);
+    }
+    for (int k = 0; k < 3; ++k)
+      onBoundary[key.v[k]] = 1;
+  }
+  for (int64_t v = numInputPoints; v < np; ++v)
+    r.boundaryPointsAdded += onBoundary[v];
+  for (auto& [key, t] : input)
+  {
+    auto it = faces.find(key);
+    if (it == faces.end())
+    {
+      ++r.inputTrianglesNotFaces;
+      note(t);
+    }
+    else if (it->second.count == 2)
+      ++r.inputTrianglesInterior;
+  }
+  return r;
+}
+
+double enclosedVolume(const std::vector<double>& points, const std::vector<int32_t>& triangles,
+  const std::vector<int32_t>& triangleShell, const std::vector<int>& shellDepth, RegionRule rule)
+{
+  const int32_t nt = static_cast<int32_t>(triangles.size() / 3);
+  // Reference point: the box centre (reduces cancellation).
+  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+  for (int32_t t = 0; t < 3 * nt; ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], points[3 * static_cast<size_t>(triangles[t]) + k]);
+      hi[k] = std::max(hi[k], points[3 * static_cast<size_t>(triangles[t]) + k]);
+    }
+  const double c[3] = { 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) };
+  auto tri = [&](int32_t t, int k) { return &points[3 * static_cast<size_t>(triangles[3 * t + k])]; };
+  if (rule == RegionRule::Orientation)
+  {
+    Sum s;
+    for (int32_t t = 0; t < nt; ++t)
+      s.add(det3(c, tri(t, 0), tri(t, 1), tri(t, 2)) / 6.0);
+    return s.value();
+  }
+  // Orient every shell consistently by propagation across shared edges.
+  std::unordered_map<uint64_t, std::vector<int32_t>> edgeTris;
+  edgeTris.reserve(static_cast<size_t>(nt) * 2);
+  for (int32_t t = 0; t < nt; ++t)
+    for (int k = 0; k < 3; ++k)
+      edgeTris[edgeKey(triangles[3 * t + k], triangles[3 * t + (k + 1) % 3])].push_back(t);
+  std::vector<int8_t> flip(static_cast<size_t>(nt), -1);
+  int32_t nshell = 0;
+  for (int32_t s : triangleShell)
+    nshell = std::max(nshell, s + 1);
+  std::vector<Sum> shellVol(static_cast<size_t>(nshell));
+  std::vector<int32_t> queue;
+  for (int32_t s0 = 0; s0 < nt; ++s0)
+  {
+    if (flip[s0] >= 0)
+      continue;
+    flip[s0] = 0;
+    queue.assign(1, s0);
+    for (size_t q = 0; q < queue.size(); ++q)
+    {
+      const int32_t t = queue[q];
+      for (int k = 0; k < 3; ++k)
+      {
+        int32_t a = triangles[3 * t + k], b = triangles[3 * t + (k + 1) % 3];
+        if (flip[t])
+          std::swap(a, b);
+        for (int32_t u : edgeTris[edgeKey(a, b)])
+        {
+          if (u == t || flip[u] >= 0)
+            continue;
+          // u must traverse the edge as b->a.
+          bool forward = false;
+          for (int j = 0; j < 3; ++j)
+            forward = forward || (triangles[3 * u + j] == a && triangles[3 * u + (j + 1) % 3] == b);
+          flip[u] = forward ? 1 : 0;
+          queue.push_back(u);
+        }
+      }
+    }
+  }
+  for (int32_t t = 0; t < nt; ++t)
+  {
+    const int32_t s = triangleShell[t];
+    if (s < 0)
+      continue;
+    const double v = det3(c, tri(t, 0), tri(t, 1), tri(t, 2)) / 6.0;
+    shellVol[s].add(flip[t] ? -v : v);
+  }
+  Sum total;
+  for (int32_t s = 0; s < nshell; ++s)
+  {
+    const double v = std::fabs(shellVol[s].value());
+    const int d = s < static_cast<int32_t>(shellDepth.size()) ? shellDepth[s] : 0;
+    if (rule == RegionRule::KeepAll)
+    {
+      if (d == 0)
+        total.add(v);
+    }
+    else
+      total.add((d % 2) ? -v : v);
+  }
+  return total.value();
+}
+
+} // namespace volgrid

@@ -1,0 +1,1245 @@
+#include "BoundaryRecovery.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace volgrid
+{
+
+using predicates::orient3d;
+
+TriKey::TriKey(int32_t a, int32_t b, int32_t c)
+{
+  if (a > b)
+    std::swap(a, b);
+  if (b > c)
+    std::swap(b, c);
+  if (a > b)
+    std::swap(a, b);
+  v[0] = a;
+  v[1] = b;
+  v[2] = c;
+}
+
+// ------------------------------------------------------------------------------------------------
+// BoundaryConstraints
+
+void BoundaryConstraints::init(const int32_t* triangles, int32_t numTriangles)
+{
+  verts.clear();
+  parent.clear();
+  faces_.clear();
+  edges_.clear();
+  numAlive_ = 0;
+  nonManifold_ = 0;
+  numInput_ = numTriangles;
+  faces_.reserve(static_cast<size_t>(numTriangles) * 2);
+  edges_.reserve(static_cast<size_t>(numTriangles) * 3);
+  for (int32_t t = 0; t < numTriangles; ++t)
+    addSubface(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], t);
+}
+
+int32_t BoundaryConstraints::addSubface(int32_t a, int32_t b, int32_t c, int32_t par)
+{
+  const int32_t f = static_cast<int32_t>(parent.size());
+  verts.push_back(a);
+  verts.push_back(b);
+  verts.push_back(c);
+  parent.push_back(par);
+  faces_[TriKey(a, b, c)] = f;
+  ++numAlive_;
+  const int32_t e[3][2] = { { a, b }, { b, c }, { c, a } };
+  for (auto& ed : e)
+  {
+    auto it = edges_.find(edgeKey(ed[0], ed[1]));
+    if (it == edges_.end())
+      edges_.emplace(edgeKey(ed[0], ed[1]), std::array<int32_t, 2>{ { f, -1 } });
+    else if (it->second[0] < 0)
+      it->second[0] = f;
+    else if (it->second[1] < 0)
+      it->second[1] = f;
+    else
+      ++nonManifold_;
+  }
+  return f;
+}
+
+void BoundaryConstraints::removeSubface(int32_t f)
+{
+  if (parent[f] < 0)
+    return;
+  const int32_t* v = subface(f);
+  faces_.erase(TriKey(v[0], v[1], v[2]));
+  for (int i = 0; i < 3; ++i)
+  {
+    auto it = edges_.find(edgeKey(v[i], v[(i + 1) % 3]));
+    if (it == edges_.end())
+      continue;
+    if (it->second[0] == f)
+      it->second[0] = -1;
+    if (it->second[1] == f)
+      it->second[1] = -1;
+    if (it->second[0] < 0 && it->second[1] < 0)
+      edges_.erase(it);
+  }
+  parent[f] = -1;
+  --numAlive_;
+}
+
+int32_t BoundaryConstraints::findSubface(int32_t a, int32_t b, int32_t c) const
+{
+  auto it = faces_.find(TriKey(a, b, c));
+  return it == faces_.end() ? -1 : it->second;
+}
+
+const std::array<int32_t, 2>* BoundaryConstraints::edgeFaces(int32_t a, int32_t b) const
+{
+  auto it = edges_.find(edgeKey(a, b));
+  return it == edges_.end() ? nullptr : &it->second;
+}
+
+// ------------------------------------------------------------------------------------------------
+// MeshEditor
+
+MeshEditor::MeshEditor(TetMesh& m)
+  : mesh(m)
+{
+  rebuildVertexMap();
+}
+
+void MeshEditor::rebuildVertexMap()
+{
+  vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+      if (v[i] >= 0)
+        vertTet_[v[i]] = t;
+  });
+}
+
+int32_t MeshEditor::tetOf(int32_t v)
+{
+  if (v < 0)
+    return -1;
+  if (static_cast<size_t>(v) >= vertTet_.size())
+    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
+  const int32_t t = vertTet_[v];
+  if (t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t) && mesh.localIndex(t, v) >= 0)
+    return t;
+  // Stale entry (should not happen: every edit refreshes the vertices it touches): rescan.
+  rebuildVertexMap();
+  return vertTet_[v];
+}
+
+void MeshEditor::ensureStamp()
+{
+  if (tetStamp.size() < static_cast<size_t>(mesh.tetCapacity()))
+    tetStamp.resize(static_cast<size_t>(mesh.tetCapacity()) + 1024, 0);
+}
+
+uint32_t MeshEditor::newStamp()
+{
+  ensureStamp();
+  if (++stamp_ == 0)
+  {
+    std::fill(tetStamp.begin(), tetStamp.end(), 0);
+    stamp_ = 1;
+  }
+  return stamp_;
+}
+
+void MeshEditor::star(int32_t v, std::vector<int32_t>& out)
+{
+  out.clear();
+  const int32_t t0 = tetOf(v);
+  if (t0 < 0)
+    return;
+  const uint32_t s = newStamp();
+  out.push_back(t0);
+  tetStamp[t0] = s;
+  for (size_t k = 0; k < out.size(); ++k)
+  {
+    const int32_t t = out[k];
+    const int li = mesh.localIndex(t, v);
+    for (int i = 0; i < 4; ++i)
+    {
+      if (i == li)
+        continue;
+      const int32_t u = mesh.neighbor(t, i);
+      if (u >= 0 && tetStamp[u] != s)
+      {
+        tetStamp[u] = s;
+        out.push_back(u);
+      }
+    }
+  }
+}
+
+int32_t MeshEditor::findEdge(int32_t a, int32_t b)
+{
+  star(a, tmpTets_);
+  for (int32_t t : tmpTets_)
+    if (mesh.localIndex(t, b) >= 0)
+      return t;
+  return -1;
+}
+
+int32_t MeshEditor::findFace(int32_t a, int32_t b, int32_t c, int* face)
+{
+  star(a, tmpTets_);
+  for (int32_t t : tmpTets_)
+  {
+    if (mesh.localIndex(t, b) < 0 || mesh.localIndex(t, c) < 0)
+      continue;
+    if (face)
+    {
+      const int32_t* v = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        if (v[i] != a && v[i] != b && v[i] != c)
+          *face = i;
+    }
+    return t;
+  }
+  return -1;
+}
+
+static int permutationSign(int a, int b, int c, int d)
+{
+  const int p[4] = { a, b, c, d };
+  int inv = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (p[i] > p[j])
+        ++inv;
+  return (inv & 1) ? -1 : 1;
+}
+
+bool MeshEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets)
+{
+  ring.clear();
+  tets.clear();
+  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
+  if (ix < 0 || iy < 0)
+    return false;
+  int k = -1, l = -1;
+  for (int i = 0; i < 4; ++i)
+    if (i != ix && i != iy)
+      (k < 0 ? k : l) = i;
+  const int32_t* v = mesh.vertices(t);
+  int32_t r0 = v[k], r1 = v[l];
+  if (permutationSign(ix, iy, k, l) < 0)
+    std::swap(r0, r1);
+  int32_t cur = t, ra = r0, rb = r1;
+  for (int guard = 0; guard < 4096; ++guard)
+  {
+    ring.push_back(ra);
+    tets.push_back(cur);
+    // Next tet: across the face of cur opposite ra (it contains x, y, rb).
+    const int ia = mesh.localIndex(cur, ra);
+    const int32_t nxt = mesh.neighbor(cur, ia);
+    if (nxt < 0)
+      return false;
+    if (nxt == t)
+      return true;
+    const int32_t* w = mesh.vertices(nxt);
+    int32_t rc = -1;
+    for (int i = 0; i < 4; ++i)
+      if (w[i] != x && w[i] != y && w[i] != rb)
+        rc = w[i];
+    if (rc < 0 || mesh.localIndex(nxt, x) < 0 || mesh.localIndex(nxt, y) < 0)
+      return false;
+    cur = nxt;
+    ra = rb;
+    rb = rc;
+  }
+  return false;
+}
+
+bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
+  std::vector<int32_t>* created, bool allowOpen)
+{
+  for (int32_t t : oldTets)
+    mesh.tetFlags[t] |= TetMesh::kMarkA;
+  bfaces_.clear();
+  int32_t f[3];
+  for (int32_t t : oldTets)
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t code = mesh.neighborCode(t, i);
+      if (code >= 0 && (mesh.tetFlags[code >> 2] & TetMesh::kMarkA))
+        continue;
+      mesh.faceVertices(t, i, f);
+      bfaces_.push_back({ TriKey(f[0], f[1], f[2]), code });
+    }
+  for (int32_t t : oldTets)
+    mesh.tetFlags[t] &= static_cast<uint8_t>(~TetMesh::kMarkA);
+  nfaces_.clear();
+  for (size_t n = 0; n < newTets.size(); ++n)
+  {
+    const auto& q = newTets[n];
+    for (int i = 0; i < 4; ++i)
+    {
+      const int* fv = TetMesh::kFaceVertex[i];
+      nfaces_.push_back({ TriKey(q[fv[0]], q[fv[1]], q[fv[2]]), static_cast<int32_t>(n), i });
+    }
+  }
+  auto lessB = [](const BFace& a, const BFace& b) { return a.key < b.key; };
+  auto lessN = [](const NFace& a, const NFace& b) { return a.key < b.key; };
+  std::sort(bfaces_.begin(), bfaces_.end(), lessB);
+  std::sort(nfaces_.begin(), nfaces_.end(), lessN);
+  // Verify: every new face is either shared by exactly two new tets or matches exactly one old boundary
+  // face, and every old boundary face is matched.
+  size_t matched = 0;
+  for (size_t i = 0; i + 1 < bfaces_.size(); ++i)
+    if (bfaces_[i].key == bfaces_[i + 1].key)
+      return false;
+  for (size_t i = 0; i < nfaces_.size();)
+  {
+    size_t j = i + 1;
+    while (j < nfaces_.size() && nfaces_[j].key == nfaces_[i].key)
+      ++j;
+    const size_t cnt = j - i;
+    const bool inB = std::binary_search(bfaces_.begin(), bfaces_.end(), BFace{ nfaces_[i].key, 0 }, lessB);
+    if (cnt == 1 && inB)
+      ++matched;
+    else if (!(cnt == 2 && !inB) && !(allowOpen && cnt == 1))
+      return false;
+    i = j;
+  }
+  if (matched != bfaces_.size() && !allowOpen)
+    return false;
+  if (allowOpen)
+  {
+    // Outer tets whose face is not matched lose that neighbour.
+    for (const BFace& b : bfaces_)
+    {
+      if (b.code < 0)
+        continue;
+      auto it = std::lower_bound(nfaces_.begin(), nfaces_.end(), NFace{ b.key, 0, 0 }, lessN);
+      if (it == nfaces_.end() || !(it->key == b.key))
+        mesh.unlink(b.code >> 2, b.code & 3);
+    }
+  }
+
+  // Commit.
+  for (int32_t t : oldTets)
+    mesh.freeTet(t);
+  tmpTets_.resize(newTets.size());
+  for (size_t n = 0; n < newTets.size(); ++n)
+  {
+    const auto& q = newTets[n];
+    tmpTets_[n] = mesh.newTet(q[0], q[1], q[2], q[3]);
+    for (int i = 0; i < 4; ++i)
+    {
+      if (static_cast<size_t>(q[i]) >= vertTet_.size())
+        vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
+      vertTet_[q[i]] = tmpTets_[n];
+    }
+  }
+  for (size_t i = 0; i < nfaces_.size();)
+  {
+    size_t j = i + 1;
+    while (j < nfaces_.size() && nfaces_[j].key == nfaces_[i].key)
+      ++j;
+    const int32_t ta = tmpTets_[nfaces_[i].tet];
+    if (j - i == 2)
+      mesh.link(ta, nfaces_[i].face, tmpTets_[nfaces_[i + 1].tet], nfaces_[i + 1].face);
+    else
+    {
+      auto it = std::lower_bound(bfaces_.begin(), bfaces_.end(), BFace{ nfaces_[i].key, 0 }, lessB);
+      if (it == bfaces_.end() || !(it->key == nfaces_[i].key) || it->code < 0)
+        mesh.unlink(ta, nfaces_[i].face);
+      else
+        mesh.link(ta, nfaces_[i].face, it->code >> 2, it->code & 3);
+    }
+    i = j;
+  }
+  if (created)
+    *created = tmpTets_;
+  return true;
+}
+
+bool MeshEditor::flip23(int32_t t, int face, const BoundaryConstraints* bc, std::vector<int32_t>* created)
+{
+  const int32_t u = mesh.neighbor(t, face);
+  if (u < 0)
+    return false;
+  int32_t f[3];
+  mesh.faceVertices(t, face, f);
+  if (bc && bc->findSubface(f[0], f[1], f[2]) >= 0)
+    return false;
+  const int32_t p = mesh.vertex(t, face);
+  const int32_t q = mesh.vertex(u, mesh.mirrorFace(t, face));
+  const double *P = mesh.point(p), *Q = mesh.point(q), *A = mesh.point(f[0]), *B = mesh.point(f[1]),
+               *C = mesh.point(f[2]);
+  if (orient3d(Q, B, C, P) <= 0 || orient3d(A, Q, C, P) <= 0 || orient3d(A, B, Q, P) <= 0)
+    return false;
+  tmpNew_.clear();
+  tmpNew_.push_back({ { q, f[1], f[2], p } });
+  tmpNew_.push_back({ { f[0], q, f[2], p } });
+  tmpNew_.push_back({ { f[0], f[1], q, p } });
+  lastRemoved.clear();
+  lastRemoved.push_back({ { mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2), mesh.vertex(t, 3) } });
+  lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
+  std::vector<int32_t> old = { t, u };
+  if (!replace(old, tmpNew_, created))
+    return false;
+  ++flips23;
+  return true;
+}
+
+static double tetQuality(const double* a, const double* b, const double* c, const double* d)
+{
+  double e[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    e[0][i] = b[i] - a[i];
+    e[1][i] = c[i] - a[i];
+    e[2][i] = d[i] - a[i];
+  }
+  const double vol = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  double s = 0;
+  const double* p[4] = { a, b, c, d };
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      for (int k = 0; k < 3; ++k)
+        s += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+  return s > 0 ? vol / (s * std::sqrt(s)) : 0;
+}
+
+bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created)
+{
+  if (bc && bc->isEdge(x, y))
+    return false;
+  std::vector<int32_t>& ring = tmpRing_;
+  std::vector<int32_t> tets;
+  if (!edgeRing(t, x, y, ring, tets))
+    return false;
+  const int n = static_cast<int>(ring.size());
+  if (n < 3 || n > 48)
+    return false;
+  const double* X = mesh.point(x);
+  const double* Y = mesh.point(y);
+  const double kInvalid = -std::numeric_limits<double>::infinity();
+  std::vector<double> best(static_cast<size_t>(n * n), kInvalid);
+  std::vector<int> choice(static_cast<size_t>(n * n), -1);
+  auto triQ = [&](int i, int k, int j) -> double {
+    const double *A = mesh.point(ring[i]), *B = mesh.point(ring[k]), *C = mesh.point(ring[j]);
+    if (orient3d(A, B, C, Y) <= 0 || orient3d(A, C, B, X) <= 0)
+      return kInvalid;
+    return std::min(tetQuality(A, B, C, Y), tetQuality(A, C, B, X));
+  };
+  for (int len = 1; len < n; ++len)
+    for (int i = 0; i + len < n; ++i)
+    {
+      const int j = i + len;
+      if (len == 1)
+      {
+        best[i * n + j] = std::numeric_limits<double>::infinity();
+        continue;
+      }
+      double bq = kInvalid;
+      int bk = -1;
+      for (int k = i + 1; k < j; ++k)
+      {
+        const double sub = std::min(best[i * n + k], best[k * n + j]);
+        if (!(sub > bq))
+          continue;
+        const double q = std::min(sub, triQ(i, k, j));
+        if (q > bq)
+        {
+          bq = q;
+          bk = k;
+        }
+      }
+      best[i * n + j] = bq;
+      choice[i * n + j] = bk;
+    }
+  if (!(best[n - 1] > kInvalid))
+    return false;
+  tmpNew_.clear();
+  std::vector<std::pair<int, int>> stack = { { 0, n - 1 } };
+  while (!stack.empty())
+  {
+    auto [i, j] = stack.back();
+    stack.pop_back();
+    if (j - i < 2)
+      continue;
+    const int k = choice[i * n + j];
+    tmpNew_.push_back({ { ring[i], ring[k], ring[j], y } });
+    tmpNew_.push_back({ { ring[i], ring[j], ring[k], x } });
+    stack.push_back({ i, k });
+    stack.push_back({ k, j });
+  }
+  lastRemoved.clear();
+  for (int32_t u : tets)
+    lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
+  if (!replace(tets, tmpNew_, created))
+    return false;
+  if (n == 3)
+    ++flips32;
+  else
+    ++flipsEdgeRemoval;
+  return true;
+}
+
+int32_t MeshEditor::locate(const double* p, int32_t start)
+{
+  int32_t t = start;
+  if (t < 0 || mesh.isFree(t))
+    return -1;
+  int32_t f[3];
+  uint32_t rot = 0;
+  const int64_t limit = 4 * static_cast<int64_t>(mesh.numTets()) + 100;
+  for (int64_t step = 0; step < limit; ++step)
+  {
+    int next = -1;
+    const int r = static_cast<int>(rot++ & 3);
+    for (int k = 0; k < 4; ++k)
+    {
+      const int i = (k + r) & 3;
+      mesh.faceVertices(t, i, f);
+      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) < 0)
+      {
+        next = i;
+        break;
+      }
+    }
+    if (next < 0)
+      return t;
+    t = mesh.neighbor(t, next);
+    if (t < 0)
+      return -1;
+  }
+  return -1;
+}
+
+bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
+{
+  const double* p = mesh.point(v);
+  const int32_t t0 = locate(p, start);
+  if (t0 < 0)
+    return false;
+  if (vertTet_.size() < static_cast<size_t>(mesh.numVertices()))
+    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
+  int32_t f[3];
+  // Roots: tets whose closure contains p.
+  std::vector<int32_t> roots = { t0 };
+  const uint32_t sRoot = newStamp();
+  tetStamp[t0] = sRoot;
+  for (size_t k = 0; k < roots.size(); ++k)
+  {
+    const int32_t t = roots[k];
+    for (int i = 0; i < 4; ++i)
+    {
+      mesh.faceVertices(t, i, f);
+      const int o = orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p);
+      if (o < 0)
+        return false; // not in the closure: locate() is inconsistent
+      if (o > 0)
+        continue;
+      if (f[0] == v || f[1] == v || f[2] == v)
+        return false;
+      // p on this face: the tet beyond must be split too.
+      const int32_t u = mesh.neighbor(t, i);
+      if (u < 0 || (bc && bc->findSubface(f[0], f[1], f[2]) >= 0))
+        return false;
+      if (tetStamp[u] != sRoot)
+      {
+        tetStamp[u] = sRoot;
+        roots.push_back(u);
+      }
+    }
+  }
+  // A vertex at p already?
+  for (int32_t t : roots)
+    for (int i = 0; i < 4; ++i)
+    {
+      const double* q = mesh.point(mesh.vertex(t, i));
+      if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2])
+        return false;
+    }
+  // Bowyer-Watson growth (insphere is only a heuristic for the cavity's size here; validity is exact
+  // below).
+  const uint32_t sCav = newStamp();
+  std::vector<int32_t>& cav = cavity_;
+  cav = roots;
+  for (int32_t t : cav)
+    tetStamp[t] = sCav;
+  for (size_t k = 0; k < cav.size() && cav.size() < 4096; ++k)
+  {
+    const int32_t t = cav[k];
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = mesh.neighbor(t, i);
+      if (u < 0 || tetStamp[u] == sCav)
+        continue;
+      mesh.faceVertices(t, i, f);
+      if (bc && bc->findSubface(f[0], f[1], f[2]) >= 0)
+        continue;
+      const int32_t* w = mesh.vertices(u);
+      if (predicates::insphere(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), p) > 0)
+      {
+        tetStamp[u] = sCav;
+        cav.push_back(u);
+      }
+    }
+  }
+  auto isRoot = [&](int32_t t) { return std::find(roots.begin(), roots.end(), t) != roots.end(); };
+  // Make it star-shaped from p: drop tets with a boundary face p does not see strictly.
+  for (int round = 0; round < 1000; ++round)
+  {
+    bool changed = false;
+    for (size_t k = 0; k < cav.size(); ++k)
+    {
+      const int32_t t = cav[k];
+      if (tetStamp[t] != sCav)
+        continue;
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(t, i);
+        if (u >= 0 && tetStamp[u] == sCav)
+          continue;
+        mesh.faceVertices(t, i, f);
+        if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) > 0)
+          continue;
+        if (isRoot(t))
+          return false;
+        tetStamp[t] = 0;
+        changed = true;
+        break;
+      }
+    }
+    // Keep only what is connected to the roots.
+    const uint32_t sConn = newStamp();
+    std::vector<int32_t>& q = queue_;
+    q.clear();
+    for (int32_t r : roots)
+    {
+      q.push_back(r);
+      tetStamp[r] = sConn;
+    }
+    for (size_t k = 0; k < q.size(); ++k)
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(q[k], i);
+        if (u >= 0 && tetStamp[u] == sCav)
+        {
+          tetStamp[u] = sConn;
+          q.push_back(u);
+        }
+      }
+    const size_t before = cav.size();
+    cav.clear();
+    for (int32_t t : q)
+      cav.push_back(t);
+    // Re-stamp as the cavity stamp for the next round.
+    for (int32_t t : cav)
+      tetStamp[t] = sCav;
+    if (!changed && cav.size() == before)
+      break;
+    if (!changed)
+      break;
+  }
+  // Final validation and new tets.
+  tmpNew_.clear();
+  for (int32_t t : cav)
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = mesh.neighbor(t, i);
+      if (u >= 0 && tetStamp[u] == sCav)
+        continue;
+      mesh.faceVertices(t, i, f);
+      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
+        return false;
+      tmpNew_.push_back({ { f[0], f[1], f[2], v } });
+    }
+  std::vector<int32_t> old = cav;
+  return replace(old, tmpNew_, nullptr);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Recovery
+
+namespace
+{
+
+// Exact: is point u on the open segment ab (collinear and strictly between)?
+bool onOpenSegment(const double* a, const double* b, const double* u)
+{
+  for (int k = 0; k < 3; ++k)
+    if (predicates::orient2dProjected(a, b, u, k) != 0)
+      return false;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (a[k] == b[k])
+      continue;
+    const double lo = std::min(a[k], b[k]), hi = std::max(a[k], b[k]);
+    return u[k] > lo && u[k] < hi;
+  }
+  return false;
+}
+
+// Exact: coplanar segments ab and uv cross at a point interior to both (u, v not on line ab).
+bool coplanarCross(const double* a, const double* b, const double* u, const double* v)
+{
+  int axis = -1;
+  for (int k = 0; k < 3 && axis < 0; ++k)
+    if (predicates::orient2dProjected(a, b, u, k) != 0 || predicates::orient2dProjected(a, b, v, k) != 0)
+      axis = k;
+  if (axis < 0)
+    return false;
+  const int o1 = predicates::orient2dProjected(a, b, u, axis), o2 = predicates::orient2dProjected(a, b, v, axis);
+  const int o3 = predicates::orient2dProjected(u, v, a, axis), o4 = predicates::orient2dProjected(u, v, b, axis);
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+// Exact: coplanar point u lies in the closed triangle abc (abc not degenerate).
+bool inTriangleCoplanar(const double* a, const double* b, const double* c, const double* u)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const int o = predicates::orient2dProjected(a, b, c, k);
+    if (o == 0)
+      continue;
+    const int o1 = predicates::orient2dProjected(a, b, u, k), o2 = predicates::orient2dProjected(b, c, u, k),
+              o3 = predicates::orient2dProjected(c, a, u, k);
+    return o1 * o >= 0 && o2 * o >= 0 && o3 * o >= 0;
+  }
+  return false;
+}
+
+struct Crossing
+{
+  int32_t tet;
+  int32_t a, b; // edge endpoints (edges) or face index in a (faces)
+};
+
+class Recoverer
+{
+public:
+  Recoverer(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds)
+    : ed_(ed)
+    , m_(ed.mesh)
+    , bc_(bc)
+    , kinds_(kinds)
+  {
+  }
+
+  // Crossings of the open segment ab. Returns false when a vertex lies on it.
+  bool traceSegment(int32_t a, int32_t b, std::vector<Crossing>& faces, std::vector<Crossing>& edges)
+  {
+    faces.clear();
+    edges.clear();
+    seenFaces_.clear();
+    seenEdges_.clear();
+    const double *A = m_.point(a), *B = m_.point(b);
+    ed_.star(a, queue_);
+    const uint32_t s = ed_.newStamp();
+    for (int32_t t : queue_)
+      ed_.tetStamp[t] = s;
+    auto push = [&](int32_t u) {
+      if (u >= 0 && ed_.tetStamp[u] != s)
+      {
+        ed_.tetStamp[u] = s;
+        queue_.push_back(u);
+      }
+    };
+    int32_t f[3];
+    for (size_t k = 0; k < queue_.size(); ++k)
+    {
+      const int32_t t = queue_[k];
+      const int32_t* v = m_.vertices(t);
+      for (int i = 0; i < 4; ++i)
+      {
+        m_.faceVertices(t, i, f);
+        if (f[0] == a || f[1] == a || f[2] == a || f[0] == b || f[1] == b || f[2] == b)
+          continue;
+        const double *U = m_.point(f[0]), *V = m_.point(f[1]), *W = m_.point(f[2]);
+        const int sa = orient3d(U, V, W, A), sb = orient3d(U, V, W, B);
+        if (sa * sb >= 0)
+          continue;
+        const int l1 = orient3d(A, B, U, V), l2 = orient3d(A, B, V, W), l3 = orient3d(A, B, W, U);
+        if ((l1 > 0 && l2 > 0 && l3 > 0) || (l1 < 0 && l2 < 0 && l3 < 0))
+        {
+          if (seenFaces_.insert(TriKey(f[0], f[1], f[2])).second)
+            faces.push_back({ t, i, 0 });
+          push(m_.neighbor(t, i));
+        }
+        else if ((l1 == 0) + (l2 == 0) + (l3 == 0) >= 2)
+          return false; // through a vertex
+      }
+      static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+      for (auto& e : kEdge)
+      {
+        const int32_t x = v[e[0]], y = v[e[1]];
+        if (x == a || x == b || y == a || y == b)
+          continue;
+        const double *X = m_.point(x), *Y = m_.point(y);
+        if (orient3d(A, B, X, Y) != 0)
+          continue;
+        if (onOpenSegment(A, B, X) || onOpenSegment(A, B, Y))
+          return false;
+        if (!coplanarCross(A, B, X, Y))
+          continue;
+        if (seenEdges_.insert(edgeKey(x, y)).second)
+          edges.push_back({ t, x, y });
+        // Tets around the edge: neighbours across the two faces containing it.
+        for (int i = 0; i < 4; ++i)
+          if (i != e[0] && i != e[1])
+            push(m_.neighbor(t, i));
+      }
+    }
+    return true;
+  }
+
+  // Edges crossing the interior of triangle abc (its edges present). False when a vertex lies in it.
+  bool traceFacet(int32_t a, int32_t b, int32_t c, std::vector<Crossing>& edges, std::vector<int32_t>* visited)
+  {
+    edges.clear();
+    seenEdges_.clear();
+    const double *A = m_.point(a), *B = m_.point(b), *C = m_.point(c);
+    const int32_t t0 = ed_.findEdge(a, b);
+    if (t0 < 0)
+      return false;
+    std::vector<int32_t> ring, tets;
+    queue_.clear();
+    if (!ed_.edgeRing(t0, a, b, ring, tets))
+      ed_.star(a, queue_);
+    else
+      queue_ = tets;
+    const uint32_t s = ed_.newStamp();
+    for (int32_t t : queue_)
+      ed_.tetStamp[t] = s;
+    auto push = [&](int32_t u) {
+      if (u >= 0 && ed_.tetStamp[u] != s)
+      {
+        ed_.tetStamp[u] = s;
+        queue_.push_back(u);
+      }
+    };
+    for (size_t k = 0; k < queue_.size(); ++k)
+    {
+      const int32_t t = queue_[k];
+      const int32_t* v = m_.vertices(t);
+      int sv[4];
+      for (int i = 0; i < 4; ++i)
+      {
+        if (v[i] == a || v[i] == b || v[i] == c)
+        {
+          sv[i] = 2;
+          continue;
+        }
+        sv[i] = orient3d(A, B, C, m_.point(v[i]));
+        if (sv[i] == 0 && inTriangleCoplanar(A, B, C, m_.point(v[i])))
+          return false;
+      }
+      static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+      for (auto& e : kEdge)
+      {
+        if (sv[e[0]] == 2 || sv[e[1]] == 2 || sv[e[0]] * sv[e[1]] >= 0)
+          continue;
+        const double *X = m_.point(v[e[0]]), *Y = m_.point(v[e[1]]);
+        const int l1 = orient3d(X, Y, A, B), l2 = orient3d(X, Y, B, C), l3 = orient3d(X, Y, C, A);
+        if (!((l1 >= 0 && l2 >= 0 && l3 >= 0) || (l1 <= 0 && l2 <= 0 && l3 <= 0)))
+          continue;
+        if (seenEdges_.insert(edgeKey(v[e[0]], v[e[1]])).second)
+          edges.push_back({ t, v[e[0]], v[e[1]] });
+        for (int i = 0; i < 4; ++i)
+          if (i != e[0] && i != e[1])
+            push(m_.neighbor(t, i));
+      }
+    }
+    if (visited)
+      *visited = queue_;
+    return true;
+  }
+
+  void undo(const std::vector<int32_t>& created)
+  {
+    std::vector<std::array<int32_t, 4>> old = ed_.lastRemoved;
+    ed_.replace(created, old, nullptr);
+  }
+
+  bool recoverEdgeByFlips(int32_t a, int32_t b)
+  {
+    std::vector<Crossing> faces, edges, f2, e2;
+    std::vector<int32_t> created;
+    for (int iter = 0; iter < 500; ++iter)
+    {
+      if (ed_.findEdge(a, b) >= 0)
+        return true;
+      if (!traceSegment(a, b, faces, edges))
+        return false;
+      const size_t m0 = faces.size() + edges.size();
+      if (m0 == 0)
+        return false;
+      bool progress = false;
+      for (const Crossing& c : faces)
+      {
+        if (m_.isFree(c.tet) || !ed_.flip23(c.tet, c.a, &bc_, &created))
+          continue;
+        if (ed_.findEdge(a, b) >= 0)
+          return true;
+        if (traceSegment(a, b, f2, e2) && f2.size() + e2.size() < m0)
+        {
+          progress = true;
+          break;
+        }
+        undo(created);
+      }
+      if (progress)
+        continue;
+      for (const Crossing& c : edges)
+      {
+        if (m_.isFree(c.tet) || !ed_.removeEdge(c.tet, c.a, c.b, &bc_, &created))
+          continue;
+        if (ed_.findEdge(a, b) >= 0)
+          return true;
+        if (traceSegment(a, b, f2, e2) && f2.size() + e2.size() < m0)
+        {
+          progress = true;
+          break;
+        }
+        undo(created);
+      }
+      if (!progress)
+        return false;
+    }
+    return false;
+  }
+
+  bool recoverFacetByFlips(int32_t a, int32_t b, int32_t c)
+  {
+    std::vector<Crossing> edges, e2;
+    std::vector<int32_t> created, visited;
+    int32_t f[3];
+    for (int iter = 0; iter < 500; ++iter)
+    {
+      if (ed_.findFace(a, b, c) >= 0)
+        return true;
+      if (!traceFacet(a, b, c, edges, &visited))
+        return false;
+      std::unordered_set<uint64_t> crossing;
+      for (const Crossing& cr : edges)
+        crossing.insert(edgeKey(cr.a, cr.b));
+      const size_t m0 = edges.size();
+      if (m0 == 0)
+        return false;
+      auto better = [&]() {
+        if (ed_.findFace(a, b, c) >= 0)
+          return true;
+        return traceFacet(a, b, c, e2, nullptr) && e2.size() < m0;
+      };
+      bool progress = false;
+      for (const Crossing& cr : edges)
+      {
+        if (m_.isFree(cr.tet) || !ed_.removeEdge(cr.tet, cr.a, cr.b, &bc_, &created))
+          continue;
+        if (better())
+        {
+          progress = true;
+          break;
+        }
+        undo(created);
+      }
+      if (!progress)
+      {
+        // 2-3 flips of faces that contain a crossing edge.
+        for (int32_t t : visited)
+        {
+          if (m_.isFree(t))
+            continue;
+          for (int i = 0; i < 4 && !progress; ++i)
+          {
+            m_.faceVertices(t, i, f);
+            bool has = false;
+            for (int k = 0; k < 3 && !has; ++k)
+              has = crossing.count(edgeKey(f[k], f[(k + 1) % 3])) != 0;
+            if (!has || m_.neighbor(t, i) < t)
+              continue;
+            if (!ed_.flip23(t, i, &bc_, &created))
+              continue;
+            if (better())
+            {
+              progress = true;
+              break;
+            }
+            undo(created);
+          }
+          if (progress)
+            break;
+        }
+        if (!progress)
+          return false;
+      }
+    }
+    return false;
+  }
+
+  // Steiner point at the midpoint of subsegment ab.
+  bool splitEdge(int32_t a, int32_t b)
+  {
+    const std::array<int32_t, 2>* ef = bc_.edgeFaces(a, b);
+    if (!ef)
+      return false;
+    const std::array<int32_t, 2> fs = *ef;
+    const double *A = m_.point(a), *B = m_.point(b);
+    double p[3] = { 0.5 * (A[0] + B[0]), 0.5 * (A[1] + B[1]), 0.5 * (A[2] + B[2]) };
+    const int32_t v = m_.addPoint(p);
+    bool sameParent = fs[0] >= 0 && fs[1] >= 0 && bc_.parent[fs[0]] == bc_.parent[fs[1]];
+    kinds_.push_back(sameParent ? VertexKind::SteinerFacet : VertexKind::SteinerSegment);
+    if (!ed_.insertVertex(v, ed_.tetOf(a), &bc_))
+    {
+      m_.points.resize(m_.points.size() - 3);
+      kinds_.pop_back();
+      return false;
+    }
+    for (int32_t fid : fs)
+    {
+      if (fid < 0)
+        continue;
+      const int32_t s[3] = { bc_.subface(fid)[0], bc_.subface(fid)[1], bc_.subface(fid)[2] };
+      const int32_t par = bc_.parent[fid];
+      int i = 0;
+      while (!((s[i] == a && s[(i + 1) % 3] == b) || (s[i] == b && s[(i + 1) % 3] == a)))
+        ++i;
+      bc_.removeSubface(fid);
+      bc_.addSubface(s[i], v, s[(i + 2) % 3], par);
+      bc_.addSubface(v, s[(i + 1) % 3], s[(i + 2) % 3], par);
+    }
+    if (sameParent)
+      ++steinerFacet;
+    else
+      ++steinerSegment;
+    return true;
+  }
+
+  bool splitFacet(int32_t fid)
+  {
+    const int32_t s[3] = { bc_.subface(fid)[0], bc_.subface(fid)[1], bc_.subface(fid)[2] };
+    const double *A = m_.point(s[0]), *B = m_.point(s[1]), *C = m_.point(s[2]);
+    double p[3];
+    for (int k = 0; k < 3; ++k)
+      p[k] = (A[k] + B[k] + C[k]) / 3.0;
+    const int32_t v = m_.addPoint(p);
+    kinds_.push_back(VertexKind::SteinerFacet);
+    if (!ed_.insertVertex(v, ed_.tetOf(s[0]), &bc_))
+    {
+      m_.points.resize(m_.points.size() - 3);
+      kinds_.pop_back();
+      return false;
+    }
+    const int32_t par = bc_.parent[fid];
+    bc_.removeSubface(fid);
+    bc_.addSubface(s[0], s[1], v, par);
+    bc_.addSubface(s[1], s[2], v, par);
+    bc_.addSubface(s[2], s[0], v, par);
+    ++steinerFacet;
+    return true;
+  }
+
+  int64_t steinerSegment = 0, steinerFacet = 0;
+
+private:
+  MeshEditor& ed_;
+  TetMesh& m_;
+  BoundaryConstraints& bc_;
+  std::vector<VertexKind>& kinds_;
+  std::vector<int32_t> queue_;
+  std::unordered_set<TriKey, TriKeyHash> seenFaces_;
+  std::unordered_set<uint64_t> seenEdges_;
+};
+
+} // namespace
+
+Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
+  const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  SilentProgress silent;
+  Progress* pr = progress ? progress : &silent;
+  RecoveryReport rep;
+  Recoverer rec(ed, bc, kinds);
+  const int64_t budget = options.maxSteinerPoints >= 0 ? options.maxSteinerPoints
+                                                       : 4 * static_cast<int64_t>(bc.numInputTriangles()) + 1000;
+  const uint64_t f23 = ed.flips23, f32 = ed.flips32, fer = ed.flipsEdgeRemoval;
+  std::vector<std::pair<int32_t, int32_t>> missingEdges;
+  std::vector<int32_t> missingFaces;
+  std::vector<std::pair<int32_t, int32_t>> failedEdges;
+  std::vector<int32_t> failedFaces;
+  bool first = true, firstFacets = true;
+  int64_t steinerUsed = 0;
+  for (int round = 0;; ++round)
+  {
+    if (pr->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
+    // Missing subface edges.
+    missingEdges.clear();
+    {
+      std::unordered_set<uint64_t> seen;
+      for (int32_t f = 0; f < bc.capacity(); ++f)
+      {
+        if (!bc.alive(f))
+          continue;
+        const int32_t* s = bc.subface(f);
+        for (int i = 0; i < 3; ++i)
+        {
+          const int32_t a = s[i], b = s[(i + 1) % 3];
+          if (!seen.insert(edgeKey(a, b)).second)
+            continue;
+          if (ed.findEdge(a, b) < 0)
+            missingEdges.push_back({ a, b });
+        }
+      }
+    }
+    if (first)
+      rep.missingEdgesInitially = static_cast<int64_t>(missingEdges.size());
+    first = false;
+    failedEdges.clear();
+    size_t done = 0;
+    for (auto [a, b] : missingEdges)
+    {
+      if (++done % 256 == 0)
+      {
+        pr->report(0.5 * static_cast<double>(done) / missingEdges.size(), "Recovering boundary edges");
+        if (pr->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
+      }
+      if (!bc.isEdge(a, b))
+        continue; // split meanwhile
+      if (rec.recoverEdgeByFlips(a, b))
+        continue;
+      failedEdges.push_back({ a, b });
+    }
+    bool changed = false;
+    if (!failedEdges.empty())
+    {
+      if (!options.allowSteiner || steinerUsed >= budget)
+        break;
+      for (auto [a, b] : failedEdges)
+      {
+        if (!bc.isEdge(a, b) || ed.findEdge(a, b) >= 0 || steinerUsed >= budget)
+          continue;
+        if (rec.splitEdge(a, b))
+        {
+          ++steinerUsed;
+          changed = true;
+        }
+      }
+      if (changed)
+        continue;
+      break; // nothing could be split
+    }
+    // All edges present: facets.
+    missingFaces.clear();
+    for (int32_t f = 0; f < bc.capacity(); ++f)
+    {
+      if (!bc.alive(f))
+        continue;
+      const int32_t* s = bc.subface(f);
+      if (ed.findFace(s[0], s[1], s[2]) < 0)
+        missingFaces.push_back(f);
+    }
+    if (firstFacets)
+      rep.missingFacetsInitially = static_cast<int64_t>(missingFaces.size());
+    firstFacets = false;
+    if (missingFaces.empty())
+      break;
+    failedFaces.clear();
+    done = 0;
+    for (int32_t f : missingFaces)
+    {
+      if (++done % 256 == 0)
+      {
+        pr->report(0.5 + 0.5 * static_cast<double>(done) / missingFaces.size(), "Recovering boundary facets");
+        if (pr->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
+      }
+      if (!bc.alive(f))
+        continue;
+      const int32_t* s = bc.subface(f);
+      if (!rec.recoverFacetByFlips(s[0], s[1], s[2]))
+        failedFaces.push_back(f);
+    }
+    if (failedFaces.empty())
+      continue; // re-check edges (flips never remove constraint edges, so this ends quickly)
+    if (!options.allowSteiner || steinerUsed >= budget)
+      break;
+    for (int32_t f : failedFaces)
+    {
+      if (!bc.alive(f) || steinerUsed >= budget)
+        continue;
+      const int32_t* s = bc.subface(f);
+      if (ed.findFace(s[0], s[1], s[2]) >= 0)
+        continue;
+      // Prefer splitting the longest edge when the facet is skinny (keeps the pieces well shaped).
+      if (rec.splitFacet(f))
+      {
+        ++steinerUsed;
+        changed = true;
+      }
+    }
+    if (!changed)
+      break;
+  }
+
+  // Final census.
+  std::vector<int64_t> badEdges, badFaces;
+  {
+    std::unordered_set<uint64_t> seen;
+    for (int32_t f = 0; f < bc.capacity(); ++f)
+    {
+      if (!bc.alive(f))
+        continue;
+      const int32_t* s = bc.subface(f);
+      bool faceOk = true;
+      for (int i = 0; i < 3; ++i)
+      {
+        const int32_t a = s[i], b = s[(i + 1) % 3];
+        if (seen.insert(edgeKey(a, b)).second && ed.findEdge(a, b) < 0)
+        {
+          ++rep.unrecoveredEdges;
+          faceOk = false;
+          if (badEdges.size() < 5)
+            badEdges.push_back(bc.parent[f]);
+        }
+      }
+      if (faceOk && ed.findFace(s[0], s[1], s[2]) < 0)
+      {
+        ++rep.unrecoveredFacets;
+        if (badFaces.size() < 5)
+          badFaces.push_back(bc.parent[f]);
+      }
+    }
+  }
+  rep.steinerSegment = rec.steinerSegment;
+  rep.steinerFacet = rec.steinerFacet;
+  rep.flips23 = ed.flips23 - f23;
+  rep.flips32 = ed.flips32 - f32;
+  rep.flipsEdgeRemoval = ed.flipsEdgeRemoval - fer;
+  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (report)
+    *report = rep;
+  if (rep.unrecoveredEdges || rep.unrecoveredFacets)
+  {
+    std::vector<int64_t> ids = badEdges;
+    ids.insert(ids.end(), badFaces.begin(), badFaces.end());
+    return Status::failure(ErrorKind::RecoveryFailed,
+      "Boundary recovery failed: " + std::to_string(rep.unrecoveredEdges) + " edge(s) and " +
+        std::to_string(rep.unrecoveredFacets) + " facet(s) could not be recovered (" +
+        std::to_string(steinerUsed) + " Steiner points used" +
+        (options.allowSteiner ? "" : ", Steiner points disabled") + "); first input triangles listed.",
+      ids);
+  }
+  return Status::success();
+}
+
+} // namespace volgrid

@@ -1,0 +1,202 @@
+// Boundary recovery (paper 7.3): make every input triangle a face of the tetrahedral mesh.
+//
+// Starting point: the Delaunay tetrahedralization of the surface points (plus a far box, see Mesher.h),
+// without ghost tets. Stages, all decided by the exact predicates (no epsilon):
+//   1. Missing edges (segments) are recovered by flips: 2-3 flips of the faces the segment crosses and
+//      edge removal (3-2, 4-4 and general n-to-(2n-4), best triangulation of the edge's ring found by
+//      dynamic programming) of the edges it crosses. A flip is kept only when it strictly reduces the
+//      number of faces/edges the segment crosses, so the search always terminates.
+//   2. Missing facets (all three edges present) are recovered the same way: the edges crossing the
+//      triangle are removed by edge removal or 2-3 flips.
+//   3. What flips cannot recover gets a Steiner point (paper: "points at the intersection of the missing
+//      edges/facets with the tets"): the midpoint of a missing (sub)segment or the centroid of a missing
+//      (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
+//      made star-shaped exactly. The boundary triangles are then split into subfaces (BoundaryConstraints)
+//      and the pieces are recovered in turn. SteinerRemoval.h later removes every such boundary point.
+// Flips and insertions never destroy a recovered subface or subsegment (they are constraints).
+// Whatever cannot be recovered within the Steiner budget is reported as ErrorKind::RecoveryFailed.
+#pragma once
+
+#include "Progress.h"
+#include "Status.h"
+#include "TetMesh.h"
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace volgrid
+{
+
+// What a mesh vertex is, for recovery and Steiner removal.
+enum class VertexKind : uint8_t
+{
+  Unused = 0,      // not (yet) in the mesh, or an input point no triangle references
+  Boundary,        // an input point used by the boundary triangles
+  Box,             // a corner of the auxiliary far box (only in exterior tets, removed with them)
+  SteinerSegment,  // added on an input edge (boundary: must be removed)
+  SteinerFacet,    // added inside an input triangle (boundary: must be removed)
+  SteinerInterior  // added strictly inside a region (allowed, counted)
+};
+
+inline uint64_t edgeKey(int32_t a, int32_t b)
+{
+  const uint32_t lo = static_cast<uint32_t>(a < b ? a : b), hi = static_cast<uint32_t>(a < b ? b : a);
+  return (static_cast<uint64_t>(lo) << 32) | hi;
+}
+
+struct TriKey
+{
+  int32_t v[3];
+  TriKey() = default;
+  TriKey(int32_t a, int32_t b, int32_t c);
+  bool operator==(const TriKey& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
+  bool operator<(const TriKey& o) const
+  {
+    return v[0] != o.v[0] ? v[0] < o.v[0] : v[1] != o.v[1] ? v[1] < o.v[1] : v[2] < o.v[2];
+  }
+};
+struct TriKeyHash
+{
+  size_t operator()(const TriKey& k) const
+  {
+    uint64_t h = static_cast<uint32_t>(k.v[0]) * 0x9E3779B97F4A7C15ull;
+    h ^= (static_cast<uint64_t>(static_cast<uint32_t>(k.v[1])) + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
+    h ^= (static_cast<uint64_t>(static_cast<uint32_t>(k.v[2])) + 0x94D049BB133111EBull) * 0x165667B19E3779F9ull;
+    return static_cast<size_t>(h ^ (h >> 29));
+  }
+};
+
+// The boundary the mesh must contain: the input triangles, each possibly split into subfaces while
+// boundary Steiner points exist. A subface keeps its parent triangle's orientation and id.
+class BoundaryConstraints
+{
+public:
+  void init(const int32_t* triangles, int32_t numTriangles);
+  int32_t addSubface(int32_t a, int32_t b, int32_t c, int32_t parent);
+  void removeSubface(int32_t f);
+  int32_t findSubface(int32_t a, int32_t b, int32_t c) const; // -1 when not a (live) subface
+  bool isEdge(int32_t a, int32_t b) const { return edges_.count(edgeKey(a, b)) != 0; }
+  // The (at most two) live subfaces using edge ab; -1 entries are empty. nullptr when not an edge.
+  const std::array<int32_t, 2>* edgeFaces(int32_t a, int32_t b) const;
+
+  int32_t capacity() const { return static_cast<int32_t>(parent.size()); }
+  bool alive(int32_t f) const { return parent[f] >= 0; }
+  const int32_t* subface(int32_t f) const { return verts.data() + 3 * static_cast<size_t>(f); }
+  int32_t numAlive() const { return numAlive_; }
+  int32_t numInputTriangles() const { return numInput_; }
+  // Edges used by more than two subfaces seen by init() (the input was not manifold).
+  int64_t nonManifoldEdges() const { return nonManifold_; }
+
+  std::vector<int32_t> verts;  // 3 per subface
+  std::vector<int32_t> parent; // input triangle id, -1 = removed
+
+private:
+  std::unordered_map<TriKey, int32_t, TriKeyHash> faces_;
+  std::unordered_map<uint64_t, std::array<int32_t, 2>> edges_;
+  int32_t numAlive_ = 0;
+  int32_t numInput_ = 0;
+  int64_t nonManifold_ = 0;
+};
+
+// Local topological edits on a TetMesh without ghost tets, with a vertex -> incident tet map.
+// Every edit goes through replace(): old tets out, new (positively oriented) tets in, adjacency rebuilt
+// from the old tets' outer faces. Used by recovery, Steiner insertion and Steiner removal.
+class MeshEditor
+{
+public:
+  explicit MeshEditor(TetMesh& mesh);
+  TetMesh& mesh;
+
+  void rebuildVertexMap();
+  // A live tet incident to v, or -1 (v used by no tet).
+  int32_t tetOf(int32_t v);
+  // All live tets incident to v (BFS over faces containing v).
+  void star(int32_t v, std::vector<int32_t>& out);
+  // A tet containing edge ab (-1 if none).
+  int32_t findEdge(int32_t a, int32_t b);
+  // A tet having abc as a face (face index in *face), -1 if none.
+  int32_t findFace(int32_t a, int32_t b, int32_t c, int* face = nullptr);
+  // The ring around edge xy given a tet t containing it: ring vertices r_i and tets {x,y,r_i,r_i+1}
+  // with orient3d(x,y,r_i,r_i+1) > 0. False when the ring is open (edge on the hull).
+  bool edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets);
+
+  // Replace oldTets by newTets (vertex quadruples, which must be positively oriented and fill the same
+  // region). Returns false and leaves the mesh untouched when the faces do not match up. With allowOpen,
+  // the region may change where it has no neighbour: unmatched new faces get no neighbour and outer tets
+  // whose old face is gone lose that neighbour (used when the boundary moves, SteinerRemoval).
+  bool replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
+    std::vector<int32_t>* created = nullptr, bool allowOpen = false);
+
+  // Flips. Each checks validity exactly and returns false (mesh untouched) when invalid or when it
+  // would remove a constraint (a boundary subface / subface edge).
+  bool flip23(int32_t t, int face, const BoundaryConstraints* bc, std::vector<int32_t>* created = nullptr);
+  // Removes edge xy (contained in tet t): n-to-(2n-4) with the best valid ring triangulation.
+  bool removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
+    std::vector<int32_t>* created = nullptr);
+
+  // Inserts a new vertex v (coordinates already in mesh.points) with a Bowyer-Watson cavity grown from
+  // the tets whose closure contains it, not crossing constraint faces (nor hull faces), made star-shaped
+  // from v. start: a tet near v. Returns false (mesh untouched) when no valid cavity exists.
+  bool insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc);
+
+  // Locates a tet whose closure contains p by a visibility walk from `start`; -1 if it leaves the mesh.
+  int32_t locate(const double* p, int32_t start);
+
+  uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
+  // The tets the last successful flip removed (for undo: replace(created, lastRemoved)).
+  std::vector<std::array<int32_t, 4>> lastRemoved;
+
+  // Scratch helpers shared by the stages.
+  uint32_t newStamp();
+  std::vector<uint32_t> tetStamp; // per tet slot (resized on demand)
+  void ensureStamp();
+
+private:
+  std::vector<int32_t> vertTet_;
+  uint32_t stamp_ = 0;
+  // replace() scratch
+  struct BFace
+  {
+    TriKey key;
+    int32_t code;
+  };
+  struct NFace
+  {
+    TriKey key;
+    int32_t tet;
+    int face;
+  };
+  std::vector<BFace> bfaces_;
+  std::vector<NFace> nfaces_;
+  std::vector<int32_t> tmpTets_, tmpRing_, cavity_, queue_;
+  std::vector<std::array<int32_t, 4>> tmpNew_;
+};
+
+struct RecoveryOptions
+{
+  bool allowSteiner = true;   // false: flips only (what flips cannot do is reported)
+  int64_t maxSteinerPoints = -1; // budget; -1 = automatic (4 x triangles + 1000)
+};
+
+struct RecoveryReport
+{
+  int64_t missingEdgesInitially = 0;
+  int64_t missingFacetsInitially = 0; // facets missing after all edges were present
+  int64_t steinerSegment = 0;         // Steiner points put on input edges
+  int64_t steinerFacet = 0;           // Steiner points put inside input triangles
+  uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
+  // The tets the last successful flip removed (for undo: replace(created, lastRemoved)).
+  std::vector<std::array<int32_t, 4>> lastRemoved;
+  int64_t unrecoveredEdges = 0, unrecoveredFacets = 0;
+  double seconds = 0;
+};
+
+// Recover the boundary. `mesh` has no ghost tets; every vertex of the constraints is a mesh vertex;
+// `kinds` gives one VertexKind per mesh vertex and is extended for the Steiner points added.
+Status recoverBoundary(MeshEditor& editor, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
+  const RecoveryOptions& options, Progress* progress, RecoveryReport* report);
+
+} // namespace volgrid

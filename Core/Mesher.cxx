@@ -1,0 +1,304 @@
+#include "Mesher.h"
+
+#include "BoundaryCheck.h"
+#include "BoundaryRecovery.h"
+#include "Delaunay.h"
+#include "SteinerRemoval.h"
+#include "SurfaceChecks.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+namespace volgrid
+{
+
+namespace
+{
+
+double since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Shells by edge connectivity (used when the surface checks are off).
+std::vector<int32_t> shellsOf(const SurfaceMesh& s, int32_t* count)
+{
+  const int32_t nt = s.numberOfTriangles();
+  std::vector<int32_t> parent(static_cast<size_t>(nt));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int32_t x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::unordered_map<uint64_t, int32_t> first;
+  first.reserve(static_cast<size_t>(nt) * 2);
+  for (int32_t t = 0; t < nt; ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      auto [it, fresh] = first.emplace(edgeKey(s.triangle(t)[k], s.triangle(t)[(k + 1) % 3]), t);
+      if (!fresh)
+        parent[find(t)] = find(it->second);
+    }
+  std::vector<int32_t> id(static_cast<size_t>(nt), -1), shell(static_cast<size_t>(nt));
+  int32_t n = 0;
+  for (int32_t t = 0; t < nt; ++t)
+  {
+    const int32_t r = find(t);
+    if (id[r] < 0)
+      id[r] = n++;
+    shell[t] = id[r];
+  }
+  *count = n;
+  return shell;
+}
+
+} // namespace
+
+Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, MesherResult& result, Progress* progress)
+{
+  const auto tStart = std::chrono::steady_clock::now();
+  result = MesherResult();
+  SilentProgress silent;
+  Progress* pr = progress ? progress : &silent;
+  MesherStatistics& st = result.stats;
+  if (input.numberOfTriangles() == 0)
+    return Status::failure(ErrorKind::EmptyInput, "The surface has no triangles.");
+  if (options.maxSteinerPoints < -1)
+    return Status::failure(ErrorKind::InvalidOption, "maxSteinerPoints must be -1 (automatic) or >= 0.");
+
+  // 1. Merge and validate.
+  auto t0 = std::chrono::steady_clock::now();
+  SurfaceMesh surf = input;
+  for (int32_t t = 0; t < surf.numberOfTriangles(); ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int32_t v = surf.triangle(t)[k];
+      if (v < 0 || v >= surf.numberOfPoints())
+        return Status::failure(ErrorKind::InvalidOption,
+          "Triangle " + std::to_string(t) + " refers to point " + std::to_string(v) + ", which does not exist.",
+          { t });
+    }
+  MergeResult merge = mergeCoincidentPoints(surf);
+  st.mergedPoints = merge.mergedPoints;
+  result.inputToOutputPoint = merge.oldToNew;
+  const int32_t N = surf.numberOfPoints();
+  const int32_t NT = surf.numberOfTriangles();
+  st.inputPoints = N;
+  st.inputTriangles = NT;
+  std::vector<int> shellDepth;
+  int32_t nshell = 0;
+  if (options.checkSurface)
+  {
+    SurfaceCheckOptions co;
+    co.selfIntersections = options.checkSelfIntersections;
+    co.nesting = true;
+    co.threads = options.threads;
+    co.progress = pr;
+    SurfaceCheckReport rep = checkSurface(surf, co);
+    if (pr->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+    Status s = surfaceStatus(rep);
+    if (!s.ok())
+      return s;
+    result.triangleShell = rep.triangleShell;
+    nshell = static_cast<int32_t>(rep.shells.size());
+    for (auto& sh : rep.shells)
+      shellDepth.push_back(sh.depth);
+  }
+  else
+  {
+    result.triangleShell = shellsOf(surf, &nshell);
+    shellDepth.assign(static_cast<size_t>(nshell), 0); // unknown nesting: volume check not meaningful
+  }
+  st.secondsCheck = since(t0);
+
+  // 2. Delaunay of the referenced points and a far box.
+  t0 = std::chrono::steady_clock::now();
+  std::vector<uint8_t> used(static_cast<size_t>(N), 0);
+  for (int32_t v : surf.triangles)
+    used[v] = 1;
+  std::vector<int32_t> compactToFull;
+  std::vector<double> xyz;
+  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+  for (int32_t v = 0; v < N; ++v)
+    if (used[v])
+    {
+      compactToFull.push_back(v);
+      for (int k = 0; k < 3; ++k)
+      {
+        const double x = surf.points[3 * static_cast<size_t>(v) + k];
+        if (!std::isfinite(x))
+          return Status::failure(ErrorKind::NonFinitePoint, "Point " + std::to_string(v) + " is not finite.", { v });
+        xyz.push_back(x);
+        lo[k] = std::min(lo[k], x);
+        hi[k] = std::max(hi[k], x);
+      }
+    }
+  double ext = 0;
+  for (int k = 0; k < 3; ++k)
+    ext = std::max(ext, hi[k] - lo[k]);
+  if (!(ext > 0))
+    return Status::failure(ErrorKind::DegenerateInput, "All surface points coincide.");
+  std::vector<double> corners;
+  for (int c = 0; c < 8; ++c)
+    for (int k = 0; k < 3; ++k)
+      corners.push_back(((c >> k) & 1) ? hi[k] + ext : lo[k] - ext);
+  for (int c = 0; c < 8; ++c)
+  {
+    compactToFull.push_back(N + c);
+    xyz.insert(xyz.end(), corners.begin() + 3 * c, corners.begin() + 3 * c + 3);
+  }
+  TetMesh mesh;
+  std::vector<int32_t> inputToVertex;
+  DelaunayOptions dopt;
+  dopt.keepGhosts = false;
+  Status s = buildDelaunay(xyz.data(), xyz.size() / 3, dopt, mesh, inputToVertex, pr);
+  if (!s.ok())
+    return s;
+  // Renumber: vertex i = merged input point i, box corners N..N+7.
+  mesh.points = surf.points;
+  mesh.points.insert(mesh.points.end(), corners.begin(), corners.end());
+  for (auto& v : mesh.tetVertices)
+    if (v >= 0)
+      v = compactToFull[v];
+  st.secondsDelaunay = since(t0);
+  if (pr->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+
+  // 3. Recovery.
+  t0 = std::chrono::steady_clock::now();
+  std::vector<VertexKind> kinds(static_cast<size_t>(N + 8), VertexKind::Unused);
+  for (int32_t v = 0; v < N; ++v)
+    if (used[v])
+      kinds[v] = VertexKind::Boundary;
+  for (int c = 0; c < 8; ++c)
+    kinds[N + c] = VertexKind::Box;
+  BoundaryConstraints bc;
+  bc.init(surf.triangles.data(), NT);
+  MeshEditor ed(mesh);
+  RecoveryOptions ro;
+  ro.allowSteiner = options.allowSteinerPoints;
+  ro.maxSteinerPoints = options.maxSteinerPoints;
+  RecoveryReport rr;
+  s = recoverBoundary(ed, bc, kinds, ro, pr, &rr);
+  st.missingEdges = rr.missingEdgesInitially;
+  st.missingFacets = rr.missingFacetsInitially;
+  st.flips = static_cast<int64_t>(rr.flips23 + rr.flips32 + rr.flipsEdgeRemoval);
+  st.steinerInserted = rr.steinerSegment + rr.steinerFacet;
+  st.secondsRecovery = since(t0);
+  if (!s.ok())
+    return s;
+
+  // 4. Exterior removal.
+  t0 = std::chrono::steady_clock::now();
+  RegionResult regions;
+  s = removeExterior(ed, bc, options.regionRule, regions, pr);
+  if (!s.ok())
+    return s;
+  st.regions = regions.numRegions;
+  st.secondsExterior = since(t0);
+
+  // 5. Boundary Steiner points.
+  t0 = std::chrono::steady_clock::now();
+  if (options.removeBoundarySteiner)
+  {
+    SteinerRemovalReport sr;
+    s = removeBoundarySteinerPoints(ed, bc, kinds, &regions.tetRegion, pr, &sr);
+    if (!s.ok())
+      return s;
+  }
+  st.secondsSteiner = since(t0);
+
+  // 6. Output.
+  const int32_t nv = mesh.numVertices();
+  std::vector<int32_t> outId(static_cast<size_t>(nv), -1);
+  std::vector<uint8_t> inTet(static_cast<size_t>(nv), 0);
+  mesh.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      inTet[mesh.vertex(t, i)] = 1;
+  });
+  result.points.assign(mesh.points.begin(), mesh.points.begin() + 3 * static_cast<size_t>(N));
+  result.numInputPoints = N;
+  for (int32_t v = 0; v < N; ++v)
+    outId[v] = v;
+  for (int32_t v = N; v < nv; ++v)
+  {
+    if (!inTet[v])
+      continue;
+    if (kinds[v] == VertexKind::Box)
+      return Status::failure(ErrorKind::InternalError, "A far-box corner is still used by a domain tet.");
+    outId[v] = static_cast<int32_t>(result.points.size() / 3);
+    result.points.insert(result.points.end(), mesh.points.begin() + 3 * static_cast<size_t>(v),
+      mesh.points.begin() + 3 * static_cast<size_t>(v) + 3);
+    if (kinds[v] == VertexKind::SteinerInterior)
+      ++st.steinerInterior;
+    else
+      ++st.steinerBoundary;
+  }
+  result.tets.reserve(static_cast<size_t>(mesh.numTets()) * 4);
+  result.tetRegion.reserve(static_cast<size_t>(mesh.numTets()));
+  mesh.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      result.tets.push_back(outId[mesh.vertex(t, i)]);
+    result.tetRegion.push_back(regions.tetRegion[t]);
+  });
+  // Boundary triangles: input triangles that are faces of the mesh (all of them unless keep-all
+  // interfaces... which are faces too).
+  for (int32_t t = 0; t < NT; ++t)
+  {
+    const int32_t* v = surf.triangle(t);
+    if (ed.findFace(v[0], v[1], v[2]) < 0)
+      continue;
+    result.boundaryTriangles.insert(result.boundaryTriangles.end(), v, v + 3);
+    result.boundaryInputTriangle.push_back(t);
+    result.boundaryPatch.push_back(surf.hasPatchIds() ? surf.patchIds[t] : result.triangleShell[t]);
+  }
+  st.points = static_cast<int64_t>(result.points.size() / 3);
+  st.tets = static_cast<int64_t>(result.tets.size() / 4);
+  st.enclosedVolume = enclosedVolume(surf.points, surf.triangles, result.triangleShell, shellDepth, options.regionRule);
+  {
+    double sum = 0, c = 0;
+    for (size_t t = 0; t < result.tets.size(); t += 4)
+    {
+      const double* a = &result.points[3 * static_cast<size_t>(result.tets[t])];
+      const double* b = &result.points[3 * static_cast<size_t>(result.tets[t + 1])];
+      const double* cc = &result.points[3 * static_cast<size_t>(result.tets[t + 2])];
+      const double* d = &result.points[3 * static_cast<size_t>(result.tets[t + 3])];
+      double e[3][3];
+      for (int k = 0; k < 3; ++k)
+      {
+        e[0][k] = b[k] - a[k];
+        e[1][k] = cc[k] - a[k];
+        e[2][k] = d[k] - a[k];
+      }
+      const double v = (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                         e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                         e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+        6.0;
+      const double y = v - c, tt = sum + y;
+      c = (tt - sum) - y;
+      sum = tt;
+    }
+    st.tetVolume = sum;
+  }
+  if (options.verify)
+  {
+    BoundaryCheckReport br =
+      checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume);
+    const bool boundaryOk = options.regionRule == RegionRule::EvenOdd ? br.boundaryEqualsInput() : br.inputTrianglesNotFaces == 0;
+    if (!br.meshValid() || !boundaryOk || (options.checkSurface && br.relativeVolumeError > 1e-9))
+    {
+      std::vector<int64_t> ids = br.firstProblems;
+      result = MesherResult();
+      return Status::failure(ErrorKind::InternalError, "The mesh failed its final check: " + br.summary(), ids);
+    }
+  }
+  st.secondsTotal = since(tStart);
+  pr->report(1.0, "Done");
+  return Status::success();
+}
+
+} // namespace volgrid

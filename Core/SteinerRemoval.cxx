@@ -1,0 +1,504 @@
+#include "SteinerRemoval.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+
+namespace volgrid
+{
+
+using predicates::orient3d;
+
+namespace
+{
+
+double shapeQuality(const double* a, const double* b, const double* c, const double* d)
+{
+  double e[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    e[0][i] = b[i] - a[i];
+    e[1][i] = c[i] - a[i];
+    e[2][i] = d[i] - a[i];
+  }
+  const double vol = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  double s = 0;
+  const double* p[4] = { a, b, c, d };
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      for (int k = 0; k < 3; ++k)
+        s += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+  return s > 0 ? vol / (s * std::sqrt(s)) : 0;
+}
+
+// Ear clipping of a polygon (point ids, counter-clockwise in the parent's orientation) in the projection
+// that drops `axis`; `o` is the sign of a counter-clockwise turn in that projection.
+bool triangulatePolygon3(const TetMesh& m, std::vector<int32_t> poly, int axis, int o,
+  std::vector<std::array<int32_t, 3>>& out)
+{
+  while (poly.size() > 3)
+  {
+    const size_t n = poly.size();
+    int bestI = -1;
+    double bestQ = -1;
+    for (size_t i = 0; i < n; ++i)
+    {
+      const int32_t a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+      const double *A = m.point(a), *B = m.point(b), *C = m.point(c);
+      if (predicates::orient2dProjected(A, B, C, axis) != o)
+        continue;
+      bool empty = true;
+      for (size_t k = 0; k < n && empty; ++k)
+      {
+        const int32_t w = poly[k];
+        if (w == a || w == b || w == c)
+          continue;
+        const double* W = m.point(w);
+        if (predicates::orient2dProjected(A, B, W, axis) * o >= 0 &&
+          predicates::orient2dProjected(B, C, W, axis) * o >= 0 &&
+          predicates::orient2dProjected(C, A, W, axis) * o >= 0)
+          empty = false;
+      }
+      if (!empty)
+        continue;
+      // Quality: smallest angle (approximate; only chooses among valid ears).
+      double q = 1e300;
+      const double* P[3] = { A, B, C };
+      for (int k = 0; k < 3; ++k)
+      {
+        const double *U = P[k], *V = P[(k + 1) % 3], *W = P[(k + 2) % 3];
+        double d1[3], d2[3], dot = 0, l1 = 0, l2 = 0;
+        for (int j = 0; j < 3; ++j)
+        {
+          d1[j] = V[j] - U[j];
+          d2[j] = W[j] - U[j];
+          dot += d1[j] * d2[j];
+          l1 += d1[j] * d1[j];
+          l2 += d2[j] * d2[j];
+        }
+        q = std::min(q, dot / std::sqrt(std::max(l1 * l2, 1e-300)));
+      }
+      q = -q; // larger = bigger smallest angle (smaller max cosine)
+      if (bestI < 0 || q > bestQ)
+      {
+        bestI = static_cast<int>(i);
+        bestQ = q;
+      }
+    }
+    if (bestI < 0)
+      return false;
+    const size_t i = static_cast<size_t>(bestI);
+    out.push_back({ { poly[(i + n - 1) % n], poly[i], poly[(i + 1) % n] } });
+    poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  if (poly.size() == 3)
+    out.push_back({ { poly[0], poly[1], poly[2] } });
+  return poly.size() == 3;
+}
+
+class Remover
+{
+public:
+  Remover(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds, std::vector<int32_t>* region)
+    : ed_(ed)
+    , m_(ed.mesh)
+    , bc_(bc)
+    , kinds_(kinds)
+    , region_(region)
+  {
+  }
+
+  int64_t addedInterior = 0;
+
+  bool remove(int32_t p)
+  {
+    std::vector<int32_t> S;
+    ed_.star(p, S);
+    if (S.empty())
+      return false;
+    int32_t f[3];
+    // Subfaces around p, grouped by parent.
+    std::map<int32_t, std::vector<int32_t>> byParent;
+    std::vector<int32_t> subs;
+    for (int32_t t : S)
+      for (int i = 0; i < 4; ++i)
+      {
+        if (m_.vertex(t, i) == p)
+          continue;
+        m_.faceVertices(t, i, f);
+        const int32_t sf = bc_.findSubface(f[0], f[1], f[2]);
+        if (sf >= 0 && std::find(subs.begin(), subs.end(), sf) == subs.end())
+        {
+          subs.push_back(sf);
+          byParent[bc_.parent[sf]].push_back(sf);
+        }
+      }
+    if (subs.empty())
+      return false;
+    // New boundary triangles per parent.
+    std::vector<std::array<int32_t, 3>> newTris;
+    std::vector<int32_t> newTriParent;
+    for (auto& [par, list] : byParent)
+    {
+      std::vector<std::pair<int32_t, int32_t>> fan; // (x, y) of (p, x, y)
+      double nrm[3] = { 0, 0, 0 };
+      for (int32_t sf : list)
+      {
+        const int32_t* s = bc_.subface(sf);
+        int r = 0;
+        while (s[r] != p)
+          ++r;
+        fan.push_back({ s[(r + 1) % 3], s[(r + 2) % 3] });
+        const double *P = m_.point(p), *X = m_.point(s[(r + 1) % 3]), *Y = m_.point(s[(r + 2) % 3]);
+        double u[3], v[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          u[k] = X[k] - P[k];
+          v[k] = Y[k] - P[k];
+        }
+        nrm[0] += u[1] * v[2] - u[2] * v[1];
+        nrm[1] += u[2] * v[0] - u[0] * v[2];
+        nrm[2] += u[0] * v[1] - u[1] * v[0];
+      }
+      int32_t start = fan[0].first;
+      for (auto& e : fan)
+      {
+        bool isY = false;
+        for (auto& g : fan)
+          isY = isY || g.second == e.first;
+        if (!isY)
+          start = e.first;
+      }
+      std::vector<int32_t> poly = { start };
+      int32_t cur = start;
+      for (size_t guard = 0; guard <= fan.size(); ++guard)
+      {
+        int32_t nxt = -1;
+        for (auto& e : fan)
+          if (e.first == cur)
+            nxt = e.second;
+        if (nxt < 0 || nxt == start)
+          break;
+        poly.push_back(nxt);
+        cur = nxt;
+      }
+      const bool closed = poly.size() == fan.size();
+      if (!closed && poly.size() != fan.size() + 1)
+        return false;
+      if (poly.size() < 3)
+      {
+        if (closed)
+          return false;
+        continue; // a single (sliver) subface with p on its third edge: it simply disappears
+      }
+      int axis = 0;
+      for (int k = 1; k < 3; ++k)
+        if (std::fabs(nrm[k]) > std::fabs(nrm[axis]))
+          axis = k;
+      // Sign of a counter-clockwise turn when dropping `axis` (right-handed cyclic order).
+      const int o = nrm[axis] > 0 ? 1 : -1;
+      std::vector<std::array<int32_t, 3>> tris;
+      if (!triangulatePolygon3(m_, poly, axis, o, tris))
+        return false;
+      for (auto& tr : tris)
+      {
+        newTris.push_back(tr);
+        newTriParent.push_back(par);
+      }
+    }
+    // Sides: components of S across faces containing p that are not subfaces.
+    const uint32_t s0 = ed_.newStamp();
+    for (int32_t t : S)
+      ed_.tetStamp[t] = s0;
+    std::vector<int32_t> side(S.size(), -1);
+    auto indexOf = [&](int32_t t) { return static_cast<size_t>(std::find(S.begin(), S.end(), t) - S.begin()); };
+    int nsides = 0;
+    for (size_t k = 0; k < S.size(); ++k)
+    {
+      if (side[k] >= 0)
+        continue;
+      std::vector<int32_t> q = { S[k] };
+      side[k] = nsides;
+      for (size_t h = 0; h < q.size(); ++h)
+      {
+        const int32_t t = q[h];
+        for (int i = 0; i < 4; ++i)
+        {
+          if (m_.vertex(t, i) == p)
+            continue;
+          const int32_t u = m_.neighbor(t, i);
+          if (u < 0 || ed_.tetStamp[u] != s0)
+            continue;
+          m_.faceVertices(t, i, f);
+          if (bc_.findSubface(f[0], f[1], f[2]) >= 0)
+            continue;
+          const size_t iu = indexOf(u);
+          if (side[iu] < 0)
+          {
+            side[iu] = nsides;
+            q.push_back(u);
+          }
+        }
+      }
+      ++nsides;
+    }
+    if (nsides > 2)
+      return false;
+    // Which side of each parent each side lies on: +1 normal side, -1 other side.
+    std::vector<std::map<int32_t, int>> sideOfParent(static_cast<size_t>(nsides));
+    for (size_t k = 0; k < S.size(); ++k)
+    {
+      const int32_t t = S[k];
+      for (int i = 0; i < 4; ++i)
+      {
+        if (m_.vertex(t, i) == p)
+          continue;
+        m_.faceVertices(t, i, f);
+        const int32_t sf = bc_.findSubface(f[0], f[1], f[2]);
+        if (sf < 0)
+          continue;
+        const int32_t* s = bc_.subface(sf);
+        bool same = false;
+        for (int r = 0; r < 3; ++r)
+          same = same || (f[0] == s[r] && f[1] == s[(r + 1) % 3] && f[2] == s[(r + 2) % 3]);
+        // faceVertices is seen positively from t's vertex i, which is inside t: same order = t on the
+        // normal side.
+        sideOfParent[side[k]][bc_.parent[sf]] = same ? 1 : -1;
+      }
+    }
+    // Per side: cavity faces and relocated point.
+    std::vector<std::array<int32_t, 4>> newTets;
+    std::vector<int> newTetSide;
+    std::vector<std::array<double, 3>> sidePoint(static_cast<size_t>(nsides));
+    std::vector<int32_t> sideRegion(static_cast<size_t>(nsides), -1);
+    for (int sd = 0; sd < nsides; ++sd)
+    {
+      std::vector<std::array<int32_t, 3>> faces;
+      for (size_t k = 0; k < S.size(); ++k)
+      {
+        if (side[k] != sd)
+          continue;
+        if (region_ && sideRegion[sd] < 0 && static_cast<size_t>(S[k]) < region_->size())
+          sideRegion[sd] = (*region_)[S[k]];
+        const int ip = m_.localIndex(S[k], p);
+        m_.faceVertices(S[k], ip, f);
+        faces.push_back({ { f[0], f[1], f[2] } });
+      }
+      for (size_t k = 0; k < newTris.size(); ++k)
+      {
+        auto it = sideOfParent[sd].find(newTriParent[k]);
+        if (it == sideOfParent[sd].end())
+          return false;
+        const auto& tr = newTris[k];
+        if (it->second > 0)
+          faces.push_back(tr);
+        else
+          faces.push_back({ { tr[0], tr[2], tr[1] } });
+      }
+      // Cancel a link face that coincides (reversed) with a new triangle: that part of the cavity is empty.
+      for (size_t a = 0; a < faces.size(); ++a)
+        for (size_t b = a + 1; b < faces.size(); ++b)
+          if (faces[a][0] >= 0 && faces[b][0] >= 0 && TriKey(faces[a][0], faces[a][1], faces[a][2]) ==
+              TriKey(faces[b][0], faces[b][1], faces[b][2]))
+          {
+            faces[a][0] = -1;
+            faces[b][0] = -1;
+          }
+      faces.erase(std::remove_if(faces.begin(), faces.end(), [](const std::array<int32_t, 3>& x) { return x[0] < 0; }),
+        faces.end());
+      if (!findPoint(p, faces, sidePoint[sd].data()))
+        return false;
+      for (auto& fc : faces)
+      {
+        newTets.push_back({ { fc[0], fc[1], fc[2], -2 - sd } });
+        newTetSide.push_back(sd);
+      }
+    }
+    // The relocated points are new vertices (p's id cannot be reused: faces through the old and the new
+    // position would have the same ids).
+    const int32_t firstNew = m_.numVertices();
+    for (int sd = 0; sd < nsides; ++sd)
+    {
+      m_.addPoint(sidePoint[sd].data());
+      kinds_.push_back(VertexKind::SteinerInterior);
+    }
+    for (auto& t : newTets)
+      t[3] = firstNew + (-2 - t[3]);
+    std::vector<int32_t> created;
+    if (!ed_.replace(S, newTets, &created, true))
+    {
+      m_.points.resize(3 * static_cast<size_t>(firstNew));
+      kinds_.resize(static_cast<size_t>(firstNew));
+      return false;
+    }
+    addedInterior += nsides - 1;
+    kinds_[p] = VertexKind::Unused;
+    if (region_)
+    {
+      if (region_->size() < static_cast<size_t>(m_.tetCapacity()))
+        region_->resize(static_cast<size_t>(m_.tetCapacity()), -1);
+      for (int32_t t : S)
+        if (m_.isFree(t))
+          (*region_)[t] = -1;
+      for (size_t k = 0; k < created.size(); ++k)
+        (*region_)[created[k]] = sideRegion[newTetSide[k]];
+    }
+    for (int32_t sf : subs)
+      bc_.removeSubface(sf);
+    for (size_t k = 0; k < newTris.size(); ++k)
+      bc_.addSubface(newTris[k][0], newTris[k][1], newTris[k][2], newTriParent[k]);
+    return true;
+  }
+
+private:
+  // A point strictly inside the cavity bounded by `faces` (each seen positively from inside), near p.
+  bool findPoint(int32_t p, const std::vector<std::array<int32_t, 3>>& faces, double* out)
+  {
+    const double* P = m_.point(p);
+    double dir[3] = { 0, 0, 0 }, cen[3] = { 0, 0, 0 };
+    double L = 0;
+    int nv = 0;
+    for (auto& fc : faces)
+    {
+      const double *A = m_.point(fc[0]), *B = m_.point(fc[1]), *C = m_.point(fc[2]);
+      const bool hasP = false;
+      (void)hasP;
+      double u[3], v[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        u[k] = B[k] - A[k];
+        v[k] = C[k] - A[k];
+        cen[k] += A[k] + B[k] + C[k];
+      }
+      nv += 3;
+      for (int j = 0; j < 3; ++j)
+        L += std::sqrt((m_.point(fc[j])[0] - P[0]) * (m_.point(fc[j])[0] - P[0]) +
+          (m_.point(fc[j])[1] - P[1]) * (m_.point(fc[j])[1] - P[1]) +
+          (m_.point(fc[j])[2] - P[2]) * (m_.point(fc[j])[2] - P[2]));
+      // Only faces that pass close to p (the new boundary triangles) steer the direction; all faces
+      // contribute a little, which is harmless.
+      const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+      // Weight by how close the face's plane is to p (the new boundary faces pass through p).
+      double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (nn == 0)
+        continue;
+      const double dist = std::fabs((P[0] - A[0]) * n[0] + (P[1] - A[1]) * n[1] + (P[2] - A[2]) * n[2]) / nn;
+      const double w = 1.0 / (dist + 1e-300);
+      for (int k = 0; k < 3; ++k)
+        dir[k] += w * n[k] / nn;
+    }
+    if (nv == 0)
+      return false;
+    for (int k = 0; k < 3; ++k)
+      cen[k] /= nv;
+    L /= nv;
+    const double dl = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    std::vector<std::array<double, 3>> cands;
+    for (double t : { 1.0, 0.5, 0.25 })
+      cands.push_back({ { P[0] + t * (cen[0] - P[0]), P[1] + t * (cen[1] - P[1]), P[2] + t * (cen[2] - P[2]) } });
+    if (dl > 0)
+    {
+      double delta = 0.5 * L;
+      for (int k = 0; k < 60; ++k, delta *= 0.5)
+        cands.push_back({ { P[0] + delta * dir[0] / dl, P[1] + delta * dir[1] / dl, P[2] + delta * dir[2] / dl } });
+    }
+    double bestQ = -1;
+    bool found = false;
+    int validSeen = 0;
+    for (auto& c : cands)
+    {
+      bool ok = true;
+      double q = 1e300;
+      for (auto& fc : faces)
+      {
+        const double *A = m_.point(fc[0]), *B = m_.point(fc[1]), *C = m_.point(fc[2]);
+        if (orient3d(A, B, C, c.data()) <= 0)
+        {
+          ok = false;
+          break;
+        }
+        q = std::min(q, shapeQuality(A, B, C, c.data()));
+      }
+      if (!ok)
+        continue;
+      if (!found || q > bestQ)
+      {
+        bestQ = q;
+        std::copy(c.begin(), c.end(), out);
+        found = true;
+      }
+      if (++validSeen >= 4)
+        break;
+    }
+    return found;
+  }
+
+  MeshEditor& ed_;
+  TetMesh& m_;
+  BoundaryConstraints& bc_;
+  std::vector<VertexKind>& kinds_;
+  std::vector<int32_t>* region_;
+};
+
+} // namespace
+
+Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
+  std::vector<int32_t>* tetRegion, Progress* progress, SteinerRemovalReport* report)
+{
+  SilentProgress silent;
+  Progress* pr = progress ? progress : &silent;
+  SteinerRemovalReport rep;
+  std::vector<int32_t> todo;
+  for (int32_t v = 0; v < static_cast<int32_t>(kinds.size()); ++v)
+    if ((kinds[v] == VertexKind::SteinerSegment || kinds[v] == VertexKind::SteinerFacet) && ed.tetOf(v) >= 0)
+      todo.push_back(v);
+  rep.boundaryBefore = static_cast<int64_t>(todo.size());
+  Remover rem(ed, bc, kinds, tetRegion);
+  // Facet points first (their polygons are closed), then segment points; retry what failed while the
+  // neighbourhood keeps changing.
+  std::stable_sort(todo.begin(), todo.end(),
+    [&](int32_t a, int32_t b) { return kinds[a] == VertexKind::SteinerFacet && kinds[b] != VertexKind::SteinerFacet; });
+  for (int pass = 0; pass < 4 && !todo.empty(); ++pass)
+  {
+    std::vector<int32_t> failed;
+    size_t done = 0;
+    for (int32_t v : todo)
+    {
+      if (++done % 64 == 0)
+      {
+        pr->report(static_cast<double>(done) / todo.size(), "Removing boundary Steiner points");
+        if (pr->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Steiner point removal was cancelled.");
+      }
+      if (rem.remove(v))
+        ++rep.removed;
+      else
+        failed.push_back(v);
+    }
+    if (failed.size() == todo.size())
+    {
+      todo = failed;
+      break;
+    }
+    todo = failed;
+  }
+  rep.remaining = static_cast<int64_t>(todo.size());
+  for (size_t i = 0; i < todo.size() && i < 8; ++i)
+    rep.firstRemaining.push_back(todo[i]);
+  rep.addedInterior = rem.addedInterior;
+  if (report)
+    *report = rep;
+  if (rep.remaining > 0)
+    return Status::failure(ErrorKind::RecoveryFailed,
+      std::to_string(rep.remaining) + " Steiner point(s) added on the boundary during recovery could not be "
+        "removed; the boundary would not equal the input (first vertex ids listed).",
+      std::vector<int64_t>(rep.firstRemaining.begin(), rep.firstRemaining.end()));
+  return Status::success();
+}
+
+} // namespace volgrid
