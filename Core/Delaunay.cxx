@@ -855,6 +855,11 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
           inserter.registerVertex(mesh.vertex(t, k), t);
   }
   progress->report(0.0, "Inserting points");
+  if (progress->cancelled())
+  {
+    mesh.clear();
+    return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
+  }
   constexpr int32_t kReportEvery = 1 << 16;
   for (int32_t k = 0; k < im; ++k)
   {
