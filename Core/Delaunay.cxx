@@ -1,6 +1,6 @@
 #include "Delaunay.h"
 
-#include "Predicates.h"
+#include "PredicatesInline.h"
 #include "SpatialSort.h"
 
 #include <algorithm>
@@ -16,84 +16,10 @@ constexpr int kFV[4][3] = { { 1, 3, 2 }, { 0, 2, 3 }, { 0, 3, 1 }, { 0, 1, 2 } }
 constexpr uint8_t kInCavity = TetMesh::kMarkA;
 constexpr uint8_t kOutside = TetMesh::kMarkB; // tested, not in conflict
 
-// ---------------------------------------------------------------------------------------------------
-// Inline fast paths of orient3d / insphere (the hot loop calls them tens of times per point). They
-// return the sign only when it is certain and 0 otherwise; the caller then asks Core/Predicates.h, which
-// decides exactly (and breaks ties by SoS). Error analysis: the determinants are evaluated with the same
-// expression trees as the forward-error bounds of Predicates.cxx assume (at most 8 roundings per
-// monomial for orient3d, 16 for insphere, input differences included), so
-// |computed - exact| <= gamma_n * P, where P is the sum of the absolute monomials. Instead of computing
-// P we bound it from the largest absolute coordinate differences per axis (mx, my, mz):
-//   orient3d: P <= 6 mx my mz,   insphere: P <= 24 (mx^2 + my^2 + mz^2) mx my mz,
-// with a relative margin of 2^-20 for the rounding of these bounds. Restricting mx, my, mz to
-// [2^-120, 2^120] rules out overflow and makes gradual-underflow errors (< 2^-1000 relative to the
-// bound) negligible inside that margin; outside that range the exact predicate is called directly.
-constexpr double kEps = 0x1p-53;
-constexpr double kOrientFilter = 6.0 * (8.0 + 256.0 * kEps) * kEps * (1.0 + 0x1p-20);
-constexpr double kInsphereFilter = 24.0 * (16.0 + 1024.0 * kEps) * kEps * (1.0 + 0x1p-20);
-constexpr double kLowRange = 0x1p-120, kHighRange = 0x1p120;
-
-inline double max3(double a, double b, double c)
-{
-  return std::max(std::max(a, b), c);
-}
-
-inline bool inFilterRange(double mx, double my, double mz)
-{
-  return std::min(std::min(mx, my), mz) >= kLowRange && std::max(std::max(mx, my), mz) <= kHighRange;
-}
-
-inline int orient3dFast(const double* a, const double* b, const double* c, const double* d)
-{
-  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
-  const double det = (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
-  const double mx = max3(std::fabs(ux), std::fabs(vx), std::fabs(wx));
-  const double my = max3(std::fabs(uy), std::fabs(vy), std::fabs(wy));
-  const double mz = max3(std::fabs(uz), std::fabs(vz), std::fabs(wz));
-  const double bound = kOrientFilter * (mx * my * mz);
-  if (det > bound && inFilterRange(mx, my, mz))
-    return 1;
-  if (det < -bound && inFilterRange(mx, my, mz))
-    return -1;
-  return 0;
-}
-
+// The hot loop uses the inline filtered predicates (PredicatesInline.h): same results as Predicates.h.
 inline int orient3dExactly(const double* a, const double* b, const double* c, const double* d)
 {
-  const int s = orient3dFast(a, b, c, d);
-  return s != 0 ? s : predicates::orient3d(a, b, c, d);
-}
-
-// Sign of insphere(a,b,c,d,e) (+1: e inside the sphere of the positive tet abcd) or 0 = uncertain.
-inline int insphereFast(const double* a, const double* b, const double* c, const double* d, const double* e)
-{
-  const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
-  const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
-  const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
-  const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
-  const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
-  const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
-  const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
-  const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
-  const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
-  const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
-  const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
-  const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
-  const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
-  const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
-  // Lifted 5x5 determinant (sign flipped): positive when e is inside.
-  const double det = (w0 * d123 - w1 * d023) + (w2 * d013 - w3 * d012);
-  const double mx = std::max(max3(std::fabs(x0), std::fabs(x1), std::fabs(x2)), std::fabs(x3));
-  const double my = std::max(max3(std::fabs(y0), std::fabs(y1), std::fabs(y2)), std::fabs(y3));
-  const double mz = std::max(max3(std::fabs(z0), std::fabs(z1), std::fabs(z2)), std::fabs(z3));
-  const double bound = kInsphereFilter * ((mx * mx + my * my + mz * mz) * (mx * my * mz));
-  if (det > bound && inFilterRange(mx, my, mz))
-    return 1;
-  if (det < -bound && inFilterRange(mx, my, mz))
-    return -1;
-  return 0;
+  return predicates::orient3dInline(a, b, c, d);
 }
 
 inline bool samePoint(const double* a, const double* b)
@@ -272,16 +198,10 @@ struct DelaunayInserter::Impl
     const double* pb = P + 3 * static_cast<size_t>(w[1]);
     const double* pc = P + 3 * static_cast<size_t>(w[2]);
     const double* pd = P + 3 * static_cast<size_t>(w[3]);
-    const int fast = insphereFast(pa, pb, pc, pd, p);
-    if (fast != 0)
-      return fast > 0;
     if (sosId)
-      return predicates::insphereSoS(P + 3 * static_cast<size_t>(w[0]), P + 3 * static_cast<size_t>(w[1]),
-               P + 3 * static_cast<size_t>(w[2]), P + 3 * static_cast<size_t>(w[3]), p, sosId[w[0]],
-               sosId[w[1]], sosId[w[2]], sosId[w[3]], sosId[v]) > 0;
-    return predicates::insphereSoS(P + 3 * static_cast<size_t>(w[0]), P + 3 * static_cast<size_t>(w[1]),
-             P + 3 * static_cast<size_t>(w[2]), P + 3 * static_cast<size_t>(w[3]), p, w[0], w[1], w[2], w[3],
-             v) > 0;
+      return predicates::insphereSoSInline(pa, pb, pc, pd, p, sosId[w[0]], sosId[w[1]], sosId[w[2]], sosId[w[3]],
+               sosId[v]) > 0;
+    return predicates::insphereSoSInline(pa, pb, pc, pd, p, w[0], w[1], w[2], w[3], v) > 0;
   }
 
   int32_t gridStart(const double* p) const
