@@ -18,6 +18,9 @@ const SubCommand kCommands[] = {
   { "delaunay", runDelaunayCommand,
     "INPUT.node | --random N [--seed S]  [--check] [--json] [--out FILE.vtu]: Delaunay tetrahedralization" },
   { "quality", runQualityCommand, "MESH.vtu [--json] [--bins N]: volume or surface grid quality summary" },
+  { "prep", runPrepCommand,
+    "IN... OUT [--enclosure box|sphere|...] [--enclosure-scale S] [--json]: repair, orient, enclose surfaces" },
+  { "check", runCheckCommand, "SURFACE [--json]: surface diagnostics (exit 0 clean, 1 defects)" },
 };
 
 int printUsage(FILE* out)

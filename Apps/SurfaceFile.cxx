@@ -1,0 +1,242 @@
+#include "SurfaceFile.h"
+
+#include "VolGridSurfaceConversion.h"
+
+#include "SurfaceReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataSet.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSTLWriter.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace volgrid
+{
+namespace
+{
+bool fileReadable(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return static_cast<bool>(in);
+}
+
+Status readWithVtk(const std::string& path, const std::string& ext, SurfaceMesh& mesh, std::string& info)
+{
+  vtkSmartPointer<vtkDataObject> data;
+  std::string format;
+  if (ext == "obj")
+  {
+    vtkNew<vtkOBJReader> r;
+    r->SetFileName(path.c_str());
+    r->Update();
+    data = r->GetOutput();
+    format = "OBJ";
+  }
+  else if (ext == "ply")
+  {
+    vtkNew<vtkPLYReader> r;
+    r->SetFileName(path.c_str());
+    r->Update();
+    data = r->GetOutput();
+    format = "PLY";
+  }
+  else if (ext == "vtp")
+  {
+    vtkNew<vtkXMLPolyDataReader> r;
+    r->SetFileName(path.c_str());
+    r->Update();
+    data = r->GetOutput();
+    format = "VTK XML poly data";
+  }
+  else
+  {
+    vtkNew<vtkGenericDataObjectReader> r;
+    r->SetFileName(path.c_str());
+    r->Update();
+    data = r->GetOutput();
+    format = "legacy VTK";
+  }
+  vtkDataSet* surface = vtkDataSet::SafeDownCast(data);
+  VolGridSurfaceConversionInfo conversion;
+  if (!surface || surface->GetNumberOfPoints() == 0)
+  {
+    return Status::failure(ErrorKind::EmptyInput, path + ": no points could be read (unreadable, empty or not a surface)");
+  }
+  if (!VolGridPolyDataToSurfaceMesh(surface, mesh, &conversion))
+  {
+    return Status::failure(ErrorKind::EmptyInput, path + ": the file has no triangles, quads or polygons");
+  }
+  std::ostringstream os;
+  os << format << ", " << surface->GetNumberOfPoints() << " points, " << surface->GetNumberOfCells() << " cells";
+  if (conversion.polygons)
+    os << ", " << conversion.polygons << " polygons triangulated";
+  if (conversion.strips)
+    os << ", " << conversion.strips << " strips";
+  if (conversion.skippedCells)
+    os << ", " << conversion.skippedCells << " non-surface cells skipped";
+  if (conversion.invalidCells)
+    os << ", " << conversion.invalidCells << " cells with bad point ids skipped";
+  info = os.str();
+  return Status::success();
+}
+
+bool writeOff(const std::string& path, vtkPolyData* surface, std::string& error)
+{
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f)
+  {
+    error = "cannot open '" + path + "' for writing";
+    return false;
+  }
+  vtkPoints* points = surface->GetPoints();
+  const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
+  vtkCellArray* polys = surface->GetPolys();
+  std::fprintf(f, "OFF\n%lld %lld 0\n", static_cast<long long>(np), static_cast<long long>(polys->GetNumberOfCells()));
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    std::fprintf(f, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+  }
+  vtkIdType n;
+  const vtkIdType* ids;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    std::fprintf(f, "%lld", static_cast<long long>(n));
+    for (vtkIdType k = 0; k < n; ++k)
+      std::fprintf(f, " %lld", static_cast<long long>(ids[k]));
+    std::fprintf(f, "\n");
+  }
+  const bool ok = std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !ok)
+  {
+    error = "writing '" + path + "' failed";
+    return false;
+  }
+  return true;
+}
+} // namespace
+
+std::string surfaceFileExtension(const std::string& path)
+{
+  const size_t slash = path.find_last_of("/\\");
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return std::string();
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+bool surfaceFileSupported(const std::string& path)
+{
+  const std::string ext = surfaceFileExtension(path);
+  return surfaceReaderSupports(path) || ext == "obj" || ext == "ply" || ext == "vtp" || ext == "vtk";
+}
+
+Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& info)
+{
+  mesh.clear();
+  info.clear();
+  if (!surfaceFileSupported(path))
+  {
+    return Status::failure(ErrorKind::InvalidOption,
+      path + ": unknown surface file type (expected .off .mesh .poly .smesh .msh .stl .obj .ply .vtp .vtk)");
+  }
+  if (!fileReadable(path))
+  {
+    return Status::failure(ErrorKind::InvalidOption, path + ": cannot open the file");
+  }
+  if (surfaceReaderSupports(path))
+  {
+    SurfaceReadInfo readInfo;
+    const Status status = readSurface(path, mesh, &readInfo);
+    if (!status.ok())
+      return status;
+    std::ostringstream os;
+    os << readInfo.format << ", " << readInfo.fileFaces << " faces";
+    if (readInfo.polygonFaces)
+      os << ", " << readInfo.polygonFaces << " polygons triangulated";
+    if (readInfo.mergedPoints)
+      os << ", " << readInfo.mergedPoints << " coincident points merged";
+    if (readInfo.skippedElements)
+      os << ", " << readInfo.skippedElements << " other elements skipped";
+    for (const std::string& w : readInfo.warnings)
+      os << "; " << w;
+    info = os.str();
+  }
+  else
+  {
+    const Status status = readWithVtk(path, surfaceFileExtension(path), mesh, info);
+    if (!status.ok())
+      return status;
+    const MergeResult merged = mergeCoincidentPoints(mesh);
+    if (merged.mergedPoints)
+      info += ", " + std::to_string(merged.mergedPoints) + " coincident points merged";
+  }
+  if (mesh.numberOfTriangles() == 0)
+  {
+    return Status::failure(ErrorKind::EmptyInput, path + ": the file has no triangles");
+  }
+  return Status::success();
+}
+
+bool writeSurfaceFile(const std::string& path, vtkPolyData* surface, std::string& error)
+{
+  const std::string ext = surfaceFileExtension(path);
+  int ok = 0;
+  if (ext == "vtp")
+  {
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetFileName(path.c_str());
+    w->SetInputData(surface);
+    w->SetDataModeToAppended();
+    ok = w->Write();
+  }
+  else if (ext == "vtk")
+  {
+    vtkNew<vtkPolyDataWriter> w;
+    w->SetFileName(path.c_str());
+    w->SetInputData(surface);
+    w->SetFileTypeToBinary();
+    ok = w->Write();
+  }
+  else if (ext == "stl")
+  {
+    vtkNew<vtkSTLWriter> w;
+    w->SetFileName(path.c_str());
+    w->SetInputData(surface);
+    w->SetFileTypeToBinary();
+    ok = w->Write();
+  }
+  else if (ext == "off")
+  {
+    return writeOff(path, surface, error);
+  }
+  else
+  {
+    error = "unknown output type '." + ext + "' (expected vtp, vtk, stl or off)";
+    return false;
+  }
+  if (!ok)
+  {
+    error = "writing '" + path + "' failed";
+    return false;
+  }
+  return true;
+}
+} // namespace volgrid
