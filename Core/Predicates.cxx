@@ -576,6 +576,8 @@ int orient3dExactImpl(const double* a, const double* b, const double* c, const d
 constexpr int kInsphereTop = 200; // |L| <= 360 M^5 < 2^1023, components <= 24 M^3 < 2^995 for split
 constexpr int kInsphereLow = -192;
 
+int insphereRaw(const double (*p)[3]);
+
 int insphereExactImpl(const double* a, const double* b, const double* c, const double* d, const double* e)
 {
   const double* in[5] = { a, b, c, d, e };
@@ -629,8 +631,17 @@ int insphereExactImpl(const double* a, const double* b, const double* c, const d
     return -expansionSign(n, det);
   }
 
-  // Stage 2: raw coordinates. L = sum_i C_i |p_i|^2 with the cofactors of the lifted column
-  //   C_i = (-1)^i * O(the other four points in order)   (i = 0..4 for a..e).
+  return insphereRaw(p);
+}
+
+// Stage 2 of insphereExactImpl (kept out of line: its frame is ~120 KB of expansions), on the scaled
+// points: L = sum_i C_i |p_i|^2 with the cofactors of the lifted column
+//   C_i = (-1)^i * O(the other four points in order)   (i = 0..4 for a..e).
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+int insphereRaw(const double (*p)[3])
+{
   Minors m;
   m.computePairs(p, 5);
   for (int i = 0; i < 5; ++i)

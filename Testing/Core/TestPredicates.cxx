@@ -471,7 +471,7 @@ TEST(Predicates, WideExponentRangeAgainstRational)
     return p;
   };
   int zeros = 0;
-  for (int t = 0; t < 3000; ++t)
+  for (int t = 0; t < 1500; ++t)
   {
     std::array<Pt, 5> p;
     for (auto& q : p)
@@ -500,7 +500,7 @@ TEST(Predicates, WideExponentRangeAgainstRational)
       ASSERT_EQ(incirc(q[0], q[1], q[2], q[3]), refIncircle3d(q[0], q[1], q[2], q[3])) << t;
     }
   }
-  EXPECT_GT(zeros, 300);
+  EXPECT_GT(zeros, 150);
 }
 
 // ---- incircle3d and orient2dProjected --------------------------------------------------------------------
@@ -544,6 +544,7 @@ TEST(Predicates, Incircle3dCoplanar)
   const Pt sq[4] = { { 0, 0, 5 }, { 1, 0, 5 }, { 1, 1, 5 }, { 0, 1, 5 } };
   EXPECT_EQ(incirc(sq[0], sq[1], sq[2], sq[3]), 0);
   EXPECT_EQ(incirc(sq[0], sq[2], sq[1], sq[3]), 0);
+  EXPECT_EQ(incirc(a, b, lift(2, 0), c), 0) << "collinear a, b, c";
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_int_distribution<int> coef(-3, 3);
@@ -601,7 +602,9 @@ TEST(Predicates, InlineVersionsAgree)
     ASSERT_EQ(P::insphereInline(a, b, c, d, e), P::insphere(a, b, c, d, e));
     ASSERT_EQ(P::orient2dProjectedInline(a, b, c, t % 3), P::orient2dProjected(a, b, c, t % 3));
     if (P::orient3d(a, b, c, d) != 0)
+    {
       ASSERT_EQ(P::insphereSoSInline(a, b, c, d, e, 1, 2, 3, 4, 5), P::insphereSoS(a, b, c, d, e, 1, 2, 3, 4, 5));
+    }
   }
 }
 
