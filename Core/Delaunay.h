@@ -110,6 +110,8 @@ public:
   uint64_t cavityTets() const;
 
 private:
+  friend Status buildDelaunay(const double*, size_t, const DelaunayOptions&, TetMesh&, std::vector<int32_t>&,
+    Progress*, DelaunayReport*);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
