@@ -237,14 +237,14 @@ struct vtkVolGridQuality::Internals
     return !bad;
   }
 
-  static bool Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input, vtkDataSet* output,
+  static bool Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input,
     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
-  static bool Surface(vtkVolGridQuality* self, vtkPolyData* input, vtkDataSet* output,
+  static bool Surface(vtkVolGridQuality* self, vtkPolyData* input,
     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
 };
 
 bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input,
-  vtkDataSet* output, std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
+  std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
@@ -354,14 +354,12 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
   }
   addScalar(summary, "NumberOfTetrahedra", static_cast<double>(numTets));
   addScalar(summary, "SkippedCells", static_cast<double>(self->NumberOfSkippedCells));
-  (void)output;
   return true;
 }
 
-bool vtkVolGridQuality::Internals::Surface(vtkVolGridQuality* self, vtkPolyData* input, vtkDataSet* output,
+bool vtkVolGridQuality::Internals::Surface(vtkVolGridQuality* self, vtkPolyData* input,
   std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
 {
-  (void)output;
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
   std::vector<double> pointStorage;
@@ -538,12 +536,12 @@ bool vtkVolGridQuality::Execute(vtkDataSet* input, vtkDataSet* output, vtkTable*
   bool ok;
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(input))
   {
-    ok = Internals::Volume(this, grid, output, arrays, summary);
+    ok = Internals::Volume(this, grid, arrays, summary);
   }
   else if (auto* surface = vtkPolyData::SafeDownCast(input))
   {
     volume = false;
-    ok = Internals::Surface(this, surface, output, arrays, summary);
+    ok = Internals::Surface(this, surface, arrays, summary);
   }
   else
   {
