@@ -158,7 +158,7 @@ struct DelaunayInserter::Impl
   // edge (x,y) is stored at edgeMat[x*L+y]. Large cavities use the edge hash instead.
   std::vector<int32_t> vlocal, localVert, edgeMat;
   static constexpr int32_t kMaxLocal = 128;
-  std::vector<int32_t> cavity, stack, outside;
+  std::vector<int32_t> cavity, outside;
   std::vector<BoundaryFace> boundary;
   struct HashSlot
   {
@@ -398,21 +398,14 @@ struct DelaunayInserter::Impl
 
     // ---- cavity: tets in conflict, grown by adjacency from t (which contains p, hence in conflict)
     cavity.clear();
-    stack.clear();
     outside.clear();
     boundary.clear();
     F[t] |= kInCavity;
     cavity.push_back(t);
-    stack.push_back(t);
     int32_t ghostDelta = 0;
-    while (!stack.empty())
-    {
-      const int32_t c = stack.back();
-      stack.pop_back();
-      const int32_t* wc = V + 4 * static_cast<size_t>(c);
-      if ((wc[0] | wc[1] | wc[2] | wc[3]) < 0)
-        --ghostDelta;
-      // The four neighbours are usually cache misses: request them all before testing any.
+    // Breadth-first over `cavity` itself. The neighbours of a tet are usually cache misses: while one
+    // tet is processed, the neighbours of the next queued tet are requested.
+    auto prefetchAround = [&](int32_t c) {
       for (int f = 0; f < 4; ++f)
       {
         const size_t u = static_cast<size_t>(N[4 * static_cast<size_t>(c) + f] >> 2);
@@ -420,6 +413,16 @@ struct DelaunayInserter::Impl
         __builtin_prefetch(V + 4 * u);
         __builtin_prefetch(N + 4 * u);
       }
+    };
+    prefetchAround(t);
+    for (size_t qi = 0; qi < cavity.size(); ++qi)
+    {
+      const int32_t c = cavity[qi];
+      if (qi + 1 < cavity.size())
+        prefetchAround(cavity[qi + 1]);
+      const int32_t* wc = V + 4 * static_cast<size_t>(c);
+      if ((wc[0] | wc[1] | wc[2] | wc[3]) < 0)
+        --ghostDelta;
       for (int f = 0; f < 4; ++f)
       {
         const int32_t code = N[4 * static_cast<size_t>(c) + f];
@@ -433,13 +436,13 @@ struct DelaunayInserter::Impl
           {
             F[u] |= kInCavity;
             cavity.push_back(u);
-            stack.push_back(u);
             continue;
           }
           F[u] |= kOutside;
           outside.push_back(u);
         }
-        BoundaryFace bf;
+        boundary.emplace_back();
+        BoundaryFace& bf = boundary.back();
         bf.v[0] = wc[0];
         bf.v[1] = wc[1];
         bf.v[2] = wc[2];
@@ -447,7 +450,6 @@ struct DelaunayInserter::Impl
         bf.v[f] = v;
         bf.outside = code;
         bf.face = f;
-        boundary.push_back(bf);
       }
     }
     cavityTets += cavity.size();
@@ -457,9 +459,13 @@ struct DelaunayInserter::Impl
     // ---- new tets: reuse the cavity slots, then free/appended slots
     const size_t nb = boundary.size();
     const size_t nc = cavity.size();
-    for (size_t i = nc; i < nb; ++i)
-    {
+    for (size_t i = nc; i < nb && mesh.freeListHead() >= 0; ++i)
       cavity.push_back(mesh.newTet(0, 0, 0, 0));
+    if (cavity.size() < nb)
+    {
+      const int32_t first = mesh.appendTets(static_cast<int32_t>(nb - cavity.size()));
+      for (int32_t s = first; cavity.size() < nb; ++s)
+        cavity.push_back(s);
     }
     F = mesh.tetFlags.data();
     V = mesh.tetVertices.data();

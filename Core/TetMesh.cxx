@@ -1,5 +1,7 @@
 #include "TetMesh.h"
 
+#include <algorithm>
+
 namespace volgrid
 {
 
@@ -68,6 +70,24 @@ int32_t TetMesh::newTet(int32_t v0, int32_t v1, int32_t v2, int32_t v3)
   if ((v0 | v1 | v2 | v3) < 0)
     ++numGhost_;
   return t;
+}
+
+int32_t TetMesh::appendTets(int32_t count)
+{
+  assert(count >= 0);
+  const int32_t first = tetCapacity();
+  const size_t need = tetFlags.size() + static_cast<size_t>(count);
+  if (need > tetFlags.capacity())
+  {
+    const size_t cap = std::max(need, tetFlags.capacity() + tetFlags.capacity() / 2 + 16);
+    tetVertices.reserve(4 * cap);
+    tetNeighbors.reserve(4 * cap);
+    tetFlags.reserve(cap);
+  }
+  tetVertices.resize(4 * need);
+  tetNeighbors.resize(4 * need);
+  tetFlags.resize(need, 0);
+  return first;
 }
 
 void TetMesh::setTetVertices(int32_t t, int32_t v0, int32_t v1, int32_t v2, int32_t v3)

@@ -168,6 +168,10 @@ public:
   // A new tet slot (recycled from the free list or appended) with the given vertices, no neighbours,
   // flags 0. The caller guarantees the orientation convention.
   int32_t newTet(int32_t v0, int32_t v1, int32_t v2, int32_t v3);
+  // Append `count` new slots at the end (the free list is not used) and return the first one. Their
+  // vertices and neighbours are uninitialized and their flags 0: the caller fills them (fast path for
+  // insertion algorithms that write whole tets).
+  int32_t appendTets(int32_t count);
   // Overwrite the vertices of a live tet (adjusts the ghost count).
   void setTetVertices(int32_t t, int32_t v0, int32_t v1, int32_t v2, int32_t v3);
   // Put t on the free list. Neighbours pointing at t are NOT updated (the caller relinks them).
