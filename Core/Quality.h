@@ -141,7 +141,8 @@ private:
 
 // VolumeGradient (paper 8.2) of tets [begin, end): the largest |V(t) - V(n)| over the tets n that share a
 // face with t (all of them if a face is shared by more than two); 0 for a tet without face neighbours.
-// Safe to call concurrently on disjoint ranges.
+// A duplicate of t (the same four points) is not a face neighbour. Safe to call concurrently on disjoint
+// ranges; the result is exact, so it does not depend on the split or on the order within the rows.
 template <typename Id>
 void volumeGradient(const Id* tets, const double* volumes, const PointTets& incidence, int64_t begin,
   int64_t end, double* gradient);
