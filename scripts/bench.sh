@@ -119,7 +119,8 @@ def run_one(engine, inp, n, rep):
     cmd = [binary, "--engine", engine, "--input", inp, "--n", str(n), "--seed", str(opt["seed"])]
     if engine == "volgrid":
         cmd += opt["volgrid_args"]
-    base = {"engine": engine, "input": inp, "n": n, "seed": opt["seed"], "repeat": rep, "load1_before": load1()}
+    base = {"engine": engine, "input": inp, "n": n, "seed": opt["seed"], "repeat": rep, "load1_before": load1(),
+            "time": time.strftime("%Y-%m-%d %H:%M:%S")}
     t0 = time.time()
     try:
         p = subprocess.run(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -185,9 +186,21 @@ for r in records:
         if r.get("ok") and (not cur.get("ok") or r["seconds"] < cur["seconds"]):
             best[key] = r
 runs = {}
+by_repeat = {}
 for r in records:
     if r.get("ok"):
-        runs.setdefault((r["input"], int(r["n"]), r["engine"]), []).append(r["seconds"])
+        key = (r["input"], int(r["n"]), r["engine"])
+        runs.setdefault(key, []).append(r["seconds"])
+        by_repeat.setdefault(key, {})[r.get("repeat", 0)] = r["seconds"]
+
+def paired_median(a, b):
+    """Median over repeats of a/b, each ratio taken between runs of the same round (adjacent in time)."""
+    ra, rb = by_repeat.get(a, {}), by_repeat.get(b, {})
+    q = sorted(ra[k] / rb[k] for k in ra if k in rb and rb[k] > 0)
+    if len(q) < 2:
+        return None
+    m = len(q) // 2
+    return q[m] if len(q) % 2 else 0.5 * (q[m - 1] + q[m])
 
 lines = []
 def emit(s=""):
@@ -197,7 +210,7 @@ def fmt_int(v):
     return "{:,}".format(int(v))
 
 emit("Delaunay benchmark (%s); seed %s; times are the triangulation call only, fastest of %s run(s)" %
-     (time.strftime("%Y-%m-%d %H:%M"), opt["seed"], max((r.get("repeat", 0) for r in records), default=0) + 1))
+     (records[0].get("time", "?") if records else time.strftime("%Y-%m-%d %H:%M:%S"), records[0].get("seed", opt["seed"]) if records else opt["seed"], max((r.get("repeat", 0) for r in records), default=0) + 1))
 emit("bytes/tet = (peak RSS - RSS after the input was generated and handed to the engine) / finite tets")
 hdr = "%-14s %9s %-14s %9s %11s %11s %9s %9s %6s" % ("input", "n", "engine", "seconds", "tets", "tets/s",
                                                      "peak MB", "bytes/tet", "load")
@@ -232,7 +245,7 @@ def ok(inp, n, engine):
     return r if r and r.get("ok") else None
 
 emit("")
-emit("Time ratios (< 1 means VolGrid is faster):")
+emit("Time ratios (< 1 means VolGrid is faster; fastest runs, and with --repeat the median of per-round ratios):")
 for inp, n in dict.fromkeys((k[0], k[1]) for k in order):
     parts = []
     v = ok(inp, n, "volgrid")
@@ -241,7 +254,11 @@ for inp, n in dict.fromkeys((k[0], k[1]) for k in order):
             continue
         o = ok(inp, n, other)
         label = "VolGrid/%s" % NAMES[other]
-        parts.append("%s %s" % (label, "%.3f" % (v["seconds"] / o["seconds"]) if v and o and o["seconds"] > 0 else "n/a"))
+        txt = "%.3f" % (v["seconds"] / o["seconds"]) if v and o and o["seconds"] > 0 else "n/a"
+        pm = paired_median((inp, n, "volgrid"), (inp, n, other))
+        if pm is not None:
+            txt += " (median %.3f)" % pm
+        parts.append("%s %s" % (label, txt))
     if parts:
         emit("  %-14s %9d  %s" % (inp, n, "   ".join(parts)))
 grid_sizes = sorted({k[1] for k in order if k[0] == "grid"} & {k[1] for k in order if k[0] == "jittered-grid"})
@@ -259,7 +276,7 @@ if grid_sizes:
 N = 1000000
 if any(k[1] == N for k in order):
     emit("")
-    emit("Acceptance 4 (issue 2), this run:")
+    emit("Acceptance 4 (issue 2), this run (fastest runs):")
     def verdict(cond):
         return "n/a" if cond is None else ("PASS" if cond else "FAIL")
     v, t, c = ok("random", N, "volgrid"), ok("random", N, "tetgen"), ok("random", N, "cgal")
