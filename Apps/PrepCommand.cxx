@@ -37,7 +37,7 @@ const char* kUsage =
   "  --edge-length L       target edge length of the enclosure (default: 1/16 of its size)\n"
   "  --merge-tolerance T   weld points closer than T * bounding-box diagonal (default 1e-6)\n"
   "  --exact               merge exactly coincident points only\n"
-  "  --fill-holes N        fill holes of at most N edges (default 1000; 0: leave holes open)\n"
+  "  --fill-holes N        fill holes of at most N edges (default 200; 0: leave holes open)\n"
   "  --no-orient           keep the triangles' orientation\n"
   "  --no-intersections    skip the self-intersection test\n"
   "  --json                one JSON line of counts on stdout\n"

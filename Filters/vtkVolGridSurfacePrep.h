@@ -84,7 +84,8 @@ public:
 
   ///@{
   /**
-   * Fill boundary loops (holes) of at most MaxHoleEdges edges (default on, 1000; range [3, 1000000]).
+   * Fill boundary loops (holes) of at most MaxHoleEdges edges (default on, 200; range [3, 1000000]): scan
+   * holes are filled, large openings (a half model's symmetry plane) are left open and reported.
    * The patch follows the surrounding surface and has edges as long as the loop's.
    */
   vtkSetMacro(FillHoles, bool);
@@ -171,7 +172,7 @@ protected:
   bool RemoveDegenerate = true;
   bool RemoveDuplicates = true;
   bool FillHoles = true;
-  int MaxHoleEdges = 1000;
+  int MaxHoleEdges = 200;
   bool OrientShells = true;
   bool CheckIntersections = true;
   int Enclosure = ENCLOSURE_NONE;

@@ -3,6 +3,11 @@
 // outward and of the right volume, and parts keep their PatchIds.
 #include "vtkVolGridSurfacePrep.h"
 
+#include "VolGridSurfaceConversion.h"
+
+#include "SurfaceMesh.h"
+#include "SurfaceReader.h"
+
 #include "vtkCellData.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
@@ -98,6 +103,20 @@ void expectClosedManifold(vtkPolyData* out, long long shells)
   EXPECT_EQ(count(out, "Meshable"), 1);
 }
 
+// A corpus file read with Core's reader (formats VTK lacks), as poly data with its PatchIds.
+vtkSmartPointer<vtkPolyData> readCore(const char* file, bool merge = true)
+{
+  volgrid::SurfaceMesh mesh;
+  volgrid::SurfaceReadOptions options;
+  options.mergeCoincidentPoints = merge;
+  const volgrid::Status status =
+    volgrid::readSurface(std::string(VOLGRID_SHARED_DATA_DIR) + file, mesh, nullptr, options);
+  EXPECT_TRUE(status.ok()) << status.message;
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  VolGridSurfaceMeshToPolyData(mesh, pd, "PatchId");
+  return pd;
+}
+
 vtkSmartPointer<vtkPolyData> triangulated(vtkAlgorithm* source)
 {
   vtkNew<vtkTriangleFilter> tri;
@@ -168,6 +187,50 @@ TEST(VolGridSurfacePrep, BunnyScanHolesAreFilled)
   EXPECT_GT(flagged(out, "OpenEdge"), 0);
   EXPECT_EQ(count(out, "Meshable"), 0);
   EXPECT_EQ(prep->GetOutput(2)->GetNumberOfCells(), count(out, "BoundaryEdges")); // the open edges as lines
+}
+
+TEST(VolGridSurfacePrep, CorpusOrientationAndStitching)
+{
+  // casting.off: closed but inward: flipped outward.
+  vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->SetInputData(readCore("/tetgen-tests/meshlab/casting.off"));
+  prep->Update();
+  vtkPolyData* out = prep->GetOutput();
+  EXPECT_EQ(count(out, "InputInwardShells"), 1);
+  EXPECT_EQ(count(out, "ShellsFlipped"), 1);
+  expectClosedManifold(out, 1);
+  EXPECT_EQ(count(out, "InwardShells"), 0);
+  EXPECT_GT(signedVolume(out), 0.0);
+
+  // A decimated Stanford model: inward and self-intersecting. Flipped; the intersections are reported,
+  // not hidden, and the surface is still produced.
+  vtkNew<vtkOBJReader> dragon;
+  dragon->SetFileName(VOLGRID_SHARED_DATA_DIR "/stanford-decimated-scivi/dragon.obj");
+  prep->SetInputConnection(dragon->GetOutputPort());
+  prep->Update();
+  out = prep->GetOutput();
+  EXPECT_EQ(count(out, "ShellsFlipped"), 1);
+  EXPECT_EQ(count(out, "InwardShells"), 0);
+  EXPECT_GT(count(out, "SelfIntersectingPairs"), 0);
+  EXPECT_EQ(count(out, "Meshable"), 0);
+  EXPECT_EQ(out->GetNumberOfCells(), dragon->GetOutput()->GetNumberOfCells());
+
+  // InitialMeshFalcon.msh: 16 CAD patches, seams not stitched (duplicated points). Stitching joins the
+  // seams; the opening at the symmetry plane (more edges than MaxHoleEdges) stays open and is reported.
+  vtkSmartPointer<vtkPolyData> falcon = readCore("/aero-gmsh/InitialMeshFalcon.msh", false);
+  vtkNew<vtkVolGridSurfacePrep> stitch;
+  stitch->SetInputData(falcon);
+  stitch->Update();
+  out = stitch->GetOutput();
+  EXPECT_EQ(count(out, "InputBoundaryEdges"), 765); // after exact merging of the seams' duplicated points
+  EXPECT_GT(count(out, "BoundaryEdges"), 200);
+  EXPECT_LE(count(out, "BoundaryEdges"), 765);
+  EXPECT_GE(count(out, "LoopsLeftOpen"), 1);
+  EXPECT_EQ(count(out, "NonManifoldEdges"), 0);
+  EXPECT_EQ(count(out, "SelfIntersectingPairs"), 0);
+  EXPECT_LT(count(out, "Shells"), 8);
+  EXPECT_EQ(count(out, "Meshable"), 0);
+  EXPECT_GT(patchCounts(out).size(), 1u); // the file's patches are kept
 }
 
 TEST(VolGridSurfacePrep, NonManifoldEdgeIsReportedAndTheSurfaceStillOutput)
