@@ -14,10 +14,14 @@ namespace volgrid
 namespace
 {
 constexpr int kFV[4][3] = { { 1, 3, 2 }, { 0, 2, 3 }, { 0, 3, 1 }, { 0, 1, 2 } };
-constexpr uint8_t kInCavity = TetMesh::kMarkA;
-constexpr uint8_t kOutside = TetMesh::kMarkB; // tested, not in conflict
+// Transient marks during one insertion, in the sign bit of neighbour codes (codes are >= 0 while ghost
+// tets exist): bit 31 of tetNeighbors[4t] = t is in the cavity, of tetNeighbors[4t+1] = t was tested and
+// is not in conflict. Those words are read or written anyway, unlike a separate flag array.
+constexpr uint32_t kMarkBit = 0x80000000u;
+constexpr int32_t kCodeMask = 0x7fffffff;
 
 // The hot loop uses the inline filtered predicates (PredicatesInline.h): same results as Predicates.h.
+constexpr double kInsphereFilter = 24.0 * predicates::detail::kInsphereBound * (1.0 + 0x1p-20);
 // Lattice inputs (regular grids, integer or dyadic coordinates with few significant bits): every
 // coordinate is an integer multiple of a unit 2^k and below 2^25 units, so coordinate differences are
 // exact, and when they are at most D units the determinants evaluated in doubles are exact too (all
@@ -113,36 +117,41 @@ struct DelaunayInserter::Impl
     return predicates::orient3dInline(a, b, c, d);
   }
 
-  int insphere(const double* a, const double* b, const double* c, const double* d, const double* e, int64_t ia,
-    int64_t ib, int64_t ic, int64_t id, int64_t ie) const
+  // Exact insphere sign (0 when cospherical); the SoS tie-break is the caller's. Fast path: the
+  // determinant with the expression tree of PredicatesInline.h, and its forward error bound
+  // gamma_16 * P (P = sum of the absolute monomials, Predicates.cxx) with P bounded from the largest
+  // absolute coordinate differences per axis: P <= 24 (mx^2 + my^2 + mz^2) mx my mz (each of the 4
+  // lifted terms is at most (mx^2+my^2+mz^2) times a 3x3 permanent <= 6 mx my mz). A relative margin of
+  // 2^-20 covers the rounding of that bound; restricting mx, my, mz to [2^-120, 2^120] rules out
+  // overflow and keeps gradual underflow below 2^-1000 of the bound. Uncertain cases go to the exact
+  // predicate. (Cheaper than computing P itself; the inputs are ordinary in this loop.)
+  int insphere(const double* a, const double* b, const double* c, const double* d, const double* e) const
   {
-    if (latticeInsphereLimit > 0)
-    {
-      const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
-      const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
-      const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
-      const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
-      const double m = std::max({ std::fabs(x0), std::fabs(y0), std::fabs(z0), std::fabs(x1), std::fabs(y1),
-        std::fabs(z1), std::fabs(x2), std::fabs(y2), std::fabs(z2), std::fabs(x3), std::fabs(y3), std::fabs(z3) });
-      if (m <= latticeInsphereLimit)
-      {
-        const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
-        const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
-        const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
-        const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
-        const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
-        const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
-        const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
-        const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
-        const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
-        const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
-        const double det = (w0 * d123 - w1 * d023) + (w2 * d013 - w3 * d012); // > 0: e inside
-        if (det != 0)
-          return det > 0 ? 1 : -1;
-        return predicates::detail::insphereSoSTie(a, b, c, d, e, ia, ib, ic, id, ie);
-      }
-    }
-    return predicates::insphereSoSInline(a, b, c, d, e, ia, ib, ic, id, ie);
+    const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
+    const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
+    const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
+    const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
+    const double mx = std::max(std::max(std::fabs(x0), std::fabs(x1)), std::max(std::fabs(x2), std::fabs(x3)));
+    const double my = std::max(std::max(std::fabs(y0), std::fabs(y1)), std::max(std::fabs(y2), std::fabs(y3)));
+    const double mz = std::max(std::max(std::fabs(z0), std::fabs(z1)), std::max(std::fabs(z2), std::fabs(z3)));
+    const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
+    const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
+    const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
+    const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
+    const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
+    const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
+    const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
+    const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
+    const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
+    const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
+    const double det = (w0 * d123 - w1 * d023) + (w2 * d013 - w3 * d012); // > 0: e inside
+    const double m = std::max(std::max(mx, my), mz);
+    if (m <= latticeInsphereLimit)
+      return (det > 0) - (det < 0); // exact (lattice input, small differences)
+    const double bound = kInsphereFilter * ((mx * mx + my * my + mz * mz) * (mx * my * mz));
+    if (std::fabs(det) > bound && std::min(std::min(mx, my), mz) >= 0x1p-120 && m <= 0x1p120)
+      return (det > 0) - (det < 0);
+    return predicates::insphere(a, b, c, d, e);
   }
 
   // Reused buffers (no allocation in the insertion loop once they have grown).
@@ -150,14 +159,17 @@ struct DelaunayInserter::Impl
   {
     int32_t v[4];    // the new tet: the cavity tet's vertices with the new point at position `face`
     int32_t outside; // neighbour code of the tet across the face (outside the cavity)
-    int32_t face;
-    int32_t local[4]; // local numbers of the face's vertices (matrix matching)
+    int8_t face;
+    int8_t local[4]; // local numbers of the face's vertices (matrix matching)
   };
   // Matching of the new tets around the cavity boundary edges: the boundary vertices get local numbers
-  // (sparse set: vlocal[v+1] -> index into localVert, valid when localVert[index] == v), and directed
-  // edge (x,y) is stored at edgeMat[x*L+y]. Large cavities use the edge hash instead.
-  std::vector<int32_t> vlocal, localVert, edgeMat;
-  static constexpr int32_t kMaxLocal = 128;
+  // (vlocal[v+1], reset after each insertion from the list localVert), and directed edge (x,y) is stored
+  // at edgeMat[x*kMaxLocal+y]. Cavities with more boundary vertices use the edge hash instead.
+  // vlocal is -1 between insertions; edgeMat has a fixed stride of kMaxLocal.
+  static constexpr int kLocalShift = 7;
+  static constexpr int32_t kMaxLocal = 1 << kLocalShift;
+  std::vector<int32_t> vlocal, localVert = std::vector<int32_t>(kMaxLocal),
+                              edgeMat = std::vector<int32_t>(kMaxLocal * kMaxLocal);
   std::vector<int32_t> cavity, outside;
   std::vector<BoundaryFace> boundary;
   struct HashSlot
@@ -258,7 +270,7 @@ struct DelaunayInserter::Impl
     }
   }
 
-  bool inConflict(int32_t u, const double* p, int32_t v) const
+  __attribute__((always_inline)) bool inConflict(int32_t u, const double* p, int32_t v) const
   {
     const int32_t* w = mesh.tetVertices.data() + 4 * static_cast<size_t>(u);
     const double* P = mesh.points.data();
@@ -277,9 +289,14 @@ struct DelaunayInserter::Impl
     const double* pb = P + 3 * static_cast<size_t>(w[1]);
     const double* pc = P + 3 * static_cast<size_t>(w[2]);
     const double* pd = P + 3 * static_cast<size_t>(w[3]);
+    const int s = insphere(pa, pb, pc, pd, p);
+    if (s != 0)
+      return s > 0;
+    // Exactly cospherical: Simulation of Simplicity with the vertices' ids.
     if (sosId)
-      return insphere(pa, pb, pc, pd, p, sosId[w[0]], sosId[w[1]], sosId[w[2]], sosId[w[3]], sosId[v]) > 0;
-    return insphere(pa, pb, pc, pd, p, w[0], w[1], w[2], w[3], v) > 0;
+      return predicates::detail::insphereSoSTie(pa, pb, pc, pd, p, sosId[w[0]], sosId[w[1]], sosId[w[2]],
+               sosId[w[3]], sosId[v]) > 0;
+    return predicates::detail::insphereSoSTie(pa, pb, pc, pd, p, w[0], w[1], w[2], w[3], v) > 0;
   }
 
   int32_t gridStart(const double* p) const
@@ -400,16 +417,25 @@ struct DelaunayInserter::Impl
     cavity.clear();
     outside.clear();
     boundary.clear();
-    F[t] |= kInCavity;
+    auto mark = [&](int32_t u, int word) {
+      N[4 * static_cast<size_t>(u) + word] = static_cast<int32_t>(static_cast<uint32_t>(N[4 * static_cast<size_t>(u) + word]) | kMarkBit);
+    };
+    mark(t, 0);
     cavity.push_back(t);
     int32_t ghostDelta = 0;
+    const size_t needV = static_cast<size_t>(mesh.numVertices()) + 1;
+    if (vlocal.size() < needV)
+      vlocal.resize(needV + needV / 4, -1);
+    int32_t* VL = vlocal.data();
+    int32_t* LV = localVert.data();
+    int32_t nloc = 0;
+    bool overflow = false;
     // Breadth-first over `cavity` itself. The neighbours of a tet are usually cache misses: while one
     // tet is processed, the neighbours of the next queued tet are requested.
     auto prefetchAround = [&](int32_t c) {
       for (int f = 0; f < 4; ++f)
       {
-        const size_t u = static_cast<size_t>(N[4 * static_cast<size_t>(c) + f] >> 2);
-        __builtin_prefetch(F + u);
+        const size_t u = static_cast<size_t>((N[4 * static_cast<size_t>(c) + f] & kCodeMask) >> 2);
         __builtin_prefetch(V + 4 * u);
         __builtin_prefetch(N + 4 * u);
       }
@@ -425,20 +451,20 @@ struct DelaunayInserter::Impl
         --ghostDelta;
       for (int f = 0; f < 4; ++f)
       {
-        const int32_t code = N[4 * static_cast<size_t>(c) + f];
+        const int32_t code = N[4 * static_cast<size_t>(c) + f] & kCodeMask;
         const int32_t u = code >> 2;
-        const uint8_t fl = F[u];
-        if (fl & kInCavity)
-          continue;
-        if (!(fl & kOutside))
+        const int32_t* nu = N + 4 * static_cast<size_t>(u);
+        if (nu[0] < 0)
+          continue; // in the cavity
+        if (nu[1] >= 0)
         {
           if (inConflict(u, p, v))
           {
-            F[u] |= kInCavity;
+            mark(u, 0);
             cavity.push_back(u);
             continue;
           }
-          F[u] |= kOutside;
+          mark(u, 1);
           outside.push_back(u);
         }
         boundary.emplace_back();
@@ -449,12 +475,30 @@ struct DelaunayInserter::Impl
         bf.v[3] = wc[3];
         bf.v[f] = v;
         bf.outside = code;
-        bf.face = f;
+        bf.face = static_cast<int8_t>(f);
+        // Local numbers of the face's vertices (the new point excluded).
+        for (int k = 0; k < 4; ++k)
+        {
+          if (k == f)
+            continue;
+          int32_t& li = VL[wc[k] + 1];
+          if (li < 0)
+          {
+            if (nloc == kMaxLocal)
+            {
+              overflow = true;
+              continue;
+            }
+            li = nloc;
+            LV[nloc++] = wc[k];
+          }
+          bf.local[k] = static_cast<int8_t>(li);
+        }
       }
     }
     cavityTets += cavity.size();
     for (int32_t u : outside)
-      F[u] &= static_cast<uint8_t>(~kOutside);
+      N[4 * static_cast<size_t>(u) + 1] &= kCodeMask;
 
     // ---- new tets: reuse the cavity slots, then free/appended slots
     const size_t nb = boundary.size();
@@ -470,38 +514,9 @@ struct DelaunayInserter::Impl
     F = mesh.tetFlags.data();
     V = mesh.tetVertices.data();
     N = mesh.tetNeighbors.data();
-    // Local numbers of the boundary vertices (the new point excluded).
-    const size_t needV = static_cast<size_t>(mesh.numVertices()) + 1;
-    if (vlocal.size() < needV)
-      vlocal.resize(needV + needV / 4, 0);
-    localVert.clear();
-    bool useMatrix = true;
-    for (size_t i = 0; i < nb && useMatrix; ++i)
-    {
-      BoundaryFace& bf = boundary[i];
-      for (int k = 0; k < 4; ++k)
-      {
-        if (k == bf.face)
-          continue;
-        const int32_t x = bf.v[k];
-        const int32_t li = vlocal[static_cast<size_t>(x + 1)];
-        if (li < static_cast<int32_t>(localVert.size()) && localVert[li] == x)
-          bf.local[k] = li;
-        else
-        {
-          if (localVert.size() == static_cast<size_t>(kMaxLocal))
-          {
-            useMatrix = false;
-            break;
-          }
-          bf.local[k] = vlocal[static_cast<size_t>(x + 1)] = static_cast<int32_t>(localVert.size());
-          localVert.push_back(x);
-        }
-      }
-    }
-    const int32_t L = static_cast<int32_t>(localVert.size());
-    if (useMatrix && edgeMat.size() < static_cast<size_t>(L) * L)
-      edgeMat.resize(static_cast<size_t>(kMaxLocal) * kMaxLocal);
+    for (int32_t k = 0; k < nloc; ++k)
+      VL[LV[k] + 1] = -1;
+    const bool useMatrix = !overflow;
     uint32_t mask = 0;
     if (!useMatrix)
     {
@@ -541,7 +556,7 @@ struct DelaunayInserter::Impl
         if (useMatrix)
         {
           const EdgePair e = kDirected[bf.face][g];
-          M[bf.local[e.x] * L + bf.local[e.y]] = (s << 2) | g;
+          M[(bf.local[e.x] << kLocalShift) | bf.local[e.y]] = (s << 2) | g;
           continue;
         }
         const EdgePair e = kOther[bf.face][g];
@@ -563,7 +578,7 @@ struct DelaunayInserter::Impl
           if (g == bf.face)
             continue;
           const EdgePair e = kDirected[bf.face][g];
-          ns[g] = M[bf.local[e.y] * L + bf.local[e.x]];
+          ns[g] = M[(bf.local[e.y] << kLocalShift) | bf.local[e.x]];
         }
       }
     // Leftover cavity slots (the cavity had more tets than boundary faces).
