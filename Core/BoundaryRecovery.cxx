@@ -390,6 +390,7 @@ bool MeshEditor::flip23(int32_t t, int face, const BoundaryConstraints* bc, std:
   std::vector<int32_t> old = { t, u };
   if (!replace(old, tmpNew_, created))
     return false;
+  lastRemovedIds = old;
   ++flips23;
   return true;
 }
@@ -483,11 +484,67 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
     lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
   if (!replace(tets, tmpNew_, created))
     return false;
+  lastRemovedIds = tets;
   if (n == 3)
     ++flips32;
   else
     ++flipsEdgeRemoval;
   return true;
+}
+
+bool MeshEditor::removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
+  std::vector<int32_t>* created, int depth)
+{
+  if (removeEdge(t, x, y, bc, created))
+    return true;
+  if (depth <= 0 || (bc && bc->isEdge(x, y)))
+    return false;
+  std::vector<int32_t> ring, tets;
+  if (!edgeRing(t, x, y, ring, tets) || ring.size() <= 3 || ring.size() > 16)
+    return false;
+  for (size_t i = 0; i < ring.size(); ++i)
+    for (int32_t e : { x, y })
+    {
+      const int32_t r = ring[i];
+      if (bc && bc->isEdge(e, r))
+        continue;
+      const int32_t tt = findEdge(e, r);
+      if (tt < 0)
+        continue;
+      std::vector<int32_t> sub;
+      if (!removeEdgeDeep(tt, e, r, bc, &sub, depth - 1))
+        continue;
+      std::vector<std::array<int32_t, 4>> orig = lastRemoved;
+      std::vector<int32_t> current = sub;
+      const int32_t t2 = findEdge(x, y);
+      std::vector<int32_t> fin;
+      if (t2 >= 0 && removeEdge(t2, x, y, bc, &fin))
+      {
+        // Compose: what the two flips removed from the original mesh, and what now covers it.
+        for (size_t k = 0; k < lastRemovedIds.size(); ++k)
+        {
+          auto it = std::find(current.begin(), current.end(), lastRemovedIds[k]);
+          if (it != current.end())
+            current.erase(it);
+          else
+            orig.push_back(lastRemoved[k]);
+        }
+        // Ids recycled by the second flip may coincide with ids left in `current`: those are new tets.
+        for (int32_t c : fin)
+        {
+          auto it = std::find(current.begin(), current.end(), c);
+          if (it == current.end())
+            current.push_back(c);
+        }
+        lastRemoved = orig;
+        if (created)
+          *created = current;
+        return true;
+      }
+      // Undo the ring reduction.
+      replace(sub, orig, nullptr);
+    }
+  return false;
 }
 
 int32_t MeshEditor::locate(const double* p, int32_t start)
@@ -573,7 +630,11 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
   cav = roots;
   for (int32_t t : cav)
     tetStamp[t] = sCav;
-  for (size_t k = 0; k < cav.size() && cav.size() < 4096; ++k)
+  // Bowyer-Watson growth; when it would delete a recovered boundary edge (every tet around the edge in
+  // the cavity) the cavity falls back to the tets whose closure contains p (1-4, 2-6 or n-2n split, the
+  // paper's "connect the intersection point to the polyhedron").
+  const size_t maxCavity = 4096;
+  for (size_t k = 0; k < cav.size() && cav.size() < maxCavity; ++k)
   {
     const int32_t t = cav[k];
     for (int i = 0; i < 4; ++i)
@@ -590,6 +651,39 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
         tetStamp[u] = sCav;
         cav.push_back(u);
       }
+    }
+  }
+  if (bc && cav.size() > roots.size())
+  {
+    bool kills = false;
+    std::vector<int32_t> ring, rtets;
+    static const int kE[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+    for (size_t k = 0; k < cav.size() && !kills; ++k)
+    {
+      const int32_t* w = mesh.vertices(cav[k]);
+      for (auto& e : kE)
+      {
+        if (!bc->isEdge(w[e[0]], w[e[1]]))
+          continue;
+        if (!edgeRing(cav[k], w[e[0]], w[e[1]], ring, rtets))
+          continue;
+        bool all = true;
+        for (int32_t u : rtets)
+          all = all && tetStamp[u] == sCav;
+        if (all)
+        {
+          kills = true;
+          break;
+        }
+      }
+    }
+    if (kills)
+    {
+      for (int32_t t : cav)
+        tetStamp[t] = 0;
+      cav = roots;
+      for (int32_t t : cav)
+        tetStamp[t] = sCav;
     }
   }
   auto isRoot = [&](int32_t t) { return std::find(roots.begin(), roots.end(), t) != roots.end(); };
@@ -872,6 +966,7 @@ public:
   {
     std::vector<Crossing> faces, edges, f2, e2;
     std::vector<int32_t> created;
+    int sideways = 0;
     for (int iter = 0; iter < 500; ++iter)
     {
       if (ed_.findEdge(a, b) >= 0)
@@ -899,12 +994,17 @@ public:
         continue;
       for (const Crossing& c : edges)
       {
-        if (m_.isFree(c.tet) || !ed_.removeEdge(c.tet, c.a, c.b, &bc_, &created))
+        if (m_.isFree(c.tet) || !ed_.removeEdgeDeep(c.tet, c.a, c.b, &bc_, &created, 2))
           continue;
         if (ed_.findEdge(a, b) >= 0)
           return true;
-        if (traceSegment(a, b, f2, e2) && f2.size() + e2.size() < m0)
+        // Like Sloan's 2D algorithm, a flip that keeps the count may still be needed (coplanar
+        // crossings); a few such sideways steps are allowed.
+        if (traceSegment(a, b, f2, e2) &&
+          (f2.size() + e2.size() < m0 || (f2.size() + e2.size() == m0 && sideways < 64)))
         {
+          if (f2.size() + e2.size() == m0)
+            ++sideways;
           progress = true;
           break;
         }
@@ -941,7 +1041,7 @@ public:
       bool progress = false;
       for (const Crossing& cr : edges)
       {
-        if (m_.isFree(cr.tet) || !ed_.removeEdge(cr.tet, cr.a, cr.b, &bc_, &created))
+        if (m_.isFree(cr.tet) || !ed_.removeEdgeDeep(cr.tet, cr.a, cr.b, &bc_, &created, 2))
           continue;
         if (better())
         {
@@ -1060,6 +1160,9 @@ private:
 
 } // namespace
 
+// Stop adding Steiner points after this many consecutive rounds in which the number of missing edges grew.
+static int kMaxGrowingRounds = 3;
+
 Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
 {
@@ -1077,6 +1180,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   std::vector<int32_t> failedFaces;
   bool first = true, firstFacets = true;
   int64_t steinerUsed = 0;
+  size_t prevMissing = 0;
+  int growing = 0;
   for (int round = 0;; ++round)
   {
     if (pr->cancelled())
@@ -1120,6 +1225,14 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       failedEdges.push_back({ a, b });
     }
     bool changed = false;
+    // Divergence guard: Steiner points that only make more edges go missing will not converge.
+    if (round > 0 && missingEdges.size() > prevMissing)
+      ++growing;
+    else
+      growing = 0;
+    prevMissing = missingEdges.size();
+    if (growing >= kMaxGrowingRounds)
+      break;
     if (!failedEdges.empty())
     {
       if (!options.allowSteiner || steinerUsed >= budget)

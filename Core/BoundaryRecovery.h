@@ -146,8 +146,15 @@ public:
   int32_t locate(const double* p, int32_t start);
 
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
-  // The tets the last successful flip removed (for undo: replace(created, lastRemoved)).
+  // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to
+  // the ring vertices (recursively, `depth` levels) when the edge cannot be removed directly.
+  bool removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
+    int depth);
+
+  // The tets the last successful flip removed (for undo: replace(created, lastRemoved)) and their ids
+  // before the flip.
   std::vector<std::array<int32_t, 4>> lastRemoved;
+  std::vector<int32_t> lastRemovedIds;
 
   // Scratch helpers shared by the stages.
   uint32_t newStamp();
@@ -188,8 +195,15 @@ struct RecoveryReport
   int64_t steinerSegment = 0;         // Steiner points put on input edges
   int64_t steinerFacet = 0;           // Steiner points put inside input triangles
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
-  // The tets the last successful flip removed (for undo: replace(created, lastRemoved)).
+  // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to
+  // the ring vertices (recursively, `depth` levels) when the edge cannot be removed directly.
+  bool removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
+    int depth);
+
+  // The tets the last successful flip removed (for undo: replace(created, lastRemoved)) and their ids
+  // before the flip.
   std::vector<std::array<int32_t, 4>> lastRemoved;
+  std::vector<int32_t> lastRemovedIds;
   int64_t unrecoveredEdges = 0, unrecoveredFacets = 0;
   double seconds = 0;
 };

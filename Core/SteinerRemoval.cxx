@@ -141,6 +141,13 @@ public:
     if (subs.empty())
       return false;
     // New boundary triangles per parent.
+    struct Poly
+    {
+      std::vector<int32_t> v;
+      int axis, o;
+      int32_t parent;
+    };
+    std::vector<Poly> polys;
     std::vector<std::array<int32_t, 3>> newTris;
     std::vector<int32_t> newTriParent;
     for (auto& [par, list] : byParent)
@@ -202,14 +209,7 @@ public:
           axis = k;
       // Sign of a counter-clockwise turn when dropping `axis` (right-handed cyclic order).
       const int o = nrm[axis] > 0 ? 1 : -1;
-      std::vector<std::array<int32_t, 3>> tris;
-      if (!triangulatePolygon3(m_, poly, axis, o, tris))
-        return false;
-      for (auto& tr : tris)
-      {
-        newTris.push_back(tr);
-        newTriParent.push_back(par);
-      }
+      polys.push_back({ poly, axis, o, par });
     }
     // Sides: components of S across faces containing p that are not subfaces.
     const uint32_t s0 = ed_.newStamp();
@@ -271,54 +271,98 @@ public:
         sideOfParent[side[k]][bc_.parent[sf]] = same ? 1 : -1;
       }
     }
-    // Per side: cavity faces and relocated point.
+    // Per side: cavity faces and relocated point. Several triangulations of the polygons are tried: the
+    // best-ear one, then fans from each polygon vertex.
     std::vector<std::array<int32_t, 4>> newTets;
     std::vector<int> newTetSide;
     std::vector<std::array<double, 3>> sidePoint(static_cast<size_t>(nsides));
     std::vector<int32_t> sideRegion(static_cast<size_t>(nsides), -1);
-    for (int sd = 0; sd < nsides; ++sd)
+    size_t maxPoly = 3;
+    for (auto& pl : polys)
+      maxPoly = std::max(maxPoly, pl.v.size());
+    bool good = false;
+    for (size_t variant = 0; variant <= maxPoly && !good; ++variant)
     {
-      std::vector<std::array<int32_t, 3>> faces;
-      for (size_t k = 0; k < S.size(); ++k)
+      newTris.clear();
+      newTriParent.clear();
+      newTets.clear();
+      newTetSide.clear();
+      good = true;
+      for (auto& pl : polys)
       {
-        if (side[k] != sd)
-          continue;
-        if (region_ && sideRegion[sd] < 0 && static_cast<size_t>(S[k]) < region_->size())
-          sideRegion[sd] = (*region_)[S[k]];
-        const int ip = m_.localIndex(S[k], p);
-        m_.faceVertices(S[k], ip, f);
-        faces.push_back({ { f[0], f[1], f[2] } });
-      }
-      for (size_t k = 0; k < newTris.size(); ++k)
-      {
-        auto it = sideOfParent[sd].find(newTriParent[k]);
-        if (it == sideOfParent[sd].end())
-          return false;
-        const auto& tr = newTris[k];
-        if (it->second > 0)
-          faces.push_back(tr);
+        std::vector<std::array<int32_t, 3>> tris;
+        if (variant == 0 || pl.v.size() == 3)
+        {
+          if (!triangulatePolygon3(m_, pl.v, pl.axis, pl.o, tris))
+            good = false;
+        }
         else
-          faces.push_back({ { tr[0], tr[2], tr[1] } });
+        {
+          const size_t n = pl.v.size(), r = (variant - 1) % n;
+          for (size_t k = 1; k + 1 < n; ++k)
+            tris.push_back({ { pl.v[r], pl.v[(r + k) % n], pl.v[(r + k + 1) % n] } });
+        }
+        for (auto& tr : tris)
+        {
+          newTris.push_back(tr);
+          newTriParent.push_back(pl.parent);
+        }
       }
-      // Cancel a link face that coincides (reversed) with a new triangle: that part of the cavity is empty.
-      for (size_t a = 0; a < faces.size(); ++a)
-        for (size_t b = a + 1; b < faces.size(); ++b)
-          if (faces[a][0] >= 0 && faces[b][0] >= 0 && TriKey(faces[a][0], faces[a][1], faces[a][2]) ==
-              TriKey(faces[b][0], faces[b][1], faces[b][2]))
-          {
-            faces[a][0] = -1;
-            faces[b][0] = -1;
-          }
-      faces.erase(std::remove_if(faces.begin(), faces.end(), [](const std::array<int32_t, 3>& x) { return x[0] < 0; }),
-        faces.end());
-      if (!findPoint(p, faces, sidePoint[sd].data()))
-        return false;
-      for (auto& fc : faces)
+      if (!good)
+        continue;
+      for (int sd = 0; sd < nsides && good; ++sd)
       {
-        newTets.push_back({ { fc[0], fc[1], fc[2], -2 - sd } });
-        newTetSide.push_back(sd);
+        std::vector<std::array<int32_t, 3>> faces;
+        for (size_t k = 0; k < S.size(); ++k)
+        {
+          if (side[k] != sd)
+            continue;
+          if (region_ && sideRegion[sd] < 0 && static_cast<size_t>(S[k]) < region_->size())
+            sideRegion[sd] = (*region_)[S[k]];
+          const int ip = m_.localIndex(S[k], p);
+          m_.faceVertices(S[k], ip, f);
+          faces.push_back({ { f[0], f[1], f[2] } });
+        }
+        for (size_t k = 0; k < newTris.size(); ++k)
+        {
+          auto it = sideOfParent[sd].find(newTriParent[k]);
+          if (it == sideOfParent[sd].end())
+          {
+            good = false;
+            break;
+          }
+          const auto& tr = newTris[k];
+          if (it->second > 0)
+            faces.push_back(tr);
+          else
+            faces.push_back({ { tr[0], tr[2], tr[1] } });
+        }
+        // Cancel a link face that coincides (reversed) with a new triangle: that part of the cavity is empty.
+        for (size_t a = 0; a < faces.size(); ++a)
+          for (size_t b = a + 1; b < faces.size(); ++b)
+            if (faces[a][0] >= 0 && faces[b][0] >= 0 && TriKey(faces[a][0], faces[a][1], faces[a][2]) ==
+                TriKey(faces[b][0], faces[b][1], faces[b][2]))
+            {
+              faces[a][0] = -1;
+              faces[b][0] = -1;
+            }
+        faces.erase(std::remove_if(faces.begin(), faces.end(), [](const std::array<int32_t, 3>& x) { return x[0] < 0; }),
+          faces.end());
+        if (!findPoint(p, faces, sidePoint[sd].data()))
+        {
+          good = false;
+          break;
+        }
+        for (auto& fc : faces)
+        {
+          newTets.push_back({ { fc[0], fc[1], fc[2], -2 - sd } });
+          newTetSide.push_back(sd);
+        }
       }
+
     }
+    if (!good)
+      return false;
     // The relocated points are new vertices (p's id cannot be reused: faces through the old and the new
     // position would have the same ids).
     const int32_t firstNew = m_.numVertices();
@@ -406,6 +450,15 @@ private:
       double delta = 0.5 * L;
       for (int k = 0; k < 60; ++k, delta *= 0.5)
         cands.push_back({ { P[0] + delta * dir[0] / dl, P[1] + delta * dir[1] / dl, P[2] + delta * dir[2] / dl } });
+    }
+    // Points inside the old tets around p (their centroids pulled towards p).
+    for (auto& fc : faces)
+    {
+      double g[3];
+      for (int k = 0; k < 3; ++k)
+        g[k] = (m_.point(fc[0])[k] + m_.point(fc[1])[k] + m_.point(fc[2])[k] + P[k]) / 4.0;
+      for (double t : { 1.0, 0.5, 0.1, 0.01, 0.001 })
+        cands.push_back({ { P[0] + t * (g[0] - P[0]), P[1] + t * (g[1] - P[1]), P[2] + t * (g[2] - P[2]) } });
     }
     double bestQ = -1;
     bool found = false;
