@@ -21,7 +21,8 @@ constexpr uint32_t kMarkBit = 0x80000000u;
 constexpr int32_t kCodeMask = 0x7fffffff;
 
 // The hot loop uses the inline filtered predicates (PredicatesInline.h): same results as Predicates.h.
-constexpr double kInsphereFilter = 24.0 * predicates::detail::kInsphereBound * (1.0 + 0x1p-20);
+constexpr double kInsphereFilter2 =
+  (24.0 * predicates::detail::kInsphereBound) * (24.0 * predicates::detail::kInsphereBound) * (1.0 + 0x1p-20);
 // Lattice inputs (regular grids, integer or dyadic coordinates with few significant bits): every
 // coordinate is an integer multiple of a unit 2^k and below 2^25 units, so coordinate differences are
 // exact, and when they are at most D units the determinants evaluated in doubles are exact too (all
@@ -97,7 +98,7 @@ struct DelaunayInserter::Impl
   const int32_t* sosId = nullptr; // optional: SoS id of each vertex (default: the vertex id)
   // Lattice mode (see latticeUnit): limits on the coordinate differences for exact double evaluation;
   // negative = off. Only buildDelaunay turns it on (later points need not be on the lattice).
-  double latticeOrientLimit = -1, latticeInsphereLimit = -1;
+  double latticeOrientLimit = -1, latticeInsphereLimit2 = -1; // the latter squared
 
   int orient(const double* a, const double* b, const double* c, const double* d) const
   {
@@ -118,22 +119,20 @@ struct DelaunayInserter::Impl
   }
 
   // Exact insphere sign (0 when cospherical); the SoS tie-break is the caller's. Fast path: the
-  // determinant with the expression tree of PredicatesInline.h, and its forward error bound
-  // gamma_16 * P (P = sum of the absolute monomials, Predicates.cxx) with P bounded from the largest
-  // absolute coordinate differences per axis: P <= 24 (mx^2 + my^2 + mz^2) mx my mz (each of the 4
-  // lifted terms is at most (mx^2+my^2+mz^2) times a 3x3 permanent <= 6 mx my mz). A relative margin of
-  // 2^-20 covers the rounding of that bound; restricting mx, my, mz to [2^-120, 2^120] rules out
-  // overflow and keeps gradual underflow below 2^-1000 of the bound. Uncertain cases go to the exact
-  // predicate. (Cheaper than computing P itself; the inputs are ordinary in this loop.)
+  // determinant with the expression tree of PredicatesInline.h, whose forward error is at most
+  // gamma_16 * P (P = sum of the absolute monomials, see Predicates.cxx). P is bounded from the lifted
+  // values w_i = |p_i - e|^2 without computing it: P = sum_i w_i q_i, where q_i is the permanent of the
+  // other three rows of |coordinates|, at most the product of their row sums (<= sqrt(3 w_j)), so
+  // P <= 4 W * 3^(3/2) W^(3/2) <= 24 W^(5/2) with W = max w_i. The test |det| > gamma_16 * 24 W^(5/2) is
+  // done squared (no square root) with a relative margin of 2^-20 for the rounding of both sides.
+  // Restricting W to [2^-200, 2^200] rules out overflow and keeps gradual underflow below 2^-800 of
+  // the bound. Uncertain cases go to the exact predicate.
   int insphere(const double* a, const double* b, const double* c, const double* d, const double* e) const
   {
     const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
     const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
     const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
     const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
-    const double mx = std::max(std::max(std::fabs(x0), std::fabs(x1)), std::max(std::fabs(x2), std::fabs(x3)));
-    const double my = std::max(std::max(std::fabs(y0), std::fabs(y1)), std::max(std::fabs(y2), std::fabs(y3)));
-    const double mz = std::max(std::max(std::fabs(z0), std::fabs(z1)), std::max(std::fabs(z2), std::fabs(z3)));
     const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
     const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
     const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
@@ -145,11 +144,11 @@ struct DelaunayInserter::Impl
     const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
     const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
     const double det = (w0 * d123 - w1 * d023) + (w2 * d013 - w3 * d012); // > 0: e inside
-    const double m = std::max(std::max(mx, my), mz);
-    if (m <= latticeInsphereLimit)
-      return (det > 0) - (det < 0); // exact (lattice input, small differences)
-    const double bound = kInsphereFilter * ((mx * mx + my * my + mz * mz) * (mx * my * mz));
-    if (std::fabs(det) > bound && std::min(std::min(mx, my), mz) >= 0x1p-120 && m <= 0x1p120)
+    const double W = std::max(std::max(w0, w1), std::max(w2, w3));
+    if (W <= latticeInsphereLimit2)
+      return (det > 0) - (det < 0); // exact (lattice input, differences <= 2^9 units)
+    const double W2 = W * W;
+    if (det * det > kInsphereFilter2 * (W2 * W2 * W) && W >= 0x1p-200 && W <= 0x1p200)
       return (det > 0) - (det < 0);
     return predicates::insphere(a, b, c, d, e);
   }
@@ -861,7 +860,8 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   if (latticeUnit(xyz, n, unit))
   {
     inserter.impl_->latticeOrientLimit = 65536.0 * unit;
-    inserter.impl_->latticeInsphereLimit = 512.0 * unit;
+    // |p_i - e|^2 <= (512 u)^2 implies every difference is at most 512 units.
+    inserter.impl_->latticeInsphereLimit2 = (512.0 * unit) * (512.0 * unit);
   }
   if (options.location == PointLocation::BucketGrid)
   {
