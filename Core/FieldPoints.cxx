@@ -1,0 +1,173 @@
+#include "FieldPoints.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace volgrid
+{
+
+namespace
+{
+inline double dist(const double* a, const double* b)
+{
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+inline double volume(const double* a, const double* b, const double* c, const double* d)
+{
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6.0;
+}
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+} // namespace
+
+Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options,
+  const FaceConstraints* constraints, std::vector<int32_t>* labels, const std::function<bool(const double*)>& inside,
+  Progress* progress, FieldPointReport* reportOut)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!(options.alpha > 0) || !std::isfinite(options.alpha) || !(options.beta >= 0) || !std::isfinite(options.beta) ||
+    !(options.maxVolume >= 0))
+    return Status::failure(ErrorKind::InvalidOption, "Field points need alpha > 0, beta >= 0 and maxVolume >= 0.");
+  if (mesh.numGhostTets() > 0)
+    return Status::failure(ErrorKind::InvalidOption, "Field points are inserted into a mesh without ghost tets.");
+  FieldPointReport local;
+  FieldPointReport& report = reportOut ? *reportOut : local;
+  TetEditor editor(mesh, constraints, labels);
+  // h cap from maxVolume: edge of the regular tet of that volume, V = L^3 / (6 sqrt 2).
+  const double hVol = options.maxVolume > 0 ? std::cbrt(options.maxVolume * 6.0 * std::sqrt(2.0)) : 0;
+  std::vector<int32_t> birth(static_cast<size_t>(mesh.tetCapacity()), 0), created, todo;
+  int64_t total = 0;
+  for (int pass = 1; pass <= options.maxPasses; ++pass)
+  {
+    // Tets to examine: those created by the previous pass (all tets in the first).
+    todo.clear();
+    mesh.forEachTet([&](int32_t t) {
+      if (birth[t] == pass - 1)
+        todo.push_back(t);
+    });
+    int64_t insertedThisPass = 0;
+    size_t k = 0;
+    for (int32_t t : todo)
+    {
+      if ((++k & 4095) == 0 && progress)
+      {
+        if (progress->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
+        progress->report(std::min(1.0, (pass - 1 + double(k) / todo.size()) / 8.0), "Creating field points");
+      }
+      if (mesh.isFree(t) || birth[t] != pass - 1)
+        continue; // destroyed (or its slot reused) by an insertion of this pass
+      const int32_t* v = mesh.vertices(t);
+      const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]), *d = mesh.point(v[3]);
+      const double cen[3] = { (a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
+        (a[2] + b[2] + c[2] + d[2]) / 4 };
+      double h = sizing.evaluate(cen);
+      if (hVol > 0)
+        h = std::min(h, hVol);
+      if (!(h > 0) || !std::isfinite(h))
+        continue;
+      const double dm = std::min(std::min(dist(cen, a), dist(cen, b)), std::min(dist(cen, c), dist(cen, d)));
+      const bool big = options.maxVolume > 0 && volume(a, b, c, d) > options.maxVolume;
+      if (!(dm > options.alpha * h) && !big)
+        continue;
+      ++report.candidates;
+      if (inside && !inside(cen))
+      {
+        ++report.rejectedOther;
+        continue;
+      }
+      const int32_t nv = mesh.addPoint(cen);
+      const auto st = editor.insertPoint(nv, t, options.beta * h, nullptr, &created);
+      if (st != TetEditor::InsertStatus::Inserted)
+      {
+        mesh.points.resize(mesh.points.size() - 3);
+        (st == TetEditor::InsertStatus::TooClose ? report.rejectedSpacing : report.rejectedOther)++;
+        continue;
+      }
+      if (birth.size() < static_cast<size_t>(mesh.tetCapacity()))
+        birth.resize(static_cast<size_t>(mesh.tetCapacity()) + 1024, -1);
+      for (int32_t u : created)
+        birth[u] = pass;
+      ++insertedThisPass;
+      ++total;
+      if (options.maxPoints >= 0 && total >= options.maxPoints)
+        break;
+    }
+    report.passes = pass;
+    report.insertedPerPass.push_back(insertedThisPass);
+    report.inserted += insertedThisPass;
+    if (insertedThisPass == 0 || (options.maxPoints >= 0 && total >= options.maxPoints))
+      break;
+  }
+  if (progress)
+    progress->report(1.0, "Creating field points");
+  report.seconds += secondsSince(t0);
+  return Status::success();
+}
+
+Status insertClusterPoints(TetMesh& mesh, const double* xyz, size_t n, double minSpacing,
+  const FaceConstraints* constraints, std::vector<int32_t>* labels, std::vector<int32_t>* vertexIds,
+  Progress* progress, FieldPointReport* reportOut)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if (mesh.numGhostTets() > 0)
+    return Status::failure(ErrorKind::InvalidOption, "Cluster points are inserted into a mesh without ghost tets.");
+  if (!(minSpacing >= 0))
+    return Status::failure(ErrorKind::InvalidOption, "The cluster point spacing must be >= 0.");
+  FieldPointReport local;
+  FieldPointReport& report = reportOut ? *reportOut : local;
+  TetEditor editor(mesh, constraints, labels);
+  if (vertexIds)
+    vertexIds->assign(n, -1);
+  int32_t hint = -1;
+  mesh.forEachTet([&](int32_t t) {
+    if (hint < 0)
+      hint = t;
+  });
+  std::vector<int32_t> created;
+  for (size_t i = 0; i < n; ++i)
+  {
+    if ((i & 1023) == 1023 && progress)
+    {
+      if (progress->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Cluster point insertion was cancelled.");
+      progress->report(double(i) / n, "Inserting cluster points");
+    }
+    const double* p = xyz + 3 * i;
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || hint < 0)
+    {
+      ++report.clusterOutside;
+      continue;
+    }
+    const int32_t t = editor.locateRobust(p, hint);
+    if (t < 0)
+    {
+      ++report.clusterOutside;
+      continue;
+    }
+    const int32_t nv = mesh.addPoint(p);
+    const auto st = editor.insertPoint(nv, t, minSpacing, nullptr, &created);
+    if (st != TetEditor::InsertStatus::Inserted)
+    {
+      mesh.points.resize(mesh.points.size() - 3);
+      (st == TetEditor::InsertStatus::NotInside ? report.clusterOutside : report.clusterRejected)++;
+      continue;
+    }
+    hint = created.front();
+    ++report.clusterInserted;
+    if (vertexIds)
+      (*vertexIds)[i] = nv;
+  }
+  report.seconds += secondsSince(t0);
+  return Status::success();
+}
+
+} // namespace volgrid

@@ -1,0 +1,278 @@
+#include "MeshOptimization.h"
+
+#include "Predicates.h"
+#include "PredicatesInline.h"
+#include "Quality.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+namespace volgrid
+{
+
+namespace
+{
+inline double tetQ(const TetMesh& m, int32_t a, int32_t b, int32_t c, int32_t d)
+{
+  return tetSineQuality(m.point(a), m.point(b), m.point(c), m.point(d));
+}
+inline double tetQ(const TetMesh& m, int32_t t)
+{
+  const int32_t* w = m.vertices(t);
+  return tetQ(m, w[0], w[1], w[2], w[3]);
+}
+inline bool positive(const TetMesh& m, const std::array<int32_t, 4>& q)
+{
+  return predicates::orient3dInline(m.point(q[0]), m.point(q[1]), m.point(q[2]), m.point(q[3])) > 0;
+}
+
+// Sine of the dihedral angle at each edge (0,1) (0,2) (0,3) (1,2) (1,3) (2,3) of tet t (unsigned).
+void edgeSines(const TetMesh& m, int32_t t, double s[6])
+{
+  const int32_t* w = m.vertices(t);
+  const double *a = m.point(w[0]), *b = m.point(w[1]), *c = m.point(w[2]), *d = m.point(w[3]);
+  double ang[6];
+  quality::tetDihedralAngles(a, b, c, d, ang);
+  for (int i = 0; i < 6; ++i)
+    s[i] = std::sin(ang[i] * 3.14159265358979323846 / 180.0);
+}
+constexpr int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+
+struct Scratch
+{
+  std::vector<int32_t> ring, tets;
+  std::vector<double> Q;
+  std::vector<int> K;
+  std::vector<std::array<int32_t, 4>> newTets;
+};
+Scratch& scratch()
+{
+  static thread_local Scratch s;
+  return s;
+}
+
+void emit(const std::vector<int32_t>& r, const std::vector<int>& K, int n, int i, int j, int32_t x,
+  int32_t y, std::vector<std::array<int32_t, 4>>& out)
+{
+  if (j - i < 2)
+    return;
+  const int k = K[i * n + j];
+  out.push_back({ r[i], r[k], r[j], y });
+  out.push_back({ r[i], r[j], r[k], x });
+  emit(r, K, n, i, k, x, y, out);
+  emit(r, K, n, k, j, x, y, out);
+}
+} // namespace
+
+DihedralSummary summarizeDihedrals(const TetMesh& mesh)
+{
+  DihedralSummary s;
+  mesh.forEachFiniteTet([&](int32_t t) {
+    const int32_t* w = mesh.vertices(t);
+    const double *a = mesh.point(w[0]), *b = mesh.point(w[1]), *c = mesh.point(w[2]), *d = mesh.point(w[3]);
+    double ang[6];
+    quality::tetDihedralAngles(a, b, c, d, ang);
+    const double lo = *std::min_element(ang, ang + 6), hi = *std::max_element(ang, ang + 6);
+    ++s.tets;
+    s.minDihedral = std::min(s.minDihedral, lo);
+    s.maxDihedral = std::max(s.maxDihedral, hi);
+    s.below10 += lo < 10;
+    s.above170 += hi > 170;
+    s.inverted += predicates::orient3d(a, b, c, d) <= 0;
+  });
+  return s;
+}
+
+bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created)
+{
+  Scratch& s = scratch();
+  TetMesh& m = editor.mesh;
+  if (!editor.edgeRing(t, x, y, s.ring, s.tets, maxRing))
+    return false;
+  const int n = static_cast<int>(s.ring.size());
+  double qOld = 2;
+  for (int32_t u : s.tets)
+    qOld = std::min(qOld, tetQ(m, u));
+  s.Q.assign(static_cast<size_t>(n * n), 2.0);
+  s.K.assign(static_cast<size_t>(n * n), -1);
+  const std::vector<int32_t>& r = s.ring;
+  for (int len = 2; len < n; ++len)
+    for (int i = 0; i + len < n; ++i)
+    {
+      const int j = i + len;
+      double best = -3;
+      int bestK = -1;
+      for (int k = i + 1; k < j; ++k)
+      {
+        const double sub = std::min(s.Q[i * n + k], s.Q[k * n + j]);
+        if (sub <= best)
+          continue;
+        const double q1 = tetQ(m, r[i], r[k], r[j], y);
+        if (std::min(sub, q1) <= best)
+          continue;
+        const double q2 = tetQ(m, r[i], r[j], r[k], x);
+        const double v = std::min(sub, std::min(q1, q2));
+        if (v > best)
+        {
+          best = v;
+          bestK = k;
+        }
+      }
+      s.Q[i * n + j] = best;
+      s.K[i * n + j] = bestK;
+    }
+  const double qNew = s.Q[n - 1];
+  if (!(qNew > qOld) || !(qNew > 0))
+    return false;
+  s.newTets.clear();
+  emit(r, s.K, n, 0, n - 1, x, y, s.newTets);
+  for (const auto& q : s.newTets)
+    if (!positive(m, q))
+      return false;
+  const std::vector<int32_t> old(s.tets);
+  return editor.replace(old, s.newTets, created);
+}
+
+bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created)
+{
+  TetMesh& m = editor.mesh;
+  if (editor.isConstrainedFace(t, face))
+    return false;
+  const int32_t u = m.neighbor(t, face);
+  const int j = m.mirrorFace(t, face);
+  const int32_t d = m.vertex(t, face), e = m.vertex(u, j);
+  int32_t f[3];
+  m.faceVertices(t, face, f);
+  const double qOld = std::min(tetQ(m, t), tetQ(m, u));
+  std::vector<std::array<int32_t, 4>>& nt = scratch().newTets;
+  nt.clear();
+  nt.push_back({ f[0], f[1], e, d });
+  nt.push_back({ f[1], f[2], e, d });
+  nt.push_back({ f[2], f[0], e, d });
+  double qNew = 2;
+  for (const auto& q : nt)
+    qNew = std::min(qNew, tetQ(m, q[0], q[1], q[2], q[3]));
+  if (!(qNew > qOld) || !(qNew > 0))
+    return false;
+  for (const auto& q : nt)
+    if (!positive(m, q))
+      return false;
+  const std::vector<int32_t> old = { t, u };
+  const std::vector<std::array<int32_t, 4>> copy(nt);
+  return editor.replace(old, copy, created);
+}
+
+Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
+  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress, OptimizationReport* reportOut)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if (mesh.numGhostTets() > 0)
+    return Status::failure(ErrorKind::InvalidOption, "Optimisation works on a mesh without ghost tets.");
+  if (!(options.targetDegrees > 0 && options.targetDegrees < 90) || options.maxPasses < 0 || options.maxRing < 3)
+    return Status::failure(ErrorKind::InvalidOption,
+      "Optimisation needs 0 < targetDegrees < 90, maxPasses >= 0 and maxRing >= 3.");
+  OptimizationReport local;
+  OptimizationReport& report = reportOut ? *reportOut : local;
+  report.before = summarizeDihedrals(mesh);
+  TetEditor editor(mesh, constraints, labels);
+  std::vector<uint8_t> lock = editor.lockedVertices();
+  if (locked)
+    for (size_t v = 0; v < lock.size() && v < locked->size(); ++v)
+      lock[v] |= (*locked)[v];
+  const double qT = std::sin(options.targetDegrees * 3.14159265358979323846 / 180.0);
+  std::vector<std::pair<double, int32_t>> bad;
+  std::vector<int32_t> queue, created, verts;
+  auto collectBad = [&]() {
+    bad.clear();
+    mesh.forEachTet([&](int32_t t) {
+      const double q = tetQ(mesh, t);
+      if (q < qT)
+        bad.emplace_back(q, t);
+    });
+    std::sort(bad.begin(), bad.end());
+    return static_cast<int64_t>(bad.size());
+  };
+  report.belowTargetBefore = collectBad();
+  for (int pass = 0; pass < options.maxPasses && !bad.empty(); ++pass)
+  {
+    if (progress)
+    {
+      if (progress->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+      progress->report(double(pass) / options.maxPasses, "Optimising");
+    }
+    int64_t changes = 0;
+    queue.clear();
+    for (const auto& b : bad)
+      queue.push_back(b.second);
+    for (size_t k = 0; k < queue.size(); ++k)
+    {
+      const int32_t t = queue[k];
+      if (mesh.isFree(t) || tetQ(mesh, t) >= qT)
+        continue;
+      bool done = false;
+      if (options.edgeRemoval)
+      {
+        double s[6];
+        edgeSines(mesh, t, s);
+        int order[6] = { 0, 1, 2, 3, 4, 5 };
+        std::sort(order, order + 6, [&](int a, int b) { return s[a] < s[b]; });
+        const int32_t* w = mesh.vertices(t);
+        const int32_t vv[4] = { w[0], w[1], w[2], w[3] };
+        for (int e = 0; e < 6 && !done; ++e)
+        {
+          const int32_t x = vv[kEdge[order[e]][0]], y = vv[kEdge[order[e]][1]];
+          if (tryEdgeRemoval(editor, t, x, y, options.maxRing, &created))
+          {
+            done = true;
+            ++report.edgeRemovals;
+            report.flips32 += created.size() == 2;
+          }
+        }
+      }
+      if (!done && options.flips)
+        for (int f = 0; f < 4 && !done; ++f)
+          if (tryFlip23(editor, t, f, &created))
+          {
+            done = true;
+            ++report.flips23;
+          }
+      if (done)
+      {
+        ++changes;
+        for (int32_t u : created)
+          if (tetQ(mesh, u) < qT)
+            queue.push_back(u);
+      }
+    }
+    if (options.smoothing)
+    {
+      verts.clear();
+      mesh.forEachTet([&](int32_t t) {
+        if (tetQ(mesh, t) < qT)
+          for (int i = 0; i < 4; ++i)
+            verts.push_back(mesh.vertex(t, i));
+      });
+      std::sort(verts.begin(), verts.end());
+      verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+      for (int32_t v : verts)
+        if (!lock[v] && smoothVertex(editor, v, options.smoothingOptions) != SmoothMove::None)
+        {
+          ++report.smoothMoves;
+          ++changes;
+        }
+    }
+    report.passes = pass + 1;
+    collectBad();
+    if (changes == 0)
+      break;
+  }
+  report.belowTargetAfter = static_cast<int64_t>(bad.size());
+  report.after = summarizeDihedrals(mesh);
+  report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return Status::success();
+}
+
+} // namespace volgrid

@@ -1,0 +1,88 @@
+// Mesh optimisation beyond the paper: topological improvement interleaved with smoothing (after
+// Freitag/Ollivier-Gooch and Klingner/Shewchuk), until every tet reaches a target quality or a pass limit.
+//
+// Quality: tetSineQuality() (TetEditor.h), i.e. min(theta_min, 180 - theta_max) over the dihedral angles.
+// Each pass:
+//   1. every tet below the target (worst first) tries, keeping the best strict improvement of the worst
+//      tet of the affected region:
+//        - edge removal on each of its six edges: the ring of n tets around an interior edge is replaced by
+//          the best triangulation of the ring polygon joined to the edge's two ends (2n-4 tets; n = 3 is the
+//          3-2 flip), found by dynamic programming over the polygon's triangulations (max-min quality);
+//        - 2-3 flips of its four faces;
+//        - multi-face removal (the inverse of edge removal: the stack of faces between two vertices x, y
+//          sandwiched by the tet's faces is replaced by the ring around the new edge xy) when the tet's
+//          face is part of such a stack (the 2-3 flip is its smallest case);
+//      tets created by a successful operation are examined in the same pass when still below target;
+//   2. smoothing (MeshSmoothing.h) of the unlocked vertices of the tets still below target.
+// Stops when nothing changed in a pass, every tet reaches the target, or after maxPasses.
+//
+// Constraints: faces without neighbour and faces in `constraints` are never removed (an edge is removed
+// only when its ring is closed and no face around it is constrained; a face is flipped only when not
+// constrained), constrained-face vertices never move, and no vertex is added or removed. Every new tet is
+// checked with the exact orient3d (strictly positive) before any change. So the boundary is unchanged and
+// the mesh stays valid. Works on a ghost-free TetMesh; region labels (optional, per tet slot) and kUser
+// flag bits are carried to the new tets (a flip never mixes regions: interface faces are constrained).
+#pragma once
+
+#include "MeshSmoothing.h"
+#include "Progress.h"
+#include "Status.h"
+#include "TetEditor.h"
+#include "TetMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace volgrid
+{
+
+struct OptimizationOptions
+{
+  double targetDegrees = 25.0; // target for min(theta_min, 180 - theta_max)
+  int maxPasses = 12;
+  bool smoothing = true;
+  bool flips = true;           // 2-3 flips
+  bool edgeRemoval = true;     // includes 3-2 flips
+  bool multiFaceRemoval = true;
+  int maxRing = 9;             // largest edge ring considered by edge removal
+  SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
+};
+
+// Dihedral-angle summary of the finite tets (degrees).
+struct DihedralSummary
+{
+  int64_t tets = 0;
+  double minDihedral = 180;
+  double maxDihedral = 0;
+  int64_t below10 = 0;  // tets with a dihedral angle under 10 degrees
+  int64_t above170 = 0; // tets with a dihedral angle above 170 degrees
+  int64_t inverted = 0; // exact orient3d <= 0
+  double shareBelow10() const { return tets ? double(below10) / tets : 0; }
+};
+DihedralSummary summarizeDihedrals(const TetMesh& mesh);
+
+struct OptimizationReport
+{
+  DihedralSummary before, after;
+  int passes = 0;
+  int64_t flips23 = 0;
+  int64_t edgeRemovals = 0; // of which 3-2 flips:
+  int64_t flips32 = 0;
+  int64_t multiFaceRemovals = 0;
+  int64_t smoothMoves = 0;
+  int64_t belowTargetBefore = 0, belowTargetAfter = 0;
+  double seconds = 0;
+};
+
+// Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot
+// labels kept in step. Errors: InvalidOption (ghost tets, bad options), Cancelled.
+Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
+  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress = nullptr,
+  OptimizationReport* report = nullptr);
+
+// Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
+// of the worst tet of the affected region; created receives the new tets.
+bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created);
+bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created);
+
+} // namespace volgrid

@@ -1,0 +1,239 @@
+#include "MeshSmoothing.h"
+
+#include "Predicates.h"
+#include "PredicatesInline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace volgrid
+{
+
+namespace
+{
+struct Scratch
+{
+  std::vector<int32_t> star, nbrs;
+  std::vector<double> q;
+};
+
+inline double tetQ(const TetMesh& m, int32_t t)
+{
+  const int32_t* w = m.vertices(t);
+  return tetSineQuality(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]));
+}
+
+double starMin(const TetMesh& m, const std::vector<int32_t>& star)
+{
+  double q = 2.0;
+  for (int32_t t : star)
+    q = std::min(q, tetQ(m, t));
+  return q;
+}
+
+bool starPositive(const TetMesh& m, const std::vector<int32_t>& star)
+{
+  for (int32_t t : star)
+  {
+    const int32_t* w = m.vertices(t);
+    if (predicates::orient3dInline(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3])) <= 0)
+      return false;
+  }
+  return true;
+}
+
+// Star minimum with v at x (written into the mesh, then restored to `home`); -2 when a tet is not
+// strictly positive (exact).
+double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, const std::vector<int32_t>& star)
+{
+  double* p = m.points.data() + 3 * static_cast<size_t>(v);
+  p[0] = x[0];
+  p[1] = x[1];
+  p[2] = x[2];
+  double q = starMin(m, star);
+  if (q > 0 && !starPositive(m, star))
+    q = -2;
+  p[0] = home[0];
+  p[1] = home[1];
+  p[2] = home[2];
+  return q;
+}
+
+void setPoint(TetMesh& m, int32_t v, const double* x)
+{
+  double* p = m.points.data() + 3 * static_cast<size_t>(v);
+  p[0] = x[0];
+  p[1] = x[1];
+  p[2] = x[2];
+}
+
+// Gradient of tet t's quality with respect to the position of v (central differences).
+void qualityGradient(TetMesh& m, int32_t t, int32_t v, double eps, double g[3])
+{
+  double* p = m.points.data() + 3 * static_cast<size_t>(v);
+  for (int k = 0; k < 3; ++k)
+  {
+    const double x0 = p[k];
+    p[k] = x0 + eps;
+    const double qp = tetQ(m, t);
+    p[k] = x0 - eps;
+    const double qm = tetQ(m, t);
+    p[k] = x0;
+    g[k] = (qp - qm) / (2 * eps);
+  }
+}
+} // namespace
+
+SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& options)
+{
+  static thread_local Scratch s;
+  TetMesh& m = editor.mesh;
+  editor.star(v, s.star);
+  if (s.star.empty())
+    return SmoothMove::None;
+  const double q0 = starMin(m, s.star);
+  if (sineQualityToDegrees(q0) >= options.belowDegrees)
+    return SmoothMove::None;
+  editor.neighbors(v, s.star, s.nbrs);
+  if (s.nbrs.empty())
+    return SmoothMove::None;
+  const double home[3] = { m.point(v)[0], m.point(v)[1], m.point(v)[2] };
+  // 1. Laplacian.
+  double c[3] = { 0, 0, 0 };
+  double scale = 0;
+  for (int32_t u : s.nbrs)
+  {
+    const double* p = m.point(u);
+    c[0] += p[0];
+    c[1] += p[1];
+    c[2] += p[2];
+    scale += std::sqrt((p[0] - home[0]) * (p[0] - home[0]) + (p[1] - home[1]) * (p[1] - home[1]) +
+      (p[2] - home[2]) * (p[2] - home[2]));
+  }
+  const double inv = 1.0 / s.nbrs.size();
+  c[0] *= inv;
+  c[1] *= inv;
+  c[2] *= inv;
+  scale *= inv;
+  const double qL = tryPosition(m, v, c, home, s.star);
+  if (qL > q0)
+  {
+    setPoint(m, v, c);
+    return SmoothMove::Laplacian;
+  }
+  if (!options.optimize || !(scale > 0))
+    return SmoothMove::None;
+  // 2. Hill climbing on the star's minimum.
+  double x[3] = { home[0], home[1], home[2] };
+  double qCur = q0;
+  double step = 0.1 * scale;
+  bool moved = false;
+  const double eps = 1e-7 * scale;
+  for (int it = 0; it < options.optimizeIterations; ++it)
+  {
+    // Nearly-worst tets and their quality gradients.
+    s.q.resize(s.star.size());
+    for (size_t i = 0; i < s.star.size(); ++i)
+      s.q[i] = tetQ(m, s.star[i]);
+    const double tol = std::max(1e-3, 0.02 * std::fabs(qCur));
+    double dir[3] = { 0, 0, 0 }, gWorst[3] = { 0, 0, 0 };
+    size_t worst = 0;
+    for (size_t i = 1; i < s.star.size(); ++i)
+      if (s.q[i] < s.q[worst])
+        worst = i;
+    int active = 0;
+    for (size_t i = 0; i < s.star.size(); ++i)
+    {
+      if (s.q[i] > s.q[worst] + tol)
+        continue;
+      double g[3];
+      qualityGradient(m, s.star[i], v, eps, g);
+      const double n = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      if (i == worst)
+        for (int k = 0; k < 3; ++k)
+          gWorst[k] = n > 0 ? g[k] / n : 0;
+      if (n > 0)
+        for (int k = 0; k < 3; ++k)
+          dir[k] += g[k] / n;
+      ++active;
+    }
+    bool improved = false;
+    for (int attempt = 0; attempt < 2 && !improved; ++attempt)
+    {
+      const double* d = attempt == 0 ? dir : gWorst;
+      if (attempt == 1 && active == 1)
+        break;
+      const double dn = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (!(dn > 0))
+        continue;
+      double h = step;
+      for (int ls = 0; ls < 10; ++ls, h *= 0.5)
+      {
+        const double y[3] = { x[0] + h * d[0] / dn, x[1] + h * d[1] / dn, x[2] + h * d[2] / dn };
+        const double qy = tryPosition(m, v, y, x, s.star);
+        if (qy > qCur)
+        {
+          x[0] = y[0];
+          x[1] = y[1];
+          x[2] = y[2];
+          setPoint(m, v, x);
+          qCur = qy;
+          improved = true;
+          step = std::min(2 * h, 0.2 * scale);
+          break;
+        }
+      }
+    }
+    if (!improved)
+      break;
+    moved = true;
+  }
+  return moved ? SmoothMove::Optimized : SmoothMove::None;
+}
+
+Status smoothMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
+  const SmoothingOptions& options, Progress* progress, SmoothingReport* reportOut)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if (mesh.numGhostTets() > 0)
+    return Status::failure(ErrorKind::InvalidOption, "Smoothing works on a mesh without ghost tets.");
+  SmoothingReport local;
+  SmoothingReport& report = reportOut ? *reportOut : local;
+  TetEditor editor(mesh, constraints, nullptr);
+  std::vector<uint8_t> lock = editor.lockedVertices();
+  if (locked)
+    for (size_t v = 0; v < lock.size() && v < locked->size(); ++v)
+      lock[v] |= (*locked)[v];
+  const int32_t nv = mesh.numVertices();
+  for (int pass = 0; pass < options.passes; ++pass)
+  {
+    int64_t moves = 0;
+    for (int32_t v = 0; v < nv; ++v)
+    {
+      if ((v & 8191) == 8191 && progress)
+      {
+        if (progress->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Smoothing was cancelled.");
+        progress->report((pass + double(v) / nv) / options.passes, "Smoothing");
+      }
+      if (lock[v])
+        continue;
+      const SmoothMove mv = smoothVertex(editor, v, options);
+      if (mv == SmoothMove::Laplacian)
+        ++report.laplacianMoves;
+      else if (mv == SmoothMove::Optimized)
+        ++report.optimizedMoves;
+      else
+        ++report.rejected;
+      moves += mv != SmoothMove::None;
+    }
+    report.passes = pass + 1;
+    if (moves == 0)
+      break;
+  }
+  report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return Status::success();
+}
+
+} // namespace volgrid

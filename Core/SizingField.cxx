@@ -1,0 +1,431 @@
+#include "SizingField.h"
+
+#include "Delaunay.h"
+#include "PredicatesInline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
+
+namespace volgrid
+{
+
+namespace
+{
+inline double dist(const double* a, const double* b)
+{
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+inline bool usable(double h)
+{
+  return std::isfinite(h) && h > 0;
+}
+} // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+struct LinearInterpolant::Locator
+{
+  int32_t hint = -1;
+};
+
+LinearInterpolant::LinearInterpolant()
+  : locator_(new Locator)
+{
+}
+LinearInterpolant::~LinearInterpolant() = default;
+LinearInterpolant::LinearInterpolant(LinearInterpolant&&) noexcept = default;
+LinearInterpolant& LinearInterpolant::operator=(LinearInterpolant&&) noexcept = default;
+
+Status LinearInterpolant::build(const double* xyz, size_t n, const double* values, Progress* progress)
+{
+  mesh_.clear();
+  values_.clear();
+  degenerate_ = false;
+  locator_->hint = -1;
+  if (n == 0)
+    return Status::failure(ErrorKind::EmptyInput, "The sizing interpolant has no point.");
+  for (size_t i = 0; i < n; ++i)
+    if (!std::isfinite(values[i]))
+      return Status::failure(ErrorKind::InvalidOption,
+        "The sizing interpolant got a non-finite value at point " + std::to_string(i) + ".", { int64_t(i) });
+  std::vector<int32_t> inputToVertex;
+  DelaunayOptions opt;
+  Status st = n >= 4 ? buildDelaunay(xyz, n, opt, mesh_, inputToVertex, progress)
+                     : Status::failure(ErrorKind::DegenerateInput, "fewer than four points");
+  if (!st.ok() && st.kind != ErrorKind::DegenerateInput)
+    return st;
+  if (!st.ok())
+  {
+    // Coplanar or tiny input: nearest-point interpolation over the raw points.
+    degenerate_ = true;
+    mesh_.clear();
+    mesh_.points.assign(xyz, xyz + 3 * n);
+    values_.assign(values, values + n);
+    return Status::success();
+  }
+  values_.assign(static_cast<size_t>(mesh_.numVertices()), std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < n; ++i)
+  {
+    double& h = values_[inputToVertex[i]];
+    h = std::min(h, values[i]);
+  }
+  for (size_t i = 0; i < values_.size(); ++i)
+    if (!std::isfinite(values_[i]))
+      values_[i] = 0; // merged duplicates: unused by tets
+  return Status::success();
+}
+
+double LinearInterpolant::evaluate(const double* p) const
+{
+  if (values_.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  if (degenerate_)
+  {
+    double best = std::numeric_limits<double>::infinity(), h = values_[0];
+    for (size_t i = 0; i < values_.size(); ++i)
+    {
+      const double d = dist(p, mesh_.points.data() + 3 * i);
+      if (d < best)
+      {
+        best = d;
+        h = values_[i];
+      }
+    }
+    return h;
+  }
+  // Visibility walk (randomised start face) from the last tet found.
+  int32_t t = locator_->hint;
+  if (t < 0 || t >= mesh_.tetCapacity() || mesh_.isFree(t) || mesh_.isGhost(t))
+  {
+    t = -1;
+    for (int32_t u = 0; u < mesh_.tetCapacity() && t < 0; ++u)
+      if (!mesh_.isFree(u) && !mesh_.isGhost(u))
+        t = u;
+  }
+  uint32_t rng = 0x2545F491u;
+  const int64_t maxSteps = 4 * static_cast<int64_t>(mesh_.numTets()) + 64;
+  for (int64_t step = 0; step < maxSteps; ++step)
+  {
+    const int32_t* v = mesh_.vertices(t);
+    const int g = mesh_.ghostIndex(t);
+    if (g >= 0)
+    {
+      // Outside the hull: clamped barycentric interpolation on the hull face.
+      int32_t f[3];
+      mesh_.faceVertices(t, g, f);
+      const double *a = mesh_.point(f[0]), *b = mesh_.point(f[1]), *c = mesh_.point(f[2]);
+      const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      const double nrm[3] = { ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0] };
+      const double nn = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
+      double w[3];
+      const double* q[3] = { a, b, c };
+      for (int k = 0; k < 3; ++k)
+      {
+        const double* u = q[(k + 1) % 3];
+        const double* s = q[(k + 2) % 3];
+        const double e1[3] = { u[0] - p[0], u[1] - p[1], u[2] - p[2] };
+        const double e2[3] = { s[0] - p[0], s[1] - p[1], s[2] - p[2] };
+        const double cr[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+        w[k] = nn > 0 ? std::max(0.0, (cr[0] * nrm[0] + cr[1] * nrm[1] + cr[2] * nrm[2]) / nn) : 1.0;
+      }
+      const double sw = w[0] + w[1] + w[2];
+      locator_->hint = mesh_.neighbor(t, g);
+      if (!(sw > 0))
+        return (values_[f[0]] + values_[f[1]] + values_[f[2]]) / 3;
+      return (w[0] * values_[f[0]] + w[1] * values_[f[1]] + w[2] * values_[f[2]]) / sw;
+    }
+    rng = rng * 1664525u + 1013904223u;
+    const int first = static_cast<int>((rng >> 16) & 3);
+    int exitFace = -1;
+    for (int k = 0; k < 4 && exitFace < 0; ++k)
+    {
+      const int i = (first + k) & 3;
+      int32_t f[3];
+      mesh_.faceVertices(t, i, f);
+      if (predicates::orient3dInline(mesh_.point(f[0]), mesh_.point(f[1]), mesh_.point(f[2]), p) < 0)
+        exitFace = i;
+    }
+    if (exitFace < 0)
+    {
+      // Inside t: barycentric weights from sub-volumes.
+      locator_->hint = t;
+      const double* P[4] = { mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]) };
+      double w[4], sw = 0;
+      for (int i = 0; i < 4; ++i)
+      {
+        const double* Q[4] = { P[0], P[1], P[2], P[3] };
+        Q[i] = p;
+        const double u1[3] = { Q[1][0] - Q[0][0], Q[1][1] - Q[0][1], Q[1][2] - Q[0][2] };
+        const double u2[3] = { Q[2][0] - Q[0][0], Q[2][1] - Q[0][1], Q[2][2] - Q[0][2] };
+        const double u3[3] = { Q[3][0] - Q[0][0], Q[3][1] - Q[0][1], Q[3][2] - Q[0][2] };
+        const double det = u1[0] * (u2[1] * u3[2] - u2[2] * u3[1]) - u1[1] * (u2[0] * u3[2] - u2[2] * u3[0]) +
+          u1[2] * (u2[0] * u3[1] - u2[1] * u3[0]);
+        w[i] = std::max(0.0, det);
+        sw += w[i];
+      }
+      if (!(sw > 0))
+        return (values_[v[0]] + values_[v[1]] + values_[v[2]] + values_[v[3]]) / 4;
+      return (w[0] * values_[v[0]] + w[1] * values_[v[1]] + w[2] * values_[v[2]] + w[3] * values_[v[3]]) / sw;
+    }
+    t = mesh_.neighbor(t, exitFace);
+  }
+  // Did not converge (should not happen on a Delaunay mesh): nearest vertex of the last tet.
+  const int32_t* v = mesh_.vertices(t);
+  double best = std::numeric_limits<double>::infinity(), h = 0;
+  for (int i = 0; i < 4; ++i)
+    if (v[i] >= 0 && dist(p, mesh_.point(v[i])) < best)
+    {
+      best = dist(p, mesh_.point(v[i]));
+      h = values_[v[i]];
+    }
+  return h;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+std::vector<double> pointDistributionFunction(
+  const double* points, int32_t numPoints, const int32_t* triangles, int32_t numTriangles)
+{
+  std::vector<std::pair<int32_t, int32_t>> edges;
+  edges.reserve(3 * static_cast<size_t>(numTriangles));
+  for (int32_t t = 0; t < numTriangles; ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      int32_t a = triangles[3 * t + k], b = triangles[3 * t + (k + 1) % 3];
+      if (a == b || a < 0 || b < 0 || a >= numPoints || b >= numPoints)
+        continue;
+      if (a > b)
+        std::swap(a, b);
+      edges.emplace_back(a, b);
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<double> sum(static_cast<size_t>(numPoints), 0.0);
+  std::vector<int32_t> count(static_cast<size_t>(numPoints), 0);
+  for (const auto& e : edges)
+  {
+    const double l = dist(points + 3 * static_cast<size_t>(e.first), points + 3 * static_cast<size_t>(e.second));
+    sum[e.first] += l;
+    sum[e.second] += l;
+    ++count[e.first];
+    ++count[e.second];
+  }
+  for (int32_t i = 0; i < numPoints; ++i)
+    sum[i] = count[i] ? sum[i] / count[i] : 0.0;
+  return sum;
+}
+
+void limitGradation(const TetMesh& mesh, double slope, std::vector<double>& sizes)
+{
+  const int32_t nv = mesh.numVertices();
+  if (!(slope >= 0) || sizes.size() < static_cast<size_t>(nv))
+    return;
+  // Edge lists (CSR) from the finite tets.
+  std::vector<std::pair<int32_t, int32_t>> edges;
+  edges.reserve(7 * static_cast<size_t>(mesh.numFiniteTets()));
+  mesh.forEachFiniteTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+      {
+        const int32_t a = std::min(v[i], v[j]), b = std::max(v[i], v[j]);
+        edges.emplace_back(a, b);
+      }
+  });
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<int32_t> start(static_cast<size_t>(nv) + 1, 0), adj(2 * edges.size());
+  for (const auto& e : edges)
+  {
+    ++start[e.first + 1];
+    ++start[e.second + 1];
+  }
+  for (int32_t v = 0; v < nv; ++v)
+    start[v + 1] += start[v];
+  std::vector<int32_t> pos(start.begin(), start.end() - 1);
+  for (const auto& e : edges)
+  {
+    adj[pos[e.first]++] = e.second;
+    adj[pos[e.second]++] = e.first;
+  }
+  using Item = std::pair<double, int32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  for (int32_t v = 0; v < nv; ++v)
+    if (usable(sizes[v]))
+      heap.emplace(sizes[v], v);
+  while (!heap.empty())
+  {
+    const Item it = heap.top();
+    heap.pop();
+    const int32_t u = it.second;
+    if (it.first > sizes[u])
+      continue; // stale
+    for (int32_t k = start[u]; k < start[u + 1]; ++k)
+    {
+      const int32_t w = adj[k];
+      if (!usable(sizes[w]))
+        continue;
+      const double bound = sizes[u] + slope * dist(mesh.point(u), mesh.point(w));
+      if (bound < sizes[w])
+      {
+        sizes[w] = bound;
+        heap.emplace(bound, w);
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+void SizingField::setBackgroundCloud(const double* xyz, const double* sizes, size_t n)
+{
+  cloudXYZ_.clear();
+  cloudSize_.clear();
+  for (size_t i = 0; i < n; ++i)
+    if (usable(sizes[i]) && std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) && std::isfinite(xyz[3 * i + 2]))
+    {
+      cloudXYZ_.insert(cloudXYZ_.end(), xyz + 3 * i, xyz + 3 * i + 3);
+      cloudSize_.push_back(sizes[i]);
+    }
+}
+
+void SizingField::addSizedPoints(const double* xyz, const double* sizes, size_t n)
+{
+  for (size_t i = 0; i < n; ++i)
+    if (usable(sizes[i]) && std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) && std::isfinite(xyz[3 * i + 2]))
+    {
+      extraXYZ_.insert(extraXYZ_.end(), xyz + 3 * i, xyz + 3 * i + 3);
+      extraSize_.push_back(sizes[i]);
+    }
+}
+
+double SizingField::userSize(const double* p) const
+{
+  double h = std::numeric_limits<double>::infinity();
+  if (user_)
+  {
+    const double u = user_(p);
+    if (usable(u))
+      h = u;
+  }
+  if (!cloud_.empty())
+  {
+    const double c = cloud_.evaluate(p);
+    if (usable(c))
+      h = std::min(h, c);
+  }
+  return h;
+}
+
+static Status checkOptions(const SizingOptions& o)
+{
+  if (!std::isfinite(o.gradation) || !(o.maxEdgeLength >= 0) || !std::isfinite(o.maxEdgeLength) ||
+    !(o.minEdgeLength >= 0) || !std::isfinite(o.minEdgeLength) || !(o.scale > 0) || !std::isfinite(o.scale) ||
+    (o.maxEdgeLength > 0 && o.minEdgeLength > o.maxEdgeLength))
+    return Status::failure(ErrorKind::InvalidOption,
+      "Sizing options must be finite, with scale > 0, edge-length bounds >= 0 and min <= max.");
+  return Status::success();
+}
+
+Status SizingField::build(const double* points, int32_t numPoints, const int32_t* triangles, int32_t numTriangles,
+  const SizingOptions& options, Progress* progress)
+{
+  Status st = checkOptions(options);
+  if (!st.ok())
+    return st;
+  options_ = options;
+  uniform_ = 0;
+  if (!cloudXYZ_.empty())
+  {
+    st = cloud_.build(cloudXYZ_.data(), cloudSize_.size(), cloudSize_.data(), progress);
+    if (!st.ok())
+      return st;
+  }
+  const std::vector<double> pdf = pointDistributionFunction(points, numPoints, triangles, numTriangles);
+  std::vector<double> xyz, h;
+  for (int32_t i = 0; i < numPoints; ++i)
+    if (pdf[i] > 0)
+    {
+      xyz.insert(xyz.end(), points + 3 * static_cast<size_t>(i), points + 3 * static_cast<size_t>(i) + 3);
+      h.push_back(pdf[i] * options.scale);
+    }
+  xyz.insert(xyz.end(), extraXYZ_.begin(), extraXYZ_.end());
+  h.insert(h.end(), extraSize_.begin(), extraSize_.end());
+  if (h.empty())
+    return Status::failure(ErrorKind::EmptyInput, "The sizing field has no boundary triangle and no sized point.");
+  for (size_t i = 0; i < h.size(); ++i)
+    h[i] = std::min(h[i], userSize(xyz.data() + 3 * i));
+  st = graded_.build(xyz.data(), h.size(), h.data(), progress);
+  if (!st.ok())
+    return st;
+  if (options.gradation > 1 && !graded_.degenerate())
+    limitGradation(graded_.mesh(), options.gradation - 1, graded_.values());
+  minNode_ = std::numeric_limits<double>::infinity();
+  maxNode_ = 0;
+  for (double v : graded_.values())
+    if (v > 0)
+    {
+      minNode_ = std::min(minNode_, v);
+      maxNode_ = std::max(maxNode_, v);
+    }
+  return Status::success();
+}
+
+Status SizingField::buildUniform(double size, const SizingOptions& options)
+{
+  Status st = checkOptions(options);
+  if (!st.ok())
+    return st;
+  if (!usable(size))
+    return Status::failure(ErrorKind::InvalidOption, "The uniform size must be finite and positive.");
+  options_ = options;
+  if (!cloudXYZ_.empty())
+  {
+    st = cloud_.build(cloudXYZ_.data(), cloudSize_.size(), cloudSize_.data());
+    if (!st.ok())
+      return st;
+  }
+  uniform_ = size;
+  minNode_ = maxNode_ = size;
+  if (!extraXYZ_.empty())
+  {
+    std::vector<double> h(extraSize_);
+    for (double& x : h)
+      x = std::min(x, size);
+    st = graded_.build(extraXYZ_.data(), h.size(), h.data());
+    if (!st.ok())
+      return st;
+    if (options.gradation > 1 && !graded_.degenerate())
+      limitGradation(graded_.mesh(), options.gradation - 1, graded_.values());
+  }
+  return Status::success();
+}
+
+double SizingField::evaluate(const double* p) const
+{
+  double h = std::numeric_limits<double>::infinity();
+  if (uniform_ > 0)
+  {
+    h = uniform_;
+    // Sized points in a uniform field: cones of slope (gradation - 1) around each one.
+    if (!extraXYZ_.empty())
+    {
+      const double slope = options_.gradation > 1 ? options_.gradation - 1 : 0;
+      for (size_t i = 0; i < extraSize_.size(); ++i)
+        if (slope > 0)
+          h = std::min(h, extraSize_[i] + slope * dist(p, extraXYZ_.data() + 3 * i));
+    }
+  }
+  else if (!graded_.empty())
+    h = graded_.evaluate(p);
+  h = std::min(h, userSize(p));
+  if (options_.maxEdgeLength > 0)
+    h = std::min(h, options_.maxEdgeLength);
+  if (options_.minEdgeLength > 0)
+    h = std::max(h, options_.minEdgeLength);
+  return h;
+}
+
+} // namespace volgrid

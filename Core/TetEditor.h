@@ -1,0 +1,159 @@
+// TetEditor: local edits of a ghost-free TetMesh that never touch a constrained face. Shared by the grid
+// control and quality stages (FieldPoints, MeshSmoothing, MeshOptimization); independent of boundary
+// recovery's MeshEditor so that these stages can run on any valid tet mesh (the mesher's output, an
+// existing VolGrid mesh for adaptivity, a convex hull in tests).
+//
+// CONSTRAINED FACES (the boundary the stages must keep)
+//   * every face without a neighbour (kNoNeighbor): the domain boundary after exterior removal, or the
+//     hull of a ghost-free Delaunay mesh;
+//   * every face listed in a FaceConstraints set (sorted vertex triple): interior faces that must stay,
+//     e.g. interfaces between two kept regions (RegionRule::KeepAll), or boundary triangles before
+//     exterior removal.
+//   A vertex is LOCKED (never moved) when it lies on a constrained face, or when the caller locks it.
+//   Edits keep every constrained face (same three vertices; it may end up in a new tet on the same side)
+//   and never remove a vertex.
+//
+// EDITS
+//   replace(): old tets out, new tets in (positively oriented, filling the same region); adjacency is
+//   rebuilt from the old tets' outer faces. It validates that the new tets' faces match the old outer
+//   faces exactly before touching the mesh. New tets inherit the kUser flag bits and the label (optional
+//   per-tet-slot vector) of the first old tet, so region tags survive.
+//   insertPoint(): Bowyer-Watson insertion whose cavity grows by the exact SoS insphere test from the tet
+//   containing the point, never crosses a constrained face, and is shrunk until star-shaped from the point
+//   (every cavity boundary face sees the point strictly positively, exact orient3d), so the new tets are
+//   all positive whether or not the mesh is Delaunay (e.g. after boundary recovery flips).
+#pragma once
+
+#include "TetMesh.h"
+
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace volgrid
+{
+
+// A set of faces, keyed by their sorted vertex triple (orientation ignored).
+class FaceConstraints
+{
+public:
+  void add(int32_t a, int32_t b, int32_t c) { set_.insert(Key(a, b, c)); }
+  bool contains(int32_t a, int32_t b, int32_t c) const { return !set_.empty() && set_.count(Key(a, b, c)) != 0; }
+  size_t size() const { return set_.size(); }
+  bool empty() const { return set_.empty(); }
+  void clear() { set_.clear(); }
+  // Adds 3 x n vertex ids (e.g. the input boundary triangles mapped to mesh vertices).
+  void addTriangles(const int32_t* tris, size_t n);
+
+private:
+  struct Key
+  {
+    int32_t v[3];
+    Key(int32_t a, int32_t b, int32_t c);
+    bool operator==(const Key& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
+  };
+  struct Hash
+  {
+    size_t operator()(const Key& k) const;
+  };
+  std::unordered_set<Key, Hash> set_;
+};
+
+// Quality used by the improvement stages: the minimum over the six edges of the sine of the dihedral
+// angle, negative when the tet is inverted (sign of the volume), 0 when flat or degenerate. It penalises
+// small AND large dihedral angles alike: q >= sin(15 deg) means every dihedral angle is in [15, 165].
+// (Ordering by q is ordering by min(theta_min, 180 - theta_max).)
+double tetSineQuality(const double* a, const double* b, const double* c, const double* d);
+// min(theta_min, 180 - theta_max) in degrees from a sine quality (asin clamp).
+double sineQualityToDegrees(double q);
+
+class TetEditor
+{
+public:
+  // constraints and labels may be null. labels (one entry per tet slot) is resized as tets are created.
+  TetEditor(TetMesh& mesh, const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr);
+
+  TetMesh& mesh;
+  const FaceConstraints* constraints;
+  std::vector<int32_t>* labels;
+
+  // Vertex -> one incident live tet. Rebuilt from scratch; edits keep it up to date.
+  void rebuildVertexMap();
+  int32_t tetOf(int32_t v) const { return v < static_cast<int32_t>(vertTet_.size()) ? vertTet_[v] : -1; }
+
+  bool isConstrainedFace(int32_t t, int i) const
+  {
+    if (mesh.neighborCode(t, i) < 0)
+      return true;
+    if (!constraints || constraints->empty())
+      return false;
+    int32_t f[3];
+    mesh.faceVertices(t, i, f);
+    return constraints->contains(f[0], f[1], f[2]);
+  }
+
+  // Per-vertex lock flags: 1 for vertices of constrained faces and for vertices used by no tet.
+  std::vector<uint8_t> lockedVertices() const;
+
+  // All live tets incident to v.
+  void star(int32_t v, std::vector<int32_t>& out);
+  // The distinct vertices adjacent to v (sharing an edge), from its star.
+  void neighbors(int32_t v, const std::vector<int32_t>& starTets, std::vector<int32_t>& out);
+
+  // The ring around interior edge xy given a live tet t containing it: ring vertices r_i and tets
+  // {x,y,r_i,r_i+1} with orient3d(x,y,r_i,r_i+1) > 0. False when the ring is open (edge on the boundary),
+  // when a face around the edge is constrained, or when the ring has more than maxRing tets.
+  bool edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
+    int maxRing = 64) const;
+
+  // Replace oldTets by newTets (vertex quadruples, positively oriented, filling the same region).
+  // False (mesh untouched) when the faces do not match. created (optional) receives the new tet ids.
+  bool replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
+    std::vector<int32_t>* created = nullptr);
+
+  // Visibility walk from `start` to a tet whose closure contains p; -1 if the walk leaves the mesh
+  // (p outside, or behind a boundary concavity) or does not converge.
+  int32_t locate(const double* p, int32_t start) const;
+  // Walk, then a scan of all tets if the walk failed. -1 when no tet contains p.
+  int32_t locateRobust(const double* p, int32_t start) const;
+
+  enum class InsertStatus
+  {
+    Inserted,
+    NotInside,   // p is outside the start tet's closure, or on a constrained face
+    TooClose,    // a cavity vertex is closer than minDistance
+    NoCavity     // no valid star-shaped cavity (would swallow a vertex); nothing changed
+  };
+  // Insert vertex v (coordinates already in mesh.points, used by no tet) whose position lies in the
+  // closure of tet `start`. Rejects it when a vertex of the cavity (which contains the nearest vertex in a
+  // Delaunay mesh) is closer than minDistance. nearest (optional) receives that distance.
+  InsertStatus insertPoint(int32_t v, int32_t start, double minDistance = 0, double* nearest = nullptr,
+    std::vector<int32_t>* created = nullptr);
+
+  uint64_t replacements = 0;
+
+private:
+  void ensureStamp();
+  uint32_t newStamp();
+  std::vector<int32_t> vertTet_;
+  std::vector<uint32_t> stamp_;
+  uint32_t stampValue_ = 0;
+  // scratch
+  struct FaceEntry
+  {
+    int32_t key[3];
+    int32_t code;  // outer neighbour code (or kNoNeighbor) for outer faces
+    int32_t owner; // -1 for outer faces, else index in newTets
+    int face;
+  };
+  std::vector<FaceEntry> faces_;
+  std::vector<int32_t> cavity_, queue_, bfaces_, vstamp_;
+  std::vector<std::array<int32_t, 4>> newTets_;
+  std::vector<int32_t> outerCode_, outerFace_;
+  std::vector<std::pair<uint64_t, int32_t>> edgeSlots_;
+  void commitInsertion(int32_t v, std::vector<int32_t>* created);
+};
+
+} // namespace volgrid

@@ -1,0 +1,229 @@
+// Smoothing (paper 7.6) and topological optimisation: every tet stays positive (checker), the boundary
+// faces and vertices do not change, and the minimum dihedral angle improves.
+#include "Delaunay.h"
+#include "Enclosures.h"
+#include "FieldPoints.h"
+#include "MeshChecker.h"
+#include "MeshOptimization.h"
+#include "MeshSmoothing.h"
+#include "Predicates.h"
+#include "SizingField.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <vector>
+
+using namespace volgrid;
+
+namespace
+{
+void fieldMesh(EnclosureShape shape, double edge, TetMesh& mesh)
+{
+  SurfaceMesh s;
+  EnclosureOptions o;
+  o.shape = shape;
+  o.targetEdgeLength = edge;
+  ASSERT_TRUE(makeEnclosure(o, s).ok());
+  std::vector<int32_t> map;
+  DelaunayOptions opt;
+  opt.keepGhosts = false;
+  ASSERT_TRUE(buildDelaunay(s.points.data(), s.numberOfPoints(), opt, mesh, map).ok());
+  SizingField f;
+  ASSERT_TRUE(f.build(s.points.data(), s.numberOfPoints(), s.triangles.data(), s.numberOfTriangles(), SizingOptions()).ok());
+  ASSERT_TRUE(insertFieldPoints(mesh, f, FieldPointOptions()).ok());
+}
+
+std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
+{
+  std::set<std::array<int32_t, 3>> faces;
+  m.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      if (m.neighbor(t, i) < 0)
+      {
+        int32_t f[3];
+        m.faceVertices(t, i, f);
+        std::rotate(f, std::min_element(f, f + 3), f + 3);
+        faces.insert({ f[0], f[1], f[2] });
+      }
+  });
+  return faces;
+}
+
+std::vector<double> boundaryCoordinates(const TetMesh& m, const std::set<std::array<int32_t, 3>>& faces)
+{
+  std::vector<double> xyz;
+  for (const auto& f : faces)
+    for (int32_t v : f)
+      xyz.insert(xyz.end(), m.point(v), m.point(v) + 3);
+  return xyz;
+}
+
+MeshCheckOptions noDelaunay()
+{
+  MeshCheckOptions o;
+  o.delaunay = false;
+  return o;
+}
+} // namespace
+
+TEST(MeshOptimization, ImprovesMinDihedralAndKeepsBoundary)
+{
+  for (EnclosureShape shape : { EnclosureShape::Box, EnclosureShape::Sphere })
+  {
+    TetMesh mesh;
+    fieldMesh(shape, 0.15, mesh);
+    const auto faces0 = hullFaces(mesh);
+    const auto xyz0 = boundaryCoordinates(mesh, faces0);
+    const int32_t nv = mesh.numVertices();
+    OptimizationOptions oo;
+    OptimizationReport rep;
+    ASSERT_TRUE(optimizeMesh(mesh, nullptr, nullptr, nullptr, oo, nullptr, &rep).ok());
+    const MeshCheckReport check = checkMesh(mesh, noDelaunay());
+    EXPECT_TRUE(check.valid) << check.summary();
+    EXPECT_EQ(hullFaces(mesh), faces0);
+    EXPECT_EQ(boundaryCoordinates(mesh, faces0), xyz0);
+    EXPECT_EQ(mesh.numVertices(), nv);
+    EXPECT_LT(rep.before.minDihedral, 10.0); // the raw mesh has slivers
+    EXPECT_GT(rep.after.minDihedral, rep.before.minDihedral);
+    EXPECT_GE(rep.after.minDihedral, 15.0);
+    EXPECT_LE(rep.after.maxDihedral, 165.0);
+    EXPECT_EQ(rep.after.inverted, 0);
+    EXPECT_EQ(rep.after.below10, 0);
+    EXPECT_GT(rep.edgeRemovals + rep.flips23, 0);
+  }
+}
+
+TEST(MeshOptimization, SmoothingOnlyMovesInteriorVerticesAndNeverWorsens)
+{
+  TetMesh mesh;
+  fieldMesh(EnclosureShape::Sphere, 0.2, mesh);
+  const auto faces0 = hullFaces(mesh);
+  const auto xyz0 = boundaryCoordinates(mesh, faces0);
+  // Lock one interior vertex explicitly too.
+  std::vector<uint8_t> locked(static_cast<size_t>(mesh.numVertices()), 0);
+  const int32_t pinned = mesh.numVertices() - 1;
+  locked[pinned] = 1;
+  const std::vector<double> pinnedXYZ(mesh.point(pinned), mesh.point(pinned) + 3);
+  // Star minimum of every vertex before.
+  TetEditor editor(mesh);
+  auto starMin = [&](int32_t v) {
+    std::vector<int32_t> star;
+    editor.star(v, star);
+    double q = 2;
+    for (int32_t t : star)
+    {
+      const int32_t* w = mesh.vertices(t);
+      q = std::min(q, tetSineQuality(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3])));
+    }
+    return q;
+  };
+  double globalBefore = 2;
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    globalBefore = std::min(globalBefore, starMin(v));
+  SmoothingOptions so;
+  SmoothingReport rep;
+  ASSERT_TRUE(smoothMesh(mesh, nullptr, &locked, so, nullptr, &rep).ok());
+  EXPECT_GT(rep.laplacianMoves, 0);
+  EXPECT_GT(rep.optimizedMoves, 0);
+  const MeshCheckReport check = checkMesh(mesh, noDelaunay());
+  EXPECT_TRUE(check.valid) << check.summary();
+  EXPECT_EQ(hullFaces(mesh), faces0);
+  EXPECT_EQ(boundaryCoordinates(mesh, faces0), xyz0);
+  EXPECT_EQ(std::vector<double>(mesh.point(pinned), mesh.point(pinned) + 3), pinnedXYZ);
+  double globalAfter = 2;
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    globalAfter = std::min(globalAfter, starMin(v));
+  EXPECT_GE(globalAfter, globalBefore);
+}
+
+TEST(MeshOptimization, ConstrainedInteriorFacesSurviveAndTheirVerticesStay)
+{
+  TetMesh mesh;
+  fieldMesh(EnclosureShape::Box, 0.2, mesh);
+  FaceConstraints fc;
+  std::vector<std::array<int32_t, 3>> frozen;
+  mesh.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      if (mesh.neighbor(t, i) > t && t % 11 == 0)
+      {
+        int32_t f[3];
+        mesh.faceVertices(t, i, f);
+        fc.add(f[0], f[1], f[2]);
+        std::sort(f, f + 3);
+        frozen.push_back({ f[0], f[1], f[2] });
+      }
+  });
+  std::vector<double> xyz0;
+  for (const auto& f : frozen)
+    for (int32_t v : f)
+      xyz0.insert(xyz0.end(), mesh.point(v), mesh.point(v) + 3);
+  std::vector<int32_t> labels(static_cast<size_t>(mesh.tetCapacity()), 7);
+  OptimizationReport rep;
+  ASSERT_TRUE(optimizeMesh(mesh, &fc, nullptr, &labels, OptimizationOptions(), nullptr, &rep).ok());
+  EXPECT_GT(rep.after.minDihedral, rep.before.minDihedral);
+  std::set<std::array<int32_t, 3>> faces;
+  mesh.forEachTet([&](int32_t t) {
+    EXPECT_EQ(labels[t], 7);
+    for (int i = 0; i < 4; ++i)
+    {
+      int32_t f[3];
+      mesh.faceVertices(t, i, f);
+      std::sort(f, f + 3);
+      faces.insert({ f[0], f[1], f[2] });
+    }
+  });
+  for (const auto& f : frozen)
+    EXPECT_TRUE(faces.count(f));
+  std::vector<double> xyz1;
+  for (const auto& f : frozen)
+    for (int32_t v : f)
+      xyz1.insert(xyz1.end(), mesh.point(v), mesh.point(v) + 3);
+  EXPECT_EQ(xyz1, xyz0);
+  const MeshCheckReport check = checkMesh(mesh, noDelaunay());
+  EXPECT_TRUE(check.valid) << check.summary();
+}
+
+TEST(MeshOptimization, ThreeTwoAndTwoThreeFlips)
+{
+  // Three tets around the edge xy of a flat triangle ring: the 3-2 flip replaces them by two.
+  TetMesh m;
+  const double pts[5][3] = { { 0, 0, 1 }, { 0, 0, -1 }, { 1, 0, 0 }, { -0.5, 0.866, 0 }, { -0.5, -0.866, 0 } };
+  for (const auto& p : pts)
+    m.addPoint(p);
+  // x = 0 (top), y = 1 (bottom), ring 2,3,4; orient(x,y,r_i,r_i+1) > 0 needs the ring clockwise from x.
+  const int32_t x = 0, y = 1;
+  std::vector<std::array<int32_t, 4>> tets;
+  const int32_t ring[3] = { 2, 4, 3 };
+  for (int i = 0; i < 3; ++i)
+    tets.push_back({ x, y, ring[i], ring[(i + 1) % 3] });
+  for (const auto& q : tets)
+    ASSERT_GT(predicates::orient3d(m.point(q[0]), m.point(q[1]), m.point(q[2]), m.point(q[3])), 0);
+  std::vector<int32_t> ids;
+  for (const auto& q : tets)
+    ids.push_back(m.newTet(q[0], q[1], q[2], q[3]));
+  // Link the faces around the edge: tet i's face opposite ring[i] is shared with tet i+1's face opposite ring[i+2].
+  for (int i = 0; i < 3; ++i)
+  {
+    const int32_t a = ids[i], b = ids[(i + 1) % 3];
+    m.link(a, 2, b, 3);
+  }
+  ASSERT_TRUE(checkMesh(m, noDelaunay()).valid) << checkMesh(m, noDelaunay()).summary();
+  TetEditor editor(m);
+  std::vector<int32_t> created;
+  ASSERT_TRUE(tryEdgeRemoval(editor, ids[0], x, y, 9, &created));
+  EXPECT_EQ(created.size(), 2u);
+  EXPECT_EQ(m.numTets(), 2);
+  EXPECT_TRUE(checkMesh(m, noDelaunay()).valid) << checkMesh(m, noDelaunay()).summary();
+  // The two tets are better than the three: the reverse 2-3 flip does not improve, so it is refused.
+  const int32_t t = created[0];
+  int shared = -1;
+  for (int i = 0; i < 4; ++i)
+    if (m.neighbor(t, i) >= 0)
+      shared = i;
+  ASSERT_GE(shared, 0);
+  EXPECT_FALSE(tryFlip23(editor, t, shared, nullptr));
+  EXPECT_EQ(m.numTets(), 2);
+}
