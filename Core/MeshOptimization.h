@@ -8,10 +8,8 @@
 //        - edge removal on each of its six edges: the ring of n tets around an interior edge is replaced by
 //          the best triangulation of the ring polygon joined to the edge's two ends (2n-4 tets; n = 3 is the
 //          3-2 flip), found by dynamic programming over the polygon's triangulations (max-min quality);
-//        - 2-3 flips of its four faces;
-//        - multi-face removal (the inverse of edge removal: the stack of faces between two vertices x, y
-//          sandwiched by the tet's faces is replaced by the ring around the new edge xy) when the tet's
-//          face is part of such a stack (the 2-3 flip is its smallest case);
+//        - 2-3 flips of its four faces (the smallest multi-face removal; general multi-face removal is
+//          not implemented yet);
 //      tets created by a successful operation are examined in the same pass when still below target;
 //   2. smoothing (MeshSmoothing.h) of the unlocked vertices of the tets still below target.
 // Stops when nothing changed in a pass, every tet reaches the target, or after maxPasses.
@@ -43,7 +41,6 @@ struct OptimizationOptions
   bool smoothing = true;
   bool flips = true;           // 2-3 flips
   bool edgeRemoval = true;     // includes 3-2 flips
-  bool multiFaceRemoval = true;
   int maxRing = 9;             // largest edge ring considered by edge removal
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
 };
@@ -68,7 +65,6 @@ struct OptimizationReport
   int64_t flips23 = 0;
   int64_t edgeRemovals = 0; // of which 3-2 flips:
   int64_t flips32 = 0;
-  int64_t multiFaceRemovals = 0;
   int64_t smoothMoves = 0;
   int64_t belowTargetBefore = 0, belowTargetAfter = 0;
   double seconds = 0;

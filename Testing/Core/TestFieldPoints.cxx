@@ -289,3 +289,41 @@ TEST(FieldPoints, MaxVolumeAndOptionErrors)
   ASSERT_TRUE(buildDelaunay(a.surface.points.data(), a.surface.numberOfPoints(), DelaunayOptions(), ghosts, map).ok());
   EXPECT_EQ(insertFieldPoints(ghosts, a.sizing, FieldPointOptions()).kind, ErrorKind::InvalidOption);
 }
+
+TEST(FieldPoints, AdaptivityRefinesWhereTheTargetIsSmaller)
+{
+  // Paper section 4: an existing mesh plus a target size per vertex (e.g. from a solver's error estimate)
+  // -> the vertices and the array become the sizing field's background cloud; field points refine the
+  // mesh where the target is smaller than the current spacing, and nowhere else; the boundary is kept.
+  Domain d;
+  makeDomain(d, EnclosureShape::Box, 0.12);
+  ASSERT_TRUE(insertFieldPoints(d.mesh, d.sizing, FieldPointOptions()).ok());
+  const auto faces0 = hullFaces(d.mesh);
+  auto inBox = [](const double* p) { return p[0] > 0 && p[1] > 0 && p[2] > 0; }; // one octant
+  std::vector<double> target(static_cast<size_t>(d.mesh.numVertices()));
+  for (int32_t v = 0; v < d.mesh.numVertices(); ++v)
+    target[v] = d.sizing.evaluate(d.mesh.point(v)) * (inBox(d.mesh.point(v)) ? 0.5 : 1.0);
+  auto countIn = [&](bool inside) {
+    int64_t n = 0;
+    for (int32_t v = 0; v < d.mesh.numVertices(); ++v)
+    {
+      const double* p = d.mesh.point(v);
+      const bool deep = inside ? (p[0] > 0.1 && p[1] > 0.1 && p[2] > 0.1) : (p[0] < -0.1 && p[1] < -0.1);
+      n += deep;
+    }
+    return n;
+  };
+  const int64_t inBefore = countIn(true), outBefore = countIn(false);
+  SizingField adapt;
+  adapt.setBackgroundCloud(d.mesh.points.data(), target.data(), target.size());
+  SizingOptions so;
+  ASSERT_TRUE(adapt.buildUniform(1e30, so).ok());
+  FieldPointReport rep;
+  ASSERT_TRUE(insertFieldPoints(d.mesh, adapt, FieldPointOptions(), nullptr, nullptr, nullptr, nullptr, &rep).ok());
+  const int64_t inAfter = countIn(true), outAfter = countIn(false);
+  EXPECT_GT(inAfter, 4 * inBefore); // half the size: about eight times the points
+  EXPECT_LT(outAfter, outBefore + outBefore / 10 + 5);
+  EXPECT_EQ(hullFaces(d.mesh), faces0);
+  const MeshCheckReport check = checkMesh(d.mesh);
+  EXPECT_TRUE(check.valid) << check.summary();
+}
