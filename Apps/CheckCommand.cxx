@@ -1,4 +1,4 @@
-// volgrid check SURFACE [--json] [--no-intersections]
+// volgrid check SURFACE [--json] [--no-intersections] [--keep-points]
 // Diagnoses a surface (the checks the mesher runs, with exact predicates) without changing it. Prints the
 // report, or with --json one JSON line of counts. Exit code: 0 when the surface is clean (closed, manifold,
 // consistently oriented and oriented for its domain, no degenerate/duplicate/intersecting triangles), 1
@@ -16,8 +16,11 @@ namespace
 {
 const char* kUsage =
   "usage: volgrid check SURFACE.{off,mesh,poly,smesh,msh,stl,obj,ply,vtp,vtk} [--json] [--no-intersections]\n"
+  "                    [--keep-points]\n"
   "  Diagnoses the surface: open and non-manifold edges, orientation, degenerate, duplicate and\n"
-  "  self-intersecting triangles, shells and their nesting. Exit 0 when clean, 1 with defects.\n";
+  "  self-intersecting triangles, shells and their nesting. Exactly coincident points are merged first\n"
+  "  (as the mesher does); --keep-points keeps the file's point numbering (STL, OBJ merged).\n"
+  "  Exit 0 when clean, 1 with defects or an unreadable file, 2 for bad arguments.\n";
 
 int usage(const char* problem)
 {
@@ -48,6 +51,7 @@ int runCheckCommand(int argc, char** argv)
   std::string path;
   bool json = false;
   bool intersections = true;
+  bool merge = true;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -55,6 +59,8 @@ int runCheckCommand(int argc, char** argv)
       json = true;
     else if (a == "--no-intersections")
       intersections = false;
+    else if (a == "--keep-points")
+      merge = false;
     else if (a == "-h" || a == "--help")
     {
       std::fputs(kUsage, stdout);
@@ -73,7 +79,7 @@ int runCheckCommand(int argc, char** argv)
   volgrid::cli::Stopwatch clock;
   volgrid::SurfaceMesh mesh;
   std::string info;
-  const volgrid::Status read = volgrid::readAnySurface(path, mesh, info);
+  const volgrid::Status read = volgrid::readAnySurface(path, mesh, info, merge);
   if (!read.ok())
   {
     std::fprintf(stderr, "volgrid check: %s\n", read.message.c_str());
@@ -84,7 +90,8 @@ int runCheckCommand(int argc, char** argv)
   const volgrid::SurfaceCheckReport r = volgrid::checkSurface(mesh, options);
   const volgrid::Status status = volgrid::surfaceStatus(r);
   const int64_t wrongWay = misoriented(r);
-  const bool clean = status.ok() && r.consistentlyOriented() && wrongWay == 0 && r.nonManifoldVertices == 0;
+  const bool clean = status.ok() && r.consistentlyOriented() && wrongWay == 0 && r.nonManifoldVertices == 0 &&
+    r.coincidentPoints == 0;
 
   if (json)
   {
@@ -92,7 +99,7 @@ int runCheckCommand(int argc, char** argv)
                 "\"boundary_edges\":%lld,\"boundary_loops\":%lld,\"non_manifold_edges\":%lld,"
                 "\"non_manifold_vertices\":%lld,\"inconsistent_edges\":%lld,\"degenerate_triangles\":%lld,"
                 "\"duplicate_triangles\":%lld,\"self_intersecting_pairs\":%lld,\"shell_intersecting_pairs\":%lld,"
-                "\"inward_shells\":%d,\"misoriented_shells\":%lld,\"unreferenced_points\":%lld,"
+                "\"inward_shells\":%d,\"misoriented_shells\":%lld,\"unreferenced_points\":%lld,\"coincident_points\":%lld,"
                 "\"first_boundary_edge_triangles\":%s,\"first_non_manifold_edge_triangles\":%s,"
                 "\"first_self_intersecting_pairs\":%s,\"meshable\":%s,\"clean\":%s,\"status\":%s,\"seconds\":%.3f}\n",
       volgrid::cli::jsonString(path).c_str(), volgrid::cli::jsonString(info).c_str(), r.points, r.triangles,
@@ -103,6 +110,7 @@ int runCheckCommand(int argc, char** argv)
       intersections ? static_cast<long long>(r.selfIntersectingPairs) : -1LL,
       intersections ? static_cast<long long>(r.shellIntersectingPairs) : -1LL, r.inwardShells(),
       static_cast<long long>(wrongWay), static_cast<long long>(r.unreferencedPoints),
+      static_cast<long long>(r.coincidentPoints),
       ids(r.firstBoundaryEdgeTriangles).c_str(), ids(r.firstNonManifoldEdgeTriangles).c_str(),
       ids(r.firstSelfIntersectingPairs).c_str(), r.meshable() ? "true" : "false", clean ? "true" : "false",
       volgrid::cli::jsonString(status.ok() ? "meshable" : status.message).c_str(), clock.seconds());

@@ -150,6 +150,11 @@ bool surfaceFileSupported(const std::string& path)
 
 Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& info)
 {
+  return readAnySurface(path, mesh, info, true);
+}
+
+Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& info, bool mergeCoincidentPoints)
+{
   mesh.clear();
   info.clear();
   if (!surfaceFileSupported(path))
@@ -164,7 +169,9 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
   if (surfaceReaderSupports(path))
   {
     SurfaceReadInfo readInfo;
-    const Status status = readSurface(path, mesh, &readInfo);
+    SurfaceReadOptions options;
+    options.mergeCoincidentPoints = mergeCoincidentPoints;
+    const Status status = readSurface(path, mesh, &readInfo, options);
     if (!status.ok())
       return status;
     std::ostringstream os;
@@ -184,9 +191,14 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
     const Status status = readWithVtk(path, surfaceFileExtension(path), mesh, info);
     if (!status.ok())
       return status;
-    const MergeResult merged = mergeCoincidentPoints(mesh);
-    if (merged.mergedPoints)
-      info += ", " + std::to_string(merged.mergedPoints) + " coincident points merged";
+    // vtkOBJReader duplicates a point for each texture coordinate or normal it is used with: merging is
+    // needed to recover the file's connectivity.
+    if (mergeCoincidentPoints || surfaceFileExtension(path) == "obj")
+    {
+      const MergeResult merged = volgrid::mergeCoincidentPoints(mesh);
+      if (merged.mergedPoints)
+        info += ", " + std::to_string(merged.mergedPoints) + " coincident points merged";
+    }
   }
   if (mesh.numberOfTriangles() == 0)
   {

@@ -18,6 +18,9 @@ namespace volgrid
 // Polygons and strips are triangulated and exactly coincident points merged. `info` receives a one-line
 // description (format, points, triangles, warnings). Failures name the file and the problem.
 Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& info);
+// The same; with mergeCoincidentPoints false the file's own point numbering is kept (STL, which has no
+// numbering, and OBJ, whose VTK reader splits points by texture coordinate, are still merged).
+Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& info, bool mergeCoincidentPoints);
 
 // True when readAnySurface knows the extension.
 bool surfaceFileSupported(const std::string& path);
