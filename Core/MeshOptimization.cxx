@@ -131,8 +131,7 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
   for (const auto& q : s.newTets)
     if (!positive(m, q))
       return false;
-  const std::vector<int32_t> old(s.tets);
-  return editor.replace(old, s.newTets, created);
+  return editor.replace(s.tets, s.newTets, created); // replace() does not touch this scratch
 }
 
 bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created)
@@ -159,9 +158,9 @@ bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* cre
   for (const auto& q : nt)
     if (!positive(m, q))
       return false;
-  const std::vector<int32_t> old = { t, u };
-  const std::vector<std::array<int32_t, 4>> copy(nt);
-  return editor.replace(old, copy, created);
+  std::vector<int32_t>& old = scratch().tets;
+  old.assign({ t, u });
+  return editor.replace(old, nt, created);
 }
 
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
