@@ -8,6 +8,7 @@
 #include "SurfaceMesh.h"
 #include "SurfaceReader.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
@@ -22,12 +23,15 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkStringArray.h"
+#include "vtkStripper.h"
 #include "vtkTable.h"
 #include "vtkTriangleFilter.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <map>
 #include <string>
 
@@ -450,4 +454,52 @@ TEST(VolGridSurfacePrep, OptionsAreClampedAndTheSummaryTableIsComplete)
   EXPECT_NE(table->GetFieldData()->GetArray("Meshable"), nullptr);
   EXPECT_NE(run->GetOutput()->GetFieldData()->GetAbstractArray("SurfacePrepReport"), nullptr);
   EXPECT_TRUE(run->GetMeshable());
+}
+
+TEST(VolGridSurfacePrep, QuadsAndStripsAreTriangulatedAndProgressIsReported)
+{
+  // vtkCubeSource: six quads, 24 points (three per corner): 12 triangles, welded closed.
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(-1, 2, -1, 2, -1, 2);
+  // Triangle strips of a sphere.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(10, 0, 0);
+  vtkNew<vtkStripper> strips;
+  strips->SetInputConnection(sphere->GetOutputPort());
+  strips->Update();
+  ASSERT_GT(strips->GetOutput()->GetNumberOfStrips(), 0);
+
+  vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->AddInputConnection(cube->GetOutputPort());
+  prep->AddInputConnection(strips->GetOutputPort());
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&progress);
+  observer->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    static_cast<std::vector<double>*>(clientData)->push_back(*static_cast<double*>(callData));
+  });
+  prep->AddObserver(vtkCommand::ProgressEvent, observer);
+  prep->Update();
+  vtkPolyData* out = prep->GetOutput();
+  expectClosedManifold(out, 2);
+  sphere->Update();
+  const std::map<int, vtkIdType> patches = patchCounts(out);
+  EXPECT_EQ(patches.at(0), 12);
+  EXPECT_EQ(patches.at(1), sphere->GetOutput()->GetNumberOfCells());
+  EXPECT_NEAR(signedVolume(out), 27.0 + 0.0, 0.6); // the cube plus a small sphere (volume < 0.53)
+  ASSERT_FALSE(progress.empty());
+  EXPECT_EQ(progress.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+
+  // Abort at the first progress report: the filter stops and leaves the output empty.
+  vtkNew<vtkVolGridSurfacePrep> abort;
+  abort->AddInputConnection(cube->GetOutputPort());
+  abort->AddInputConnection(strips->GetOutputPort());
+  vtkNew<vtkCallbackCommand> stopper;
+  stopper->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
+    static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+  });
+  abort->AddObserver(vtkCommand::ProgressEvent, stopper);
+  abort->Update();
+  EXPECT_EQ(abort->GetOutput()->GetNumberOfCells(), 0);
 }
