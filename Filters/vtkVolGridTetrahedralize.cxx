@@ -2,25 +2,36 @@
 
 #include "VolGridConversion.h"
 #include "VolGridFilterProgress.h"
+#include "VolGridSurfaceConversion.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 #include "Delaunay.h"
 #include "MeshChecker.h"
+#include "Mesher.h"
+#include "SurfaceMesh.h"
 
 #include <cstdint>
 #include <vector>
 
 vtkStandardNewMacro(vtkVolGridTetrahedralize);
 
-vtkVolGridTetrahedralize::vtkVolGridTetrahedralize() = default;
+vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
+{
+  this->SetNumberOfOutputPorts(2);
+}
 
 int vtkVolGridTetrahedralize::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -28,15 +39,176 @@ int vtkVolGridTetrahedralize::FillInputPortInformation(int, vtkInformation* info
   return 1;
 }
 
+int vtkVolGridTetrahedralize::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkPolyData");
+  return 1;
+}
+
+namespace
+{
+// True when the data set has cells a surface is made of (triangles, polygons, strips).
+bool hasSurfaceCells(vtkPointSet* input)
+{
+  if (auto* poly = vtkPolyData::SafeDownCast(input))
+  {
+    return poly->GetNumberOfPolys() + poly->GetNumberOfStrips() > 0;
+  }
+  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+  {
+    const int type = input->GetCellType(c);
+    if (type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_POLYGON || type == VTK_TRIANGLE_STRIP)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int32_t>& values)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  return array;
+}
+} // namespace
 
 int vtkVolGridTetrahedralize::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   output->Initialize();
-  const vtkIdType numInput = input ? input->GetNumberOfPoints() : 0;
+  boundary->Initialize();
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: the input is empty (no points).");
+    return 0;
+  }
+  const bool surface = this->InputMode == SURFACE ||
+    (this->InputMode == AUTOMATIC && hasSurfaceCells(input));
+  return surface ? this->MeshSurface(input, output, boundary)
+                 : this->TetrahedralizePoints(input, output);
+}
 
+int vtkVolGridTetrahedralize::MeshSurface(
+  vtkPointSet* input, vtkUnstructuredGrid* output, vtkPolyData* boundary)
+{
+  volgrid::SurfaceMesh surface;
+  VolGridSurfaceConversionInfo converted;
+  if (!VolGridPolyDataToSurfaceMesh(input, surface, &converted))
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: the input has no triangles or polygons to mesh.");
+    return 0;
+  }
+  if (converted.polygons + converted.strips > 0)
+  {
+    vtkWarningMacro(<< converted.polygons << " polygon(s) and " << converted.strips
+                    << " strip(s) were triangulated before meshing.");
+  }
+  if (converted.skippedCells + converted.invalidCells > 0)
+  {
+    vtkWarningMacro(<< converted.skippedCells << " cell(s) that are not surface cells and "
+                    << converted.invalidCells << " cell(s) with invalid point ids were ignored.");
+  }
+
+  volgrid::MesherOptions options;
+  options.regionRule = this->RegionRule == ORIENTATION ? volgrid::RegionRule::Orientation
+    : this->RegionRule == KEEP_ALL                     ? volgrid::RegionRule::KeepAll
+                                                       : volgrid::RegionRule::EvenOdd;
+  options.allowSteinerPoints = this->AllowSteinerPoints;
+  options.verify = this->CheckOutput;
+  volgrid::MesherResult result;
+  VolGridFilterProgress progress(this);
+  const volgrid::Status status = volgrid::meshSurface(surface, options, result, &progress);
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: " << status.message);
+    return 0;
+  }
+  for (const std::string& warning : result.warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+
+  // Points: result.points in order (input points after merging first, then added points).
+  const vtkIdType numPoints = static_cast<vtkIdType>(result.points.size() / 3);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    points->SetPoint(i, result.points.data() + 3 * i);
+  }
+  auto cells = [](const std::vector<int32_t>& corners, int perCell) {
+    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    const vtkIdType n = static_cast<vtkIdType>(corners.size() / perCell);
+    offsets->SetNumberOfValues(n + 1);
+    connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
+    for (vtkIdType c = 0; c <= n; ++c)
+      offsets->SetValue(c, perCell * c);
+    for (size_t k = 0; k < corners.size(); ++k)
+      connectivity->SetValue(static_cast<vtkIdType>(k), corners[k]);
+    auto array = vtkSmartPointer<vtkCellArray>::New();
+    array->SetData(offsets, connectivity);
+    return array;
+  };
+  output->SetPoints(points);
+  output->SetCells(VTK_TETRA, cells(result.tets, 4));
+  output->GetCellData()->AddArray(intArray("Region", result.tetRegion));
+
+  // Point data of the input points (the first input point of each merged location); added points get
+  // the arrays' null values.
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  std::vector<vtkIdType> outputToInput(static_cast<size_t>(numPoints), -1);
+  for (size_t i = 0; i < result.inputToOutputPoint.size(); ++i)
+  {
+    const int32_t o = result.inputToOutputPoint[i];
+    if (o >= 0 && outputToInput[o] < 0)
+      outputToInput[o] = static_cast<vtkIdType>(i);
+  }
+  outPD->CopyAllocate(inPD, numPoints);
+  for (vtkIdType o = 0; o < numPoints; ++o)
+  {
+    if (outputToInput[o] >= 0)
+      outPD->CopyData(inPD, outputToInput[o], o);
+    else
+      outPD->NullData(o);
+  }
+
+  // Port 1: the boundary triangles on the same points, with PatchId and the input's cell data.
+  boundary->SetPoints(points);
+  boundary->SetPolys(cells(result.boundaryTriangles, 3));
+  boundary->GetPointData()->ShallowCopy(outPD);
+  const bool allTriangles = converted.polygons + converted.strips + converted.skippedCells +
+      converted.invalidCells == 0 &&
+    input->GetNumberOfCells() == surface.numberOfTriangles();
+  if (allTriangles)
+  {
+    vtkCellData* inCD = input->GetCellData();
+    vtkCellData* outCD = boundary->GetCellData();
+    const vtkIdType numBoundary = static_cast<vtkIdType>(result.boundaryInputTriangle.size());
+    outCD->CopyAllocate(inCD, numBoundary);
+    for (vtkIdType b = 0; b < numBoundary; ++b)
+      outCD->CopyData(inCD, result.boundaryInputTriangle[b], b);
+  }
+  boundary->GetCellData()->RemoveArray("PatchId");
+  boundary->GetCellData()->AddArray(intArray("PatchId", result.boundaryPatch));
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+int vtkVolGridTetrahedralize::TetrahedralizePoints(vtkPointSet* input, vtkUnstructuredGrid* output)
+{
+  const vtkIdType numInput = input->GetNumberOfPoints();
   std::vector<double> xyz(3 * static_cast<size_t>(numInput));
   for (vtkIdType i = 0; i < numInput; ++i)
   {
@@ -118,6 +290,9 @@ int vtkVolGridTetrahedralize::RequestData(
 void vtkVolGridTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "InputMode: " << this->InputMode << "\n";
+  os << indent << "RegionRule: " << this->RegionRule << "\n";
+  os << indent << "AllowSteinerPoints: " << this->AllowSteinerPoints << "\n";
   os << indent << "SpatialSort: " << this->SpatialSort << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "CheckOutput: " << this->CheckOutput << "\n";
