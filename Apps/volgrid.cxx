@@ -17,6 +17,8 @@ struct SubCommand
 const SubCommand kCommands[] = {
   { "delaunay", runDelaunayCommand,
     "INPUT.node | --random N [--seed S]  [--check] [--json] [--out FILE.vtu]: Delaunay tetrahedralization" },
+  { "mesh", runMeshCommand,
+    "SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check] [--regions ...]: boundary-conforming volume mesh" },
   { "quality", runQualityCommand, "MESH.vtu [--json] [--bins N]: volume or surface grid quality summary" },
   { "prep", runPrepCommand,
     "IN... OUT [--enclosure box|sphere|...] [--enclosure-scale S] [--json]: repair, orient, enclose surfaces" },

@@ -2,11 +2,15 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
+#include "vtkCellData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkPolyData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "Mesher.h"
 #include "TetMesh.h"
 
 void VolGridFillUnstructuredGrid(
@@ -45,4 +49,57 @@ void VolGridFillUnstructuredGrid(
   cells->SetData(offsets, connectivity);
   grid->SetPoints(points);
   grid->SetCells(VTK_TETRA, cells);
+}
+
+namespace
+{
+vtkSmartPointer<vtkCellArray> fixedSizeCells(const std::vector<int32_t>& corners, int perCell)
+{
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  const vtkIdType n = static_cast<vtkIdType>(corners.size() / perCell);
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
+  vtkIdType* offset = offsets->GetPointer(0);
+  vtkIdType* corner = connectivity->GetPointer(0);
+  for (vtkIdType c = 0; c <= n; ++c)
+    offset[c] = perCell * c;
+  for (size_t k = 0; k < corners.size(); ++k)
+    corner[k] = corners[k];
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int32_t>& values)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (size_t i = 0; i < values.size(); ++i)
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  return array;
+}
+} // namespace
+
+void VolGridFillFromMesherResult(
+  const volgrid::MesherResult& result, vtkUnstructuredGrid* volume, vtkPolyData* boundary)
+{
+  const vtkIdType numPoints = static_cast<vtkIdType>(result.points.size() / 3);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+    points->SetPoint(i, result.points.data() + 3 * i);
+  volume->SetPoints(points);
+  volume->SetCells(VTK_TETRA, fixedSizeCells(result.tets, 4));
+  volume->GetCellData()->RemoveArray("Region");
+  volume->GetCellData()->AddArray(intArray("Region", result.tetRegion));
+  if (boundary)
+  {
+    boundary->SetPoints(points);
+    boundary->SetPolys(fixedSizeCells(result.boundaryTriangles, 3));
+    boundary->GetCellData()->RemoveArray("PatchId");
+    boundary->GetCellData()->AddArray(intArray("PatchId", result.boundaryPatch));
+  }
 }

@@ -8,10 +8,12 @@
 #include <cstdint>
 #include <vector>
 
+class vtkPolyData;
 class vtkUnstructuredGrid;
 namespace volgrid
 {
 class TetMesh;
+struct MesherResult;
 }
 
 // Fills `grid` with the finite tets of `mesh` (VTK_TETRA cells, same vertex order, so positive volume)
@@ -19,5 +21,11 @@ class TetMesh;
 // used by a tet must be listed. Replaces the grid's points and cells.
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillUnstructuredGrid(
   const volgrid::TetMesh& mesh, const std::vector<int32_t>& keptVertices, vtkUnstructuredGrid* grid);
+
+// Fills `volume` with the mesher's points and tets (cell array Region) and `boundary` (may be null) with
+// the same points and the boundary triangles (cell array PatchId). Replaces their points, cells and the
+// named arrays; other arrays are left to the caller.
+VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromMesherResult(
+  const volgrid::MesherResult& result, vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 
 #endif

@@ -9,7 +9,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
+#include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -65,17 +65,6 @@ bool hasSurfaceCells(vtkPointSet* input)
   return false;
 }
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int32_t>& values)
-{
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (size_t i = 0; i < values.size(); ++i)
-  {
-    array->SetValue(static_cast<vtkIdType>(i), values[i]);
-  }
-  return array;
-}
 } // namespace
 
 int vtkVolGridTetrahedralize::RequestData(
@@ -137,32 +126,8 @@ int vtkVolGridTetrahedralize::MeshSurface(
     vtkWarningMacro(<< warning);
   }
 
-  // Points: result.points in order (input points after merging first, then added points).
-  const vtkIdType numPoints = static_cast<vtkIdType>(result.points.size() / 3);
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numPoints);
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
-    points->SetPoint(i, result.points.data() + 3 * i);
-  }
-  auto cells = [](const std::vector<int32_t>& corners, int perCell) {
-    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-    const vtkIdType n = static_cast<vtkIdType>(corners.size() / perCell);
-    offsets->SetNumberOfValues(n + 1);
-    connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
-    for (vtkIdType c = 0; c <= n; ++c)
-      offsets->SetValue(c, perCell * c);
-    for (size_t k = 0; k < corners.size(); ++k)
-      connectivity->SetValue(static_cast<vtkIdType>(k), corners[k]);
-    auto array = vtkSmartPointer<vtkCellArray>::New();
-    array->SetData(offsets, connectivity);
-    return array;
-  };
-  output->SetPoints(points);
-  output->SetCells(VTK_TETRA, cells(result.tets, 4));
-  output->GetCellData()->AddArray(intArray("Region", result.tetRegion));
+  VolGridFillFromMesherResult(result, output, boundary);
+  const vtkIdType numPoints = output->GetNumberOfPoints();
 
   // Point data of the input points (the first input point of each merged location); added points get
   // the arrays' null values.
@@ -184,9 +149,7 @@ int vtkVolGridTetrahedralize::MeshSurface(
       outPD->NullData(o);
   }
 
-  // Port 1: the boundary triangles on the same points, with PatchId and the input's cell data.
-  boundary->SetPoints(points);
-  boundary->SetPolys(cells(result.boundaryTriangles, 3));
+  // Port 1 (boundary triangles with PatchId): the point data, and the input's cell data.
   boundary->GetPointData()->ShallowCopy(outPD);
   const bool allTriangles = converted.polygons + converted.strips + converted.skippedCells +
       converted.invalidCells == 0 &&
@@ -196,12 +159,14 @@ int vtkVolGridTetrahedralize::MeshSurface(
     vtkCellData* inCD = input->GetCellData();
     vtkCellData* outCD = boundary->GetCellData();
     const vtkIdType numBoundary = static_cast<vtkIdType>(result.boundaryInputTriangle.size());
+    // CopyAllocate clears the output's arrays: keep the mesher's PatchId aside.
+    vtkSmartPointer<vtkDataArray> patch = outCD->GetArray("PatchId");
     outCD->CopyAllocate(inCD, numBoundary);
     for (vtkIdType b = 0; b < numBoundary; ++b)
       outCD->CopyData(inCD, result.boundaryInputTriangle[b], b);
+    outCD->RemoveArray("PatchId");
+    outCD->AddArray(patch);
   }
-  boundary->GetCellData()->RemoveArray("PatchId");
-  boundary->GetCellData()->AddArray(intArray("PatchId", result.boundaryPatch));
   this->UpdateProgress(1.0);
   return 1;
 }

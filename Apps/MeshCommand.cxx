@@ -1,0 +1,207 @@
+// volgrid mesh: boundary-conforming tetrahedral mesh of the volume enclosed by closed surfaces.
+#include "CliSupport.h"
+#include "Commands.h"
+#include "SurfaceFile.h"
+#include "VolGridConversion.h"
+
+#include "BoundaryCheck.h"
+#include "Mesher.h"
+#include "SurfaceMesh.h"
+
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLUnstructuredGridWriter.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* kUsage =
+  "usage: volgrid mesh SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check]\n"
+  "                    [--regions even-odd|orientation|keep-all] [--no-steiner]\n"
+  "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
+  "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region);\n"
+  "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
+  "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n";
+
+struct Arguments
+{
+  std::string surface;
+  std::string out;
+  std::string boundaryOut;
+  bool json = false;
+  bool check = false;
+  volgrid::MesherOptions options;
+};
+
+bool parseArguments(int argc, char** argv, Arguments& args)
+{
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&](const char* name) -> const char* {
+      if (i + 1 >= argc)
+      {
+        std::fprintf(stderr, "volgrid mesh: %s needs a value\n", name);
+        return nullptr;
+      }
+      return argv[++i];
+    };
+    if (a == "--json")
+      args.json = true;
+    else if (a == "--check")
+      args.check = true;
+    else if (a == "--no-steiner")
+      args.options.allowSteinerPoints = false;
+    else if (a == "--boundary")
+    {
+      const char* v = value("--boundary");
+      if (!v)
+        return false;
+      args.boundaryOut = v;
+    }
+    else if (a == "--regions")
+    {
+      const char* v = value("--regions");
+      if (!v)
+        return false;
+      if (std::strcmp(v, "even-odd") == 0)
+        args.options.regionRule = volgrid::RegionRule::EvenOdd;
+      else if (std::strcmp(v, "orientation") == 0)
+        args.options.regionRule = volgrid::RegionRule::Orientation;
+      else if (std::strcmp(v, "keep-all") == 0)
+        args.options.regionRule = volgrid::RegionRule::KeepAll;
+      else
+      {
+        std::fprintf(stderr, "volgrid mesh: --regions is even-odd, orientation or keep-all, not '%s'\n", v);
+        return false;
+      }
+    }
+    else if (a == "--help" || a == "-h")
+    {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      std::fprintf(stderr, "volgrid mesh: unknown option '%s'\n%s", a.c_str(), kUsage);
+      return false;
+    }
+    else
+      positional.push_back(a);
+  }
+  if (positional.size() != 2)
+  {
+    std::fprintf(stderr, "volgrid mesh: expected SURFACE and OUT.vtu\n%s", kUsage);
+    return false;
+  }
+  args.surface = positional[0];
+  args.out = positional[1];
+  return true;
+}
+
+template <class Writer, class Data>
+bool write(const std::string& path, Data* data)
+{
+  vtkNew<Writer> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  if (writer->Write() != 1)
+  {
+    std::fprintf(stderr, "volgrid mesh: cannot write '%s'\n", path.c_str());
+    return false;
+  }
+  return true;
+}
+} // namespace
+
+int runMeshCommand(int argc, char** argv)
+{
+  Arguments args;
+  if (!parseArguments(argc, argv, args))
+    return 2;
+
+  volgrid::SurfaceMesh surface;
+  std::string readInfo;
+  // Keep the file's own numbering: the mesher merges coincident points itself and reports them.
+  const volgrid::Status read = volgrid::readAnySurface(args.surface, surface, readInfo, false);
+  if (!read.ok())
+  {
+    std::fprintf(stderr, "volgrid mesh: %s\n", read.message.c_str());
+    return 1;
+  }
+
+  args.options.verify = args.check;
+  volgrid::MesherResult result;
+  const volgrid::cli::Stopwatch watch;
+  const volgrid::Status status = volgrid::meshSurface(surface, args.options, result);
+  const double seconds = watch.seconds();
+  if (!status.ok())
+  {
+    std::fprintf(stderr, "volgrid mesh: %s: %s\n", args.surface.c_str(), status.message.c_str());
+    return 1;
+  }
+  for (const std::string& warning : result.warnings)
+    std::fprintf(stderr, "volgrid mesh: warning: %s\n", warning.c_str());
+
+  // Independent of the mesher's own verification: the boundary faces of the tets against the input
+  // triangles (in output point ids), and the volume against the enclosed volume.
+  std::vector<int32_t> inputTriangles(surface.triangles.size());
+  for (size_t k = 0; k < surface.triangles.size(); ++k)
+    inputTriangles[k] = result.inputToOutputPoint[surface.triangles[k]];
+  const volgrid::BoundaryCheckReport boundary = volgrid::checkBoundaryConformity(
+    result.points, result.numInputPoints, result.tets, inputTriangles, result.stats.enclosedVolume);
+  const bool boundaryPreserved = boundary.meshValid() && boundary.boundaryEqualsInput();
+
+  vtkNew<vtkUnstructuredGrid> volume;
+  vtkNew<vtkPolyData> boundarySurface;
+  VolGridFillFromMesherResult(result, volume, boundarySurface);
+  if (!write<vtkXMLUnstructuredGridWriter>(args.out, volume.Get()))
+    return 1;
+  if (!args.boundaryOut.empty() && !write<vtkXMLPolyDataWriter>(args.boundaryOut, boundarySurface.Get()))
+    return 1;
+
+  const volgrid::MesherStatistics& s = result.stats;
+  if (args.json)
+  {
+    std::printf("{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
+                "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
+                "\"missing_facets\": %lld, \"flips\": %lld, \"steiner_interior\": %lld, "
+                "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %.17g, "
+                "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"seconds\": %.6f, "
+                "\"peak_rss_mb\": %.1f}\n",
+      volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
+      static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
+      static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
+      static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets),
+      static_cast<long long>(s.flips), static_cast<long long>(s.steinerInterior),
+      static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", boundary.tetVolume,
+      s.enclosedVolume, boundary.relativeVolumeError, seconds, volgrid::cli::peakResidentMiB());
+  }
+  else
+  {
+    std::printf("%s: %lld points, %lld triangles -> %lld tets on %lld points (%lld interior Steiner "
+                "points, %lld on the boundary) in %.3f s\n",
+      args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
+      static_cast<long long>(s.tets), static_cast<long long>(s.points),
+      static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
+    std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
+      boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
+      boundary.relativeVolumeError);
+  }
+  if (args.check && !(boundaryPreserved && boundary.relativeVolumeError <= 1e-9))
+  {
+    std::fprintf(stderr, "volgrid mesh: check failed: %s\n", boundary.summary().c_str());
+    return 1;
+  }
+  return 0;
+}
