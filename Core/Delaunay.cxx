@@ -4,9 +4,11 @@
 #include "SpatialSort.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <thread>
 
 namespace volgrid
 {
@@ -153,6 +155,38 @@ struct DelaunayInserter::Impl
     return predicates::insphere(a, b, c, d, e);
   }
 
+  // Parallel construction (buildDelaunay with threads > 1): tets are owned by one thread at a time
+  // (owner[t] = thread id + 1, acquired with compare-exchange before any read, released at the end of
+  // the insertion); an insertion that meets a tet owned by the other thread is undone and reported as
+  // aborted (the caller inserts it later, alone). New slots come from a pre-allocated pool.
+  std::atomic<uint8_t>* owner = nullptr;
+  uint8_t me = 0;
+  std::vector<int32_t> held, spare;
+  std::atomic<int32_t>* nextSlot = nullptr; // pool mode: next unused slot, pool ends at slotLimit
+  int32_t slotLimit = 0;
+  bool lockFailed = false, poolFull = false;
+  int32_t pendingGhostDelta = 0; // pool mode: ghost count changes not yet reported to the mesh
+
+  bool acquire(int32_t t)
+  {
+    if (!owner)
+      return true;
+    uint8_t cur = owner[t].load(std::memory_order_relaxed);
+    if (cur == me)
+      return true;
+    cur = 0;
+    if (!owner[t].compare_exchange_strong(cur, me, std::memory_order_acquire, std::memory_order_relaxed))
+      return false;
+    held.push_back(t);
+    return true;
+  }
+  void releaseAll()
+  {
+    for (int32_t t : held)
+      owner[t].store(0, std::memory_order_release);
+    held.clear();
+  }
+
   // Reused buffers (no allocation in the insertion loop once they have grown).
   struct BoundaryFace
   {
@@ -221,6 +255,8 @@ struct DelaunayInserter::Impl
     for (;;)
     {
       ++walkSteps;
+      if (owner && (!acquire(t) || (mesh.tetFlags[t] & TetMesh::kFree)))
+        return -1; // owned by the other thread, or a slot it freed
       const int32_t* w = V + 4 * static_cast<size_t>(t);
       if ((w[0] | w[1] | w[2] | w[3]) < 0)
       {
@@ -269,7 +305,7 @@ struct DelaunayInserter::Impl
     }
   }
 
-  __attribute__((always_inline)) bool inConflict(int32_t u, const double* p, int32_t v) const
+  __attribute__((always_inline)) bool inConflict(int32_t u, const double* p, int32_t v)
   {
     const int32_t* w = mesh.tetVertices.data() + 4 * static_cast<size_t>(u);
     const double* P = mesh.points.data();
@@ -281,7 +317,12 @@ struct DelaunayInserter::Impl
       if (o != 0)
         return o > 0;
       // p on the plane of the hull face: same answer as the finite tet across it.
-      u = mesh.tetNeighbors[4 * static_cast<size_t>(u) + k] >> 2;
+      u = (mesh.tetNeighbors[4 * static_cast<size_t>(u) + k] & kCodeMask) >> 2;
+      if (!acquire(u))
+      {
+        lockFailed = true;
+        return false;
+      }
       w = mesh.tetVertices.data() + 4 * static_cast<size_t>(u);
     }
     const double* pa = P + 3 * static_cast<size_t>(w[0]);
@@ -393,8 +434,14 @@ struct DelaunayInserter::Impl
     if (grid)
       start = gridStart(p);
     if (start < 0)
-      start = liveTet(hint);
+      start = owner ? (hint >= 0 ? hint : last) : liveTet(hint);
     int32_t t = walk(p, start);
+    if (t < 0)
+    {
+      releaseAll();
+      res.aborted = true;
+      return res;
+    }
 
     uint8_t* F = mesh.tetFlags.data();
     int32_t* V = mesh.tetVertices.data();
@@ -408,6 +455,8 @@ struct DelaunayInserter::Impl
             res.tet = t;
             res.duplicateOf = w[k];
             last = t;
+            if (owner)
+              releaseAll();
             return res;
           }
     }
@@ -452,12 +501,17 @@ struct DelaunayInserter::Impl
       {
         const int32_t code = N[4 * static_cast<size_t>(c) + f] & kCodeMask;
         const int32_t u = code >> 2;
+        if (owner && !acquire(u))
+          return abortInsertion(res, nloc);
         const int32_t* nu = N + 4 * static_cast<size_t>(u);
         if (nu[0] < 0)
           continue; // in the cavity
         if (nu[1] >= 0)
         {
-          if (inConflict(u, p, v))
+          const bool conflict = inConflict(u, p, v);
+          if (lockFailed)
+            return abortInsertion(res, nloc);
+          if (conflict)
           {
             mark(u, 0);
             cavity.push_back(u);
@@ -502,13 +556,47 @@ struct DelaunayInserter::Impl
     // ---- new tets: reuse the cavity slots, then free/appended slots
     const size_t nb = boundary.size();
     const size_t nc = cavity.size();
-    for (size_t i = nc; i < nb && mesh.freeListHead() >= 0; ++i)
-      cavity.push_back(mesh.newTet(0, 0, 0, 0));
-    if (cavity.size() < nb)
+    if (nextSlot)
     {
-      const int32_t first = mesh.appendTets(static_cast<int32_t>(nb - cavity.size()));
-      for (int32_t s = first; cavity.size() < nb; ++s)
-        cavity.push_back(s);
+      // Pool mode: own spare slots first, then fresh ones from the shared pool.
+      while (cavity.size() < nb && !spare.empty())
+      {
+        cavity.push_back(spare.back());
+        spare.pop_back();
+      }
+      if (cavity.size() < nb)
+      {
+        const int32_t k = static_cast<int32_t>(nb - cavity.size());
+        const int32_t first = nextSlot->fetch_add(k);
+        if (first + k > slotLimit)
+        {
+          poolFull = true;
+          for (size_t i = nc; i < cavity.size(); ++i)
+            spare.push_back(cavity[i]);
+          cavity.resize(nc);
+          return abortInsertion(res, nloc);
+        }
+        for (int32_t s = first; s < first + k; ++s)
+        {
+          if (owner)
+          {
+            owner[s].store(me, std::memory_order_relaxed);
+            held.push_back(s);
+          }
+          cavity.push_back(s);
+        }
+      }
+    }
+    else
+    {
+      for (size_t i = nc; i < nb && mesh.freeListHead() >= 0; ++i)
+        cavity.push_back(mesh.newTet(0, 0, 0, 0));
+      if (cavity.size() < nb)
+      {
+        const int32_t first = mesh.appendTets(static_cast<int32_t>(nb - cavity.size()));
+        for (int32_t s = first; cavity.size() < nb; ++s)
+          cavity.push_back(s);
+      }
     }
     F = mesh.tetFlags.data();
     V = mesh.tetVertices.data();
@@ -586,9 +674,18 @@ struct DelaunayInserter::Impl
       const int32_t s = cavity[i];
       int32_t* ws = V + 4 * static_cast<size_t>(s);
       ws[0] = ws[1] = ws[2] = ws[3] = 0; // so that freeTet does not count it as a ghost
-      mesh.freeTet(s);
+      if (nextSlot)
+      {
+        F[s] = TetMesh::kFree; // recycled by this inserter; freed in the mesh when the pool is closed
+        spare.push_back(s);
+      }
+      else
+        mesh.freeTet(s);
     }
-    mesh.adjustGhostCount(ghostDelta);
+    if (nextSlot)
+      pendingGhostDelta += ghostDelta;
+    else
+      mesh.adjustGhostCount(ghostDelta);
     last = cavity[nb - 1];
     if (next)
     {
@@ -617,6 +714,24 @@ struct DelaunayInserter::Impl
     }
     res.tet = last;
     gridRegister(v, last);
+    if (owner)
+      releaseAll();
+    return res;
+  }
+
+  // Undo the marks of a cavity search and give the tets back (parallel mode only).
+  Result abortInsertion(Result res, int32_t nloc)
+  {
+    int32_t* N = mesh.tetNeighbors.data();
+    for (int32_t c : cavity)
+      N[4 * static_cast<size_t>(c)] &= kCodeMask;
+    for (int32_t u : outside)
+      N[4 * static_cast<size_t>(u) + 1] &= kCodeMask;
+    for (int32_t k = 0; k < nloc; ++k)
+      vlocal[static_cast<size_t>(localVert[k]) + 1] = -1;
+    lockFailed = false;
+    releaseAll();
+    res.aborted = true;
     return res;
   }
 };
@@ -764,6 +879,122 @@ bool collinear(const double* a, const double* b, const double* c)
 
 } // namespace
 
+namespace
+{
+constexpr size_t kParallelMinPoints = 200000;
+constexpr size_t kParallelMinRound = 50000;
+} // namespace
+
+// Two threads insert the two halves (along the Hilbert curve) of each BRIO round from `round0` on.
+// Every tet is acquired before it is read (see DelaunayInserter::Impl::acquire); an insertion that
+// meets the other thread's tets is undone and retried by `main` after the round. New slots come from a
+// pool appended to the mesh up front; when it runs out, the remaining points go to `rest`.
+template <class FirstTet>
+Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<int32_t>& order,
+  const std::vector<size_t>& roundStarts, size_t round0, FirstTet isFirstTet, std::vector<int32_t>& inputToVertex,
+  std::vector<int32_t>& rest, DelaunayReport& rep, Progress* progress, uint64_t seed)
+{
+  const int32_t m = static_cast<int32_t>(order.size());
+  DelaunayInserter::Impl& mi = *main.impl_;
+  const int32_t used = mesh.tetCapacity();
+  const int32_t pool = std::max<int32_t>(used, static_cast<int32_t>(7.25 * m) + 64);
+  mesh.appendTets(pool - used);
+  std::unique_ptr<std::atomic<uint8_t>[]> owner(new std::atomic<uint8_t>[static_cast<size_t>(pool)]());
+  std::atomic<int32_t> nextSlot(used);
+  DelaunayInserter w0(mesh, seed + 1), w1(mesh, seed + 2);
+  DelaunayInserter::Impl* workers[2] = { w0.impl_.get(), w1.impl_.get() };
+  for (int i = 0; i < 2; ++i)
+  {
+    DelaunayInserter::Impl& w = *workers[i];
+    w.sosId = mi.sosId;
+    w.latticeOrientLimit = mi.latticeOrientLimit;
+    w.latticeInsphereLimit2 = mi.latticeInsphereLimit2;
+    w.owner = owner.get();
+    w.me = static_cast<uint8_t>(i + 1);
+    w.nextSlot = &nextSlot;
+    w.slotLimit = pool;
+    w.last = mi.last;
+  }
+  mi.nextSlot = &nextSlot;
+  mi.slotLimit = pool;
+  std::vector<int32_t> deferred[2];
+  bool full = false;
+  size_t r = round0;
+  for (; r + 1 < roundStarts.size() && !full; ++r)
+  {
+    const int32_t a = static_cast<int32_t>(roundStarts[r]), b = static_cast<int32_t>(roundStarts[r + 1]);
+    const int32_t mid = a + (b - a) / 2;
+    auto work = [&](int i, int32_t from, int32_t to) {
+      DelaunayInserter::Impl& w = *workers[i];
+      deferred[i].clear();
+      for (int32_t k = from; k < to; ++k)
+      {
+        if (isFirstTet(k))
+          continue;
+        if (w.poolFull)
+        {
+          deferred[i].push_back(k);
+          continue;
+        }
+        const DelaunayInserter::Result res = w.insert(k, -1, k + 1 < to ? mesh.point(k + 1) : nullptr);
+        if (res.aborted)
+          deferred[i].push_back(k);
+        else if (res.duplicateOf >= 0)
+          inputToVertex[order[k]] = order[res.duplicateOf];
+      }
+    };
+    std::thread helper(work, 1, mid, b);
+    work(0, a, mid);
+    helper.join();
+    for (int i = 0; i < 2; ++i)
+      for (int32_t k : deferred[i])
+      {
+        if (full)
+        {
+          rest.push_back(k);
+          continue;
+        }
+        const DelaunayInserter::Result res = mi.insert(k, workers[i]->last, nullptr);
+        if (res.aborted)
+        {
+          full = true; // the pool is exhausted
+          rest.push_back(k);
+        }
+        else if (res.duplicateOf >= 0)
+          inputToVertex[order[k]] = order[res.duplicateOf];
+      }
+    full = full || workers[0]->poolFull || workers[1]->poolFull;
+    progress->report(static_cast<double>(b) / static_cast<double>(m), "Inserting points");
+    if (progress->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
+  }
+  for (; r + 1 < roundStarts.size(); ++r)
+    for (int32_t k = static_cast<int32_t>(roundStarts[r]); k < static_cast<int32_t>(roundStarts[r + 1]); ++k)
+      if (!isFirstTet(k))
+        rest.push_back(k);
+  // Close the pool: drop its unused tail, free the recycled slots, report the ghost counts.
+  mesh.truncate(std::min(nextSlot.load(), pool));
+  DelaunayInserter::Impl* all[3] = { workers[0], workers[1], &mi };
+  for (DelaunayInserter::Impl* w : all)
+  {
+    for (int32_t t : w->spare)
+      if (t < mesh.tetCapacity())
+      {
+        mesh.tetFlags[t] = 0;
+        mesh.freeTet(t);
+      }
+    w->spare.clear();
+    mesh.adjustGhostCount(w->pendingGhostDelta);
+    w->pendingGhostDelta = 0;
+    w->nextSlot = nullptr;
+    w->owner = nullptr;
+  }
+  mi.last = workers[0]->last < mesh.tetCapacity() ? workers[0]->last : -1;
+  rep.walkSteps += workers[0]->walkSteps + workers[1]->walkSteps;
+  rep.cavityTets += workers[0]->cavityTets + workers[1]->cavityTets;
+  return Status::success();
+}
+
 Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options, TetMesh& mesh,
   std::vector<int32_t>& inputToVertex, Progress* progress, DelaunayReport* report)
 {
@@ -811,13 +1042,14 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   std::vector<int32_t> order(n);
   for (size_t i = 0; i < n; ++i)
     order[i] = static_cast<int32_t>(i);
+  std::vector<size_t> roundStarts; // BRIO rounds (offsets into order)
   if (options.spatialSort)
   {
     std::vector<uint64_t> keys;
     hilbertSort(xyz, order, &keys);
     mergeDuplicates(xyz, order, keys, inputToVertex);
     std::vector<uint64_t>().swap(keys);
-    brioRounds(order, options.seed);
+    brioRounds(order, options.seed, 64, &roundStarts);
   }
 
   // During the construction vertex k is the k-th point in insertion order (order[k] is its input id):
@@ -887,22 +1119,65 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
   }
   constexpr int32_t kReportEvery = 1 << 16;
-  for (int32_t k = 0; k < im; ++k)
-  {
-    if (k == ia || k == ib || k == ic || k == id)
-      continue;
-    const DelaunayInserter::Result r = inserter.insert(k, -1, k + 1 < im ? mesh.point(k + 1) : nullptr);
-    if (r.duplicateOf >= 0)
-      inputToVertex[order[k]] = order[r.duplicateOf];
-    if ((k & (kReportEvery - 1)) == 0)
+  auto isFirstTet = [&](int32_t k) { return k == ia || k == ib || k == ic || k == id; };
+  auto cancelled = [&]() {
+    if (!progress->cancelled())
+      return false;
+    mesh.clear();
+    return true;
+  };
+  // Sequential insertion of order[from..to).
+  auto insertRange = [&](int32_t from, int32_t to) {
+    for (int32_t k = from; k < to; ++k)
     {
-      progress->report(static_cast<double>(k) / static_cast<double>(m), "Inserting points");
-      if (progress->cancelled())
+      if (isFirstTet(k))
+        continue;
+      const DelaunayInserter::Result r = inserter.insert(k, -1, k + 1 < im ? mesh.point(k + 1) : nullptr);
+      if (r.duplicateOf >= 0)
+        inputToVertex[order[k]] = order[r.duplicateOf];
+      if ((k & (kReportEvery - 1)) == 0)
       {
-        mesh.clear();
-        return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
+        progress->report(static_cast<double>(k) / static_cast<double>(m), "Inserting points");
+        if (cancelled())
+          return false;
       }
     }
+    return true;
+  };
+
+  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  threads = std::max(1, std::min(threads, 2));
+  int32_t done = 0; // order[0..done) handled
+  std::vector<int32_t> rest; // points left over by the parallel stage
+  if (threads > 1 && options.location == PointLocation::Walk && roundStarts.size() > 2 &&
+    m >= kParallelMinPoints)
+  {
+    // Rounds with enough points run on two threads (halves of the Hilbert order of the round).
+    size_t r0 = 0;
+    while (r0 + 1 < roundStarts.size() && roundStarts[r0 + 1] - roundStarts[r0] < kParallelMinRound)
+      ++r0;
+    if (r0 + 1 < roundStarts.size())
+    {
+      if (!insertRange(0, static_cast<int32_t>(roundStarts[r0])))
+        return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
+      done = static_cast<int32_t>(roundStarts[r0]);
+      const Status st = insertParallel(mesh, inserter, order, roundStarts, r0, isFirstTet, inputToVertex, rest, rep,
+        progress, options.seed);
+      if (!st.ok())
+      {
+        mesh.clear();
+        return st;
+      }
+      done = im;
+    }
+  }
+  if (!insertRange(done, im))
+    return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
+  for (int32_t k : rest)
+  {
+    const DelaunayInserter::Result r = inserter.insert(k, -1, nullptr);
+    if (r.duplicateOf >= 0)
+      inputToVertex[order[k]] = order[r.duplicateOf];
   }
   // Back to input numbering.
   if (options.spatialSort)
@@ -924,8 +1199,8 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
         rep.firstDuplicates.push_back(static_cast<int64_t>(i));
     }
   rep.numVertices = n - rep.numDuplicates;
-  rep.walkSteps = inserter.walkSteps();
-  rep.cavityTets = inserter.cavityTets();
+  rep.walkSteps += inserter.walkSteps();
+  rep.cavityTets += inserter.cavityTets();
   if (!options.keepGhosts)
     mesh.removeGhostTets();
   progress->report(1.0, "Inserting points");

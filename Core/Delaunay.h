@@ -48,6 +48,10 @@ struct DelaunayOptions
   PointLocation location = PointLocation::Walk;
   uint64_t seed = 0x766f6c67726964ull;     // BRIO rounds and walk randomization
   bool keepGhosts = true;                  // false: removeGhostTets() at the end (hull faces -> no neighbour)
+  // Threads for large inputs (>= 200k points, spatialSort, Walk): 1 = sequential, 2 = two threads,
+  // 0 = hardware concurrency (at most 2). The tets are the same (the triangulation is unique); their
+  // numbering may differ from run to run with more than one thread.
+  int threads = 1;
 };
 
 struct DelaunayReport
@@ -87,6 +91,7 @@ public:
   {
     int32_t tet = -1;       // a tet incident to the inserted vertex (or to the duplicate)
     int32_t duplicateOf = -1; // >= 0: the point equals this existing vertex, nothing was inserted
+    bool aborted = false;     // internal (parallel construction): not inserted, retry later
   };
   // Insert mesh vertex v (its coordinates already in mesh.points, e.g. from mesh.addPoint) and restore
   // the Delaunay property. v must not be used by any tet yet. `next` (optional): where the next point
@@ -112,6 +117,9 @@ public:
 private:
   friend Status buildDelaunay(const double*, size_t, const DelaunayOptions&, TetMesh&, std::vector<int32_t>&,
     Progress*, DelaunayReport*);
+  template <class FirstTet>
+  friend Status insertParallel(TetMesh&, DelaunayInserter&, const std::vector<int32_t>&, const std::vector<size_t>&,
+    size_t, FirstTet, std::vector<int32_t>&, std::vector<int32_t>&, DelaunayReport&, Progress*, uint64_t);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -165,9 +165,11 @@ void hilbertSort(const double* xyz, std::vector<int32_t>& ids, std::vector<uint6
   }
 }
 
-void brioRounds(std::vector<int32_t>& ids, uint64_t seed, size_t minFirstRound)
+void brioRounds(std::vector<int32_t>& ids, uint64_t seed, size_t minFirstRound, std::vector<size_t>* roundStarts)
 {
   const size_t n = ids.size();
+  if (roundStarts)
+    *roundStarts = { 0, n };
   if (n <= minFirstRound)
     return;
   // Number of rounds: the first (smallest) round holds about n / 2^(rounds-1) >= minFirstRound points.
@@ -213,6 +215,8 @@ void brioRounds(std::vector<int32_t>& ids, uint64_t seed, size_t minFirstRound)
     std::reverse(out.begin() + static_cast<std::ptrdiff_t>(count[r]),
       out.begin() + static_cast<std::ptrdiff_t>(count[r + 1]));
   ids.swap(out);
+  if (roundStarts)
+    roundStarts->assign(count.begin(), count.end());
 }
 
 void brioHilbertOrder(const double* xyz, size_t n, uint64_t seed, std::vector<int32_t>& order)

@@ -25,7 +25,9 @@ void hilbertSort(const double* xyz, std::vector<int32_t>& ids, std::vector<uint6
 // Reorder Hilbert-sorted `ids` into BRIO rounds (first round the smallest, about minFirstRound points
 // or fewer); the Hilbert order is kept inside each round, every other round is traversed backwards so
 // that a round starts near where the previous one ended.
-void brioRounds(std::vector<int32_t>& ids, uint64_t seed, size_t minFirstRound = 64);
+// If roundStarts is given it receives the offset of each round in ids, plus ids.size() at the end.
+void brioRounds(std::vector<int32_t>& ids, uint64_t seed, size_t minFirstRound = 64,
+  std::vector<size_t>* roundStarts = nullptr);
 
 // Convenience: ids = 0..n-1 in BRIO-Hilbert order.
 void brioHilbertOrder(const double* xyz, size_t n, uint64_t seed, std::vector<int32_t>& order);

@@ -90,6 +90,14 @@ int32_t TetMesh::appendTets(int32_t count)
   return first;
 }
 
+void TetMesh::truncate(int32_t capacity)
+{
+  assert(capacity >= 0 && capacity <= tetCapacity());
+  tetVertices.resize(4 * static_cast<size_t>(capacity));
+  tetNeighbors.resize(4 * static_cast<size_t>(capacity));
+  tetFlags.resize(static_cast<size_t>(capacity));
+}
+
 void TetMesh::setTetVertices(int32_t t, int32_t v0, int32_t v1, int32_t v2, int32_t v3)
 {
   assert(!isFree(t));

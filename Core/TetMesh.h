@@ -172,6 +172,9 @@ public:
   // vertices and neighbours are uninitialized and their flags 0: the caller fills them (fast path for
   // insertion algorithms that write whole tets).
   int32_t appendTets(int32_t count);
+  // Drop the slots from `capacity` on (they must be referenced by nothing and not be on the free list;
+  // used after appendTets reserved more slots than a parallel stage needed).
+  void truncate(int32_t capacity);
   // Overwrite the vertices of a live tet (adjusts the ghost count).
   void setTetVertices(int32_t t, int32_t v0, int32_t v1, int32_t v2, int32_t v3);
   // Put t on the free list. Neighbours pointing at t are NOT updated (the caller relinks them).

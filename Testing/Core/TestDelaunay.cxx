@@ -519,3 +519,24 @@ TEST(Delaunay, SpatialSortIsADeterministicPermutation)
     ASSERT_EQ(d, 1.0) << k;
   }
 }
+
+TEST(Delaunay, TwoThreadsGiveTheSameMesh)
+{
+  // Large enough for the parallel rounds (>= 200k points); duplicates and a regular grid included.
+  auto xyz = randomPoints(230000, 81, 30);
+  const auto grid = gridPoints(20);
+  xyz.insert(xyz.end(), grid.begin(), grid.end());
+  xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3 * 1000);
+  DelaunayOptions two;
+  two.threads = 2;
+  Built a = build(xyz), b = build(xyz, two);
+  ASSERT_TRUE(a.status.ok() && b.status.ok());
+  EXPECT_EQ(tetSet(a.mesh), tetSet(b.mesh));
+  EXPECT_EQ(a.map, b.map);
+  EXPECT_EQ(b.report.numDuplicates, 1000u);
+  EXPECT_EQ(a.mesh.numGhostTets(), b.mesh.numGhostTets());
+  MeshCheckOptions fast;
+  fast.euler = false;
+  const MeshCheckReport r = checkMesh(b.mesh, fast);
+  EXPECT_TRUE(r.valid) << r.summary();
+}
