@@ -1,6 +1,6 @@
 // volgrid prep IN... OUT [--enclosure SHAPE] [--enclosure-scale S] [--edge-length L] [--merge-tolerance T]
 //                        [--exact] [--fill-holes N] [--no-orient] [--axis x|y|z] [--center X,Y,Z]
-//                        [--dimensions A,B,C] [--no-intersections] [--json]
+//                        [--dimensions A[,B[,C]]] [--no-intersections] [--json]
 // Runs vtkVolGridSurfacePrep on the input surfaces (each file a part) and writes the clean surface with its
 // PatchId and diagnostic arrays. Exit code: 0 when the output is meshable, 1 when defects remain (the
 // output is still written) or a file cannot be read or written, 2 for bad arguments.
@@ -18,6 +18,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -32,7 +33,8 @@ const char* kUsage =
   "  triangles, stitch, fill holes, orient), optionally adds an enclosure, and reports what is left.\n"
   "  --enclosure box|sphere|cylinder|hemisphere|ellipsoid   far-field enclosure around the input\n"
   "  --enclosure-scale S   enclosure size as a factor of the input's bounding box (>= 1, default 10)\n"
-  "  --center X,Y,Z --dimensions A,B,C   explicit enclosure (then no input is needed)\n"
+  "  --center X,Y,Z --dimensions A[,B[,C]]   explicit enclosure (then no input is needed): box edges;\n"
+  "                        sphere, hemisphere radius; cylinder radius, height; ellipsoid semi-axes\n"
   "  --axis x|y|z          cylinder / hemisphere axis (default z)\n"
   "  --edge-length L       target edge length of the enclosure (default: 1/16 of its size)\n"
   "  --merge-tolerance T   weld points closer than T * bounding-box diagonal (default 1e-6)\n"
@@ -49,24 +51,27 @@ int usage(const std::string& problem)
   return 2;
 }
 
+// "A", "A,B" or "A,B,C" (missing values repeat the last one given).
 bool parseTriple(const char* text, double out[3])
 {
   char* end = nullptr;
   const char* p = text;
-  for (int k = 0; k < 3; ++k)
+  int k = 0;
+  for (; k < 3; ++k)
   {
     out[k] = std::strtod(p, &end);
-    if (end == p)
+    if (end == p || !std::isfinite(out[k]))
       return false;
     p = end;
-    if (k < 2)
-    {
-      if (*p != ',')
-        return false;
-      ++p;
-    }
+    if (*p == '\0')
+      break;
+    if (*p != ',' || k == 2)
+      return false;
+    ++p;
   }
-  return *p == '\0';
+  for (int j = k + 1; j < 3; ++j)
+    out[j] = out[k];
+  return true;
 }
 
 long long count(vtkFieldData* fd, const char* name)
@@ -163,12 +168,12 @@ int runPrepCommand(int argc, char** argv)
       const char* v = value();
       double t[3];
       if (!v || !parseTriple(v, t))
-        return usage(a + " expects three numbers X,Y,Z");
+        return usage(a + " expects one to three numbers X[,Y[,Z]]");
       if (a == "--center")
         prep->SetEnclosureCenter(t), haveCenter = true;
       else
       {
-        if (t[0] <= 0 || t[1] <= 0 || t[2] <= 0)
+        if (t[0] <= 0 || t[1] < 0 || t[2] < 0)
           return usage("--dimensions must be positive");
         prep->SetEnclosureDimensions(t), haveDimensions = true;
       }
@@ -247,6 +252,11 @@ int runPrepCommand(int argc, char** argv)
   }
   prep->Update();
   vtkPolyData* result = prep->GetOutput();
+  if (result->GetNumberOfCells() == 0)
+  {
+    std::fprintf(stderr, "volgrid prep: the output is empty (see the messages above)\n");
+    return 1;
+  }
   std::string error;
   if (!volgrid::writeSurfaceFile(out, result, error))
   {
