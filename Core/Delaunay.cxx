@@ -924,6 +924,11 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
   {
     const int32_t a = static_cast<int32_t>(roundStarts[r]), b = static_cast<int32_t>(roundStarts[r + 1]);
     const int32_t mid = a + (b - a) / 2;
+    // Start each thread's walks near its first point (located before the threads start).
+    workers[0]->owner = workers[1]->owner = nullptr;
+    workers[0]->last = workers[0]->walk(mesh.point(a), mi.liveTet(workers[0]->last));
+    workers[1]->last = workers[1]->walk(mesh.point(mid), workers[0]->last);
+    workers[0]->owner = workers[1]->owner = owner.get();
     auto work = [&](int i, int32_t from, int32_t to) {
       DelaunayInserter::Impl& w = *workers[i];
       deferred[i].clear();
@@ -954,7 +959,7 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
           rest.push_back(k);
           continue;
         }
-        const DelaunayInserter::Result res = mi.insert(k, workers[i]->last, nullptr);
+        const DelaunayInserter::Result res = mi.insert(k, -1, nullptr);
         if (res.aborted)
         {
           full = true; // the pool is exhausted
