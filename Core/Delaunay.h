@@ -19,6 +19,13 @@
 // The cavity (tets in conflict, grown by adjacency from the tet containing p) is star-shaped from p and
 // is replaced by the tets joining p to its boundary faces, reusing the freed slots.
 //
+// Speed: points are inserted in BRIO rounds along a Hilbert curve (SpatialSort.h) and stored in that
+// order during the construction (vertex ids are restored at the end; SoS uses the input ids); point
+// location is a visibility walk from the new tet closest to the next point; the cavity is found
+// breadth-first with prefetching, marked in the neighbour words, and the new tets reuse its slots and
+// are glued by a small matrix of boundary edges. The hot predicates are inline filters falling back to
+// Core/Predicates.h; lattice inputs (grids) evaluate exactly in doubles. Optional: two threads.
+//
 // Duplicates: points with exactly equal coordinates are merged into the first occurrence (lowest
 // input index) and reported. Mesh vertex i is input point i; merged duplicates stay in mesh.points but
 // no tet uses them.

@@ -34,8 +34,9 @@
 //   removeGhostTets() frees them and sets the hull faces' neighbours to kNoNeighbor.
 //
 // Flags. One byte per tet: kFree (slot on the free list, contents meaningless), two transient bits
-//   reserved for algorithms (kMarkA/kMarkB: must be zero between operations; Delaunay uses them for
-//   cavity marking), and user bits kUser0..kUser4 for later stages (e.g. exterior/region tagging).
+//   reserved for algorithms (kMarkA/kMarkB: must be zero between operations), and user bits
+//   kUser0..kUser4 for later stages (e.g. exterior/region tagging). (Delaunay insertion marks its
+//   cavity in the sign bit of tetNeighbors words instead, and clears it before returning.)
 //
 // Free list. Deleted tets are recycled: freeTet() pushes the slot (linked through tetNeighbors[4t]),
 //   newTet() pops one or appends. tetCapacity() counts all slots (including free ones); iterate with
