@@ -525,7 +525,8 @@ bool triangulatePolygon(const std::vector<double>& points, const std::vector<int
 bool surfaceReaderSupports(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
-  return ext == "off" || ext == "mesh" || ext == "poly" || ext == "smesh" || ext == "msh" || ext == "stl";
+  return ext == "off" || ext == "mesh" || ext == "poly" || ext == "smesh" || ext == "msh" || ext == "stl" ||
+    ext == "ply";
 }
 
 Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info,
@@ -552,7 +553,12 @@ Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* 
   {
     return readSTL(path, mesh, info, options);
   }
-  return readError(path, 0, "unsupported file extension '." + ext + "' (supported: .off .mesh .poly .smesh .msh .stl)");
+  if (ext == "ply")
+  {
+    return readPLY(path, mesh, info, options);
+  }
+  return readError(
+    path, 0, "unsupported file extension '." + ext + "' (supported: .off .mesh .poly .smesh .msh .stl .ply)");
 }
 
 // ---------------------------------------------------------------------------------------------------

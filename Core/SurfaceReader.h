@@ -58,6 +58,9 @@ Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* inf
   const SurfaceReadOptions& options = SurfaceReadOptions());
 Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
   const SurfaceReadOptions& options = SurfaceReadOptions());
+// PLY, ASCII or binary, with faces and triangle strips (PlyReader.cxx).
+Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
 
 // Triangulates a planar (or nearly planar) polygon given by point ids of `points` (3 doubles each) by
 // ear clipping in the polygon's plane: orientation tests are exact (projected orient2d), and among the
