@@ -34,7 +34,7 @@ demo: build
 
 bench: build
 	@scripts/install-deps.sh bench
-	cmake --build $(BUILD_DIR) -j $(JOBS) --target volgrid_bench_delaunay
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target volgrid_benchmarks
 	scripts/bench.sh $(BUILD_DIR)
 
 clean:
