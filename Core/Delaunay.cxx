@@ -4,6 +4,7 @@
 #include "SpatialSort.h"
 
 #include <algorithm>
+#include <climits>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -165,6 +166,7 @@ struct DelaunayInserter::Impl
   std::atomic<int32_t>* nextSlot = nullptr; // pool mode: next unused slot, pool ends at slotLimit
   int32_t slotLimit = 0;
   bool lockFailed = false, poolFull = false;
+  int32_t poolEnd = INT32_MAX; // smallest failed pool position (the pool's used part ends there)
   int32_t pendingGhostDelta = 0; // pool mode: ghost count changes not yet reported to the mesh
 
   bool acquire(int32_t t)
@@ -571,6 +573,7 @@ struct DelaunayInserter::Impl
         if (first + k > slotLimit)
         {
           poolFull = true;
+          poolEnd = std::min(poolEnd, first); // slots from here on were never handed out
           for (size_t i = nc; i < cavity.size(); ++i)
             spare.push_back(cavity[i]);
           cavity.resize(nc);
@@ -978,8 +981,11 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
       if (!isFirstTet(k))
         rest.push_back(k);
   // Close the pool: drop its unused tail, free the recycled slots, report the ghost counts.
-  mesh.truncate(std::min(nextSlot.load(), pool));
   DelaunayInserter::Impl* all[3] = { workers[0], workers[1], &mi };
+  int32_t end = std::min(nextSlot.load(), pool);
+  for (DelaunayInserter::Impl* w : all)
+    end = std::min(end, w->poolEnd);
+  mesh.truncate(end);
   for (DelaunayInserter::Impl* w : all)
   {
     for (int32_t t : w->spare)
