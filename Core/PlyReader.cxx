@@ -3,6 +3,7 @@
 // triangle of a strip is flipped so the strip keeps one orientation). Other elements and properties are
 // skipped. VTK's vtkPLYReader ignores triangle strips, which is why VolGrid reads PLY itself.
 #include "SurfaceReader.h"
+#include "SurfaceReaderSupport.h"
 
 #include <cmath>
 #include <cstdint>
@@ -301,15 +302,7 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
         mesh.points.insert(mesh.points.end(), xyz, xyz + 3);
     }
   }
-  int32_t bad = -1;
-  if (!allPointsFinite(mesh, &bad))
-    return Status::failure(ErrorKind::NonFinitePoint,
-      path + ": point " + std::to_string(bad) + " has a NaN or infinite coordinate", { bad });
-  if (mesh.numberOfTriangles() == 0)
-    return Status::failure(ErrorKind::EmptyInput, path + ": the file contains no triangles");
-  if (options.mergeCoincidentPoints)
-    info.mergedPoints = mergeCoincidentPoints(mesh).mergedPoints;
-  return Status::success();
+  return detail::finish(path, mesh, &info, options.mergeCoincidentPoints);
 }
 
 } // namespace volgrid

@@ -1,0 +1,158 @@
+#include "SurfaceReaderSupport.h"
+
+#include <cctype>
+#include <charconv>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace volgrid::detail
+{
+
+std::string lowerExtension(const std::string& path)
+{
+  const size_t slash = path.find_last_of("/\\");
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return std::string();
+  }
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return ext;
+}
+
+Status readError(const std::string& path, int64_t line, const std::string& what)
+{
+  std::ostringstream os;
+  os << path;
+  if (line > 0)
+  {
+    os << ":" << line;
+  }
+  os << ": " << what;
+  return Status::failure(ErrorKind::InvalidOption, os.str());
+}
+
+Status loadFile(const std::string& path, std::string& text)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    return readError(path, 0, "cannot open file");
+  }
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0)
+  {
+    return readError(path, 0, "cannot determine the file size");
+  }
+  in.seekg(0, std::ios::beg);
+  text.resize(static_cast<size_t>(size));
+  if (size > 0 && !in.read(&text[0], size))
+  {
+    return readError(path, 0, "read error");
+  }
+  return Status::success();
+}
+
+bool parseDouble(std::string_view tok, double& value)
+{
+  if (!tok.empty() && tok[0] == '+')
+  {
+    tok.remove_prefix(1);
+  }
+  if (tok.empty())
+  {
+    return false;
+  }
+  const char* end = tok.data() + tok.size();
+  auto r = std::from_chars(tok.data(), end, value);
+  if (r.ec == std::errc() && r.ptr == end)
+  {
+    return true;
+  }
+  // from_chars rejects "inf"/"nan" spellings some writers use; strtod accepts them (then the finite
+  // check reports them properly), and also values out of range.
+  std::string copy(tok);
+  char* stop = nullptr;
+  value = std::strtod(copy.c_str(), &stop);
+  return stop == copy.c_str() + copy.size();
+}
+
+bool parseInt(std::string_view tok, int64_t& value)
+{
+  if (!tok.empty() && tok[0] == '+')
+  {
+    tok.remove_prefix(1);
+  }
+  if (tok.empty())
+  {
+    return false;
+  }
+  const char* end = tok.data() + tok.size();
+  auto r = std::from_chars(tok.data(), end, value);
+  return r.ec == std::errc() && r.ptr == end;
+}
+
+int64_t countLimit(const std::string& text)
+{
+  return static_cast<int64_t>(text.size()) + 16;
+}
+
+Status finish(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info, bool merge)
+{
+  int32_t bad = -1;
+  if (!allPointsFinite(mesh, &bad))
+  {
+    return Status::failure(ErrorKind::NonFinitePoint,
+      path + ": point " + std::to_string(bad) + " has a NaN or infinite coordinate", { bad });
+  }
+  if (mesh.numberOfTriangles() == 0)
+  {
+    return Status::failure(ErrorKind::EmptyInput, path + ": the file contains no triangles");
+  }
+  if (merge)
+  {
+    const MergeResult r = mergeCoincidentPoints(mesh);
+    if (info)
+    {
+      info->mergedPoints = r.mergedPoints;
+    }
+  }
+  return Status::success();
+}
+
+void addPolygon(SurfaceMesh& mesh, const std::vector<int32_t>& loop, int32_t patch, SurfaceReadInfo& info,
+  std::vector<int32_t>& scratch)
+{
+  if (loop.size() == 3)
+  {
+    mesh.addTriangle(loop[0], loop[1], loop[2], patch);
+    return;
+  }
+  ++info.polygonFaces;
+  scratch.clear();
+  if (!triangulatePolygon(mesh.points, loop, scratch))
+  {
+    ++info.fanFallbacks;
+  }
+  for (size_t i = 0; i + 2 < scratch.size(); i += 3)
+  {
+    mesh.addTriangle(scratch[i], scratch[i + 1], scratch[i + 2], patch);
+  }
+}
+
+void fanFallbackWarning(SurfaceReadInfo& info)
+{
+  if (info.fanFallbacks > 0)
+  {
+    info.warnings.push_back(std::to_string(info.fanFallbacks) +
+      " polygon(s) could not be ear-clipped (self-intersecting or degenerate) and were fan-triangulated");
+  }
+}
+
+} // namespace volgrid::detail
