@@ -310,45 +310,26 @@ public:
       }
       if (!good)
         continue;
+      cav = S;
+      cavSide = side;
       for (int sd = 0; sd < nsides && good; ++sd)
       {
         std::vector<std::array<int32_t, 3>> faces;
         for (size_t k = 0; k < S.size(); ++k)
-        {
-          if (side[k] != sd)
-            continue;
-          if (region_ && sideRegion[sd] < 0 && static_cast<size_t>(S[k]) < region_->size())
+          if (side[k] == sd && region_ && sideRegion[sd] < 0 && static_cast<size_t>(S[k]) < region_->size())
             sideRegion[sd] = (*region_)[S[k]];
-          const int ip = m_.localIndex(S[k], p);
-          m_.faceVertices(S[k], ip, f);
-          faces.push_back({ { f[0], f[1], f[2] } });
-        }
-        for (size_t k = 0; k < newTris.size(); ++k)
+        // The cavity of this side: p's star on this side, enlarged by layers of outer tets when no point
+        // sees all of its faces (a reflex or flat neighbourhood of p).
+        bool found = false;
+        for (int layer = 0; layer <= kMaxLayers && !found; ++layer)
         {
-          auto it = sideOfParent[sd].find(newTriParent[k]);
-          if (it == sideOfParent[sd].end())
-          {
-            good = false;
+          if (layer > 0 && !enlarge(p, sd, newTris))
             break;
-          }
-          const auto& tr = newTris[k];
-          if (it->second > 0)
-            faces.push_back(tr);
-          else
-            faces.push_back({ { tr[0], tr[2], tr[1] } });
+          if (!cavityFaces(p, sd, newTris, newTriParent, sideOfParent[sd], faces))
+            break;
+          found = findPoint(p, faces, sidePoint[sd].data());
         }
-        // Cancel a link face that coincides (reversed) with a new triangle: that part of the cavity is empty.
-        for (size_t a = 0; a < faces.size(); ++a)
-          for (size_t b = a + 1; b < faces.size(); ++b)
-            if (faces[a][0] >= 0 && faces[b][0] >= 0 && TriKey(faces[a][0], faces[a][1], faces[a][2]) ==
-                TriKey(faces[b][0], faces[b][1], faces[b][2]))
-            {
-              faces[a][0] = -1;
-              faces[b][0] = -1;
-            }
-        faces.erase(std::remove_if(faces.begin(), faces.end(), [](const std::array<int32_t, 3>& x) { return x[0] < 0; }),
-          faces.end());
-        if (!findPoint(p, faces, sidePoint[sd].data()))
+        if (!found)
         {
           good = false;
           break;
@@ -374,7 +355,7 @@ public:
     for (auto& t : newTets)
       t[3] = firstNew + (-2 - t[3]);
     std::vector<int32_t> created;
-    if (!ed_.replace(S, newTets, &created, true))
+    if (!ed_.replace(cav, newTets, &created, true))
     {
       m_.points.resize(3 * static_cast<size_t>(firstNew));
       kinds_.resize(static_cast<size_t>(firstNew));
@@ -386,7 +367,7 @@ public:
     {
       if (region_->size() < static_cast<size_t>(m_.tetCapacity()))
         region_->resize(static_cast<size_t>(m_.tetCapacity()), -1);
-      for (int32_t t : S)
+      for (int32_t t : cav)
         if (m_.isFree(t))
           (*region_)[t] = -1;
       for (size_t k = 0; k < created.size(); ++k)
@@ -400,70 +381,251 @@ public:
   }
 
 private:
+  static constexpr int kMaxLayers = 3;
+  std::vector<int32_t> cav;  // cavity tets: p's star, then enlargement layers
+  std::vector<int32_t> cavSide;
+
+  // Faces of side sd's cavity, each seen positively from inside: the faces of its tets that are not
+  // shared with another tet of the side and do not contain p (those containing p are p's subfaces), and
+  // the new boundary triangles, oriented towards the side. A face present twice with opposite
+  // orientations (an empty part of the cavity) cancels. False when a new triangle has no orientation for
+  // this side or a vertex of the cavity would end up strictly inside it.
+  bool cavityFaces(int32_t p, int sd, const std::vector<std::array<int32_t, 3>>& newTris,
+    const std::vector<int32_t>& newTriParent, const std::map<int32_t, int>& sideOf,
+    std::vector<std::array<int32_t, 3>>& faces)
+  {
+    faces.clear();
+    const uint32_t s = ed_.newStamp();
+    for (size_t k = 0; k < cav.size(); ++k)
+      if (cavSide[k] == sd)
+        ed_.tetStamp[cav[k]] = s;
+    int32_t f[3];
+    verts_.clear();
+    for (size_t k = 0; k < cav.size(); ++k)
+    {
+      if (cavSide[k] != sd)
+        continue;
+      const int32_t t = cav[k];
+      for (int i = 0; i < 4; ++i)
+      {
+        if (m_.vertex(t, i) != p)
+          verts_.push_back(m_.vertex(t, i));
+        const int32_t u = m_.neighbor(t, i);
+        if (u >= 0 && ed_.tetStamp[u] == s)
+          continue;
+        m_.faceVertices(t, i, f);
+        if (f[0] == p || f[1] == p || f[2] == p)
+          continue;
+        faces.push_back({ { f[0], f[1], f[2] } });
+      }
+    }
+    for (size_t k = 0; k < newTris.size(); ++k)
+    {
+      auto it = sideOf.find(newTriParent[k]);
+      if (it == sideOf.end())
+        return false;
+      const auto& tr = newTris[k];
+      if (it->second > 0)
+        faces.push_back(tr);
+      else
+        faces.push_back({ { tr[0], tr[2], tr[1] } });
+    }
+    for (size_t a = 0; a < faces.size(); ++a)
+      for (size_t b = a + 1; b < faces.size(); ++b)
+        if (faces[a][0] >= 0 && faces[b][0] >= 0 &&
+          TriKey(faces[a][0], faces[a][1], faces[a][2]) == TriKey(faces[b][0], faces[b][1], faces[b][2]))
+        {
+          faces[a][0] = -1;
+          faces[b][0] = -1;
+        }
+    faces.erase(std::remove_if(faces.begin(), faces.end(), [](const std::array<int32_t, 3>& x) { return x[0] < 0; }),
+      faces.end());
+    // No vertex may become interior (it would be lost).
+    for (int32_t v : verts_)
+    {
+      bool on = false;
+      for (size_t a = 0; a < faces.size() && !on; ++a)
+        on = faces[a][0] == v || faces[a][1] == v || faces[a][2] == v;
+      if (!on)
+        return false;
+    }
+    return !faces.empty();
+  }
+
+  // Adds to side sd's cavity the tets across its faces that are neither constraints nor new boundary
+  // triangles, except those that would make a vertex interior. False when nothing could be added.
+  bool enlarge(int32_t p, int sd, const std::vector<std::array<int32_t, 3>>& newTris)
+  {
+    const uint32_t s = ed_.newStamp();
+    for (int32_t t : cav)
+      ed_.tetStamp[t] = s;
+    int32_t f[3];
+    std::vector<int32_t> layer;
+    const size_t n0 = cav.size();
+    for (size_t k = 0; k < n0; ++k)
+    {
+      if (cavSide[k] != sd)
+        continue;
+      const int32_t t = cav[k];
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = m_.neighbor(t, i);
+        if (u < 0 || ed_.tetStamp[u] == s)
+          continue;
+        m_.faceVertices(t, i, f);
+        if (f[0] == p || f[1] == p || f[2] == p || bc_.findSubface(f[0], f[1], f[2]) >= 0)
+          continue;
+        bool isNew = false;
+        for (auto& tr : newTris)
+          isNew = isNew || TriKey(tr[0], tr[1], tr[2]) == TriKey(f[0], f[1], f[2]);
+        if (isNew)
+          continue;
+        ed_.tetStamp[u] = s;
+        layer.push_back(u);
+      }
+    }
+    if (layer.empty())
+      return false;
+    // Add one tet at a time, keeping only those that leave every vertex on the cavity's boundary.
+    bool any = false;
+    for (int32_t u : layer)
+    {
+      cav.push_back(u);
+      cavSide.push_back(sd);
+      if (!vertexOnBoundary(p, sd))
+      {
+        cav.pop_back();
+        cavSide.pop_back();
+        continue;
+      }
+      any = true;
+    }
+    return any;
+  }
+
+  // Every vertex of side sd's cavity tets (but p) is on a face of the cavity not containing p, or on p's
+  // subfaces (which keep their outer vertices on the new boundary triangles).
+  bool vertexOnBoundary(int32_t p, int sd)
+  {
+    const uint32_t s = ed_.newStamp();
+    for (size_t k = 0; k < cav.size(); ++k)
+      if (cavSide[k] == sd)
+        ed_.tetStamp[cav[k]] = s;
+    verts_.clear();
+    onB_.clear();
+    int32_t f[3];
+    for (size_t k = 0; k < cav.size(); ++k)
+    {
+      if (cavSide[k] != sd)
+        continue;
+      const int32_t t = cav[k];
+      for (int i = 0; i < 4; ++i)
+      {
+        if (m_.vertex(t, i) != p)
+          verts_.push_back(m_.vertex(t, i));
+        const int32_t u = m_.neighbor(t, i);
+        if (u >= 0 && ed_.tetStamp[u] == s)
+          continue;
+        m_.faceVertices(t, i, f);
+        for (int j = 0; j < 3; ++j)
+          if (f[j] != p)
+            onB_.push_back(f[j]);
+      }
+    }
+    std::sort(onB_.begin(), onB_.end());
+    for (int32_t v : verts_)
+      if (!std::binary_search(onB_.begin(), onB_.end(), v))
+        return false;
+    return true;
+  }
+  std::vector<int32_t> verts_, onB_;
+
   // A point strictly inside the cavity bounded by `faces` (each seen positively from inside), near p.
+  // Candidates, best shape first among the valid ones: p pushed along the mean normal of the faces through
+  // p (the new boundary triangles), points between p and the cavity's centroid or the old tets'
+  // centroids, and the Chebyshev centre of the kernel (the point deepest inside every face plane, found
+  // by a small linear programme) with points between it and p. Every candidate is checked exactly.
   bool findPoint(int32_t p, const std::vector<std::array<int32_t, 3>>& faces, double* out)
   {
     const double* P = m_.point(p);
-    double dir[3] = { 0, 0, 0 }, cen[3] = { 0, 0, 0 };
-    double L = 0;
-    int nv = 0;
-    for (auto& fc : faces)
+    if (faces.empty())
+      return false;
+    // Unit inward normals, the distance of p from each face plane and a length scale.
+    const size_t nf = faces.size();
+    normals_.assign(nf, {});
+    std::vector<double> dist(nf, 0);
+    double L = 0, cen[3] = { 0, 0, 0 };
+    for (size_t i = 0; i < nf; ++i)
     {
-      const double *A = m_.point(fc[0]), *B = m_.point(fc[1]), *C = m_.point(fc[2]);
-      const bool hasP = false;
-      (void)hasP;
+      const double *A = m_.point(faces[i][0]), *B = m_.point(faces[i][1]), *C = m_.point(faces[i][2]);
       double u[3], v[3];
       for (int k = 0; k < 3; ++k)
       {
         u[k] = B[k] - A[k];
         v[k] = C[k] - A[k];
-        cen[k] += A[k] + B[k] + C[k];
+        cen[k] += (A[k] + B[k] + C[k]) / (3.0 * static_cast<double>(nf));
       }
-      nv += 3;
-      for (int j = 0; j < 3; ++j)
-        L += std::sqrt((m_.point(fc[j])[0] - P[0]) * (m_.point(fc[j])[0] - P[0]) +
-          (m_.point(fc[j])[1] - P[1]) * (m_.point(fc[j])[1] - P[1]) +
-          (m_.point(fc[j])[2] - P[2]) * (m_.point(fc[j])[2] - P[2]));
-      // Only faces that pass close to p (the new boundary triangles) steer the direction; all faces
-      // contribute a little, which is harmless.
-      const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
-      // Weight by how close the face's plane is to p (the new boundary faces pass through p).
-      double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (nn == 0)
-        continue;
-      const double dist = std::fabs((P[0] - A[0]) * n[0] + (P[1] - A[1]) * n[1] + (P[2] - A[2]) * n[2]) / nn;
-      const double w = 1.0 / (dist + 1e-300);
-      for (int k = 0; k < 3; ++k)
-        dir[k] += w * n[k] / nn;
+      // orient3d(A,B,C,X) > 0  <=>  (X - A) . ((B - A) x (C - A)) > 0 (Predicates.h).
+      double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+      const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (nn > 0)
+        for (int k = 0; k < 3; ++k)
+          n[k] /= nn;
+      normals_[i] = { { n[0], n[1], n[2] } };
+      dist[i] = (P[0] - A[0]) * n[0] + (P[1] - A[1]) * n[1] + (P[2] - A[2]) * n[2];
+      for (const double* X : { A, B, C })
+        L = std::max(L, std::sqrt((X[0] - P[0]) * (X[0] - P[0]) + (X[1] - P[1]) * (X[1] - P[1]) +
+                          (X[2] - P[2]) * (X[2] - P[2])));
     }
-    if (nv == 0)
+    if (!(L > 0))
       return false;
-    for (int k = 0; k < 3; ++k)
-      cen[k] /= nv;
-    L /= nv;
+    // Mean normal of the faces (nearly) through p.
+    double dir[3] = { 0, 0, 0 };
+    double dmin = 1e300;
+    for (size_t i = 0; i < nf; ++i)
+      dmin = std::min(dmin, std::fabs(dist[i]));
+    for (size_t i = 0; i < nf; ++i)
+      if (std::fabs(dist[i]) <= dmin + 1e-9 * L)
+        for (int k = 0; k < 3; ++k)
+          dir[k] += normals_[i][k];
     const double dl = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    std::vector<std::array<double, 3>> cands;
+    std::vector<std::array<double, 3>>& cands = cands_;
+    cands.clear();
     for (double t : { 1.0, 0.5, 0.25 })
       cands.push_back({ { P[0] + t * (cen[0] - P[0]), P[1] + t * (cen[1] - P[1]), P[2] + t * (cen[2] - P[2]) } });
     if (dl > 0)
     {
-      double delta = 0.5 * L;
-      for (int k = 0; k < 60; ++k, delta *= 0.5)
+      double delta = 0.25 * L;
+      for (int k = 0; k < 40; ++k, delta *= 0.5)
         cands.push_back({ { P[0] + delta * dir[0] / dl, P[1] + delta * dir[1] / dl, P[2] + delta * dir[2] / dl } });
     }
-    // Points inside the old tets around p (their centroids pulled towards p).
     for (auto& fc : faces)
     {
       double g[3];
       for (int k = 0; k < 3; ++k)
         g[k] = (m_.point(fc[0])[k] + m_.point(fc[1])[k] + m_.point(fc[2])[k] + P[k]) / 4.0;
-      for (double t : { 1.0, 0.5, 0.1, 0.01, 0.001 })
+      for (double t : { 1.0, 0.1, 0.001 })
         cands.push_back({ { P[0] + t * (g[0] - P[0]), P[1] + t * (g[1] - P[1]), P[2] + t * (g[2] - P[2]) } });
     }
+    if (pickCandidate(faces, out))
+      return true;
+    // Kernel search: maximise r subject to n_i . (x - P) - r * L >= -dist_i (x near P, scaled by L).
+    double y[3];
+    if (!chebyshevCentre(dist, L, y))
+      return false;
+    cands.clear();
+    for (double t : { 1.0, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 64, 1.0 / 256, 1.0 / 4096 })
+      cands.push_back({ { P[0] + t * L * y[0], P[1] + t * L * y[1], P[2] + t * L * y[2] } });
+    return pickCandidate(faces, out);
+  }
+
+  // The best-shaped valid candidate among the first four valid ones of cands_.
+  bool pickCandidate(const std::vector<std::array<int32_t, 3>>& faces, double* out)
+  {
     double bestQ = -1;
     bool found = false;
     int validSeen = 0;
-    for (auto& c : cands)
+    for (auto& c : cands_)
     {
       bool ok = true;
       double q = 1e300;
@@ -490,6 +652,109 @@ private:
     }
     return found;
   }
+
+  // Chebyshev centre of {y : n_i . y * L + dist_i >= 0} in units of L around p: maximise r subject to
+  // -n_i . y + r <= dist_i / L, |y_k| <= 1, 0 <= r <= 1, by a dense simplex (Bland's rule; p, y = 0, is
+  // feasible once the tiny negative distances of faces through p are clamped to 0). False when the
+  // kernel has no interior (r = 0) or the programme did not finish.
+  bool chebyshevCentre(const std::vector<double>& dist, double L, double* y)
+  {
+    const int nf = static_cast<int>(dist.size());
+    const int n = 7;           // y+ (3), y- (3), r
+    const int m = nf + 7;      // faces, |y_k| <= 1 (6), r <= 1
+    const int cols = n + m + 1; // variables, slacks, right-hand side
+    std::vector<double>& T = tableau_;
+    T.assign(static_cast<size_t>(m + 1) * cols, 0.0);
+    auto at = [&](int i, int j) -> double& { return T[static_cast<size_t>(i) * cols + j]; };
+    for (int i = 0; i < nf; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        at(i, k) = -normals_[i][k];
+        at(i, 3 + k) = normals_[i][k];
+      }
+      at(i, 6) = 1;
+      at(i, cols - 1) = std::max(0.0, dist[i] / L);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      at(nf + 2 * k, k) = 1;
+      at(nf + 2 * k, 3 + k) = -1;
+      at(nf + 2 * k, cols - 1) = 1;
+      at(nf + 2 * k + 1, k) = -1;
+      at(nf + 2 * k + 1, 3 + k) = 1;
+      at(nf + 2 * k + 1, cols - 1) = 1;
+    }
+    at(nf + 6, 6) = 1;
+    at(nf + 6, cols - 1) = 1;
+    for (int i = 0; i < m; ++i)
+      at(i, n + i) = 1;
+    at(m, 6) = -1; // objective row: maximise r
+    std::vector<int> basis(static_cast<size_t>(m));
+    for (int i = 0; i < m; ++i)
+      basis[i] = n + i;
+    const double eps = 1e-12;
+    bool optimal = false;
+    for (int iter = 0; iter < 50 * (m + n); ++iter)
+    {
+      int j = -1;
+      for (int c = 0; c < n + m; ++c)
+        if (at(m, c) < -eps)
+        {
+          j = c;
+          break;
+        }
+      if (j < 0)
+      {
+        optimal = true;
+        break;
+      }
+      int r = -1;
+      double best = 0;
+      for (int i = 0; i < m; ++i)
+      {
+        const double a = at(i, j);
+        if (a <= eps)
+          continue;
+        const double ratio = at(i, cols - 1) / a;
+        if (r < 0 || ratio < best - 1e-15 || (ratio <= best + 1e-15 && basis[i] < basis[r]))
+        {
+          r = i;
+          best = ratio;
+        }
+      }
+      if (r < 0)
+        return false; // unbounded (cannot happen with the box)
+      const double piv = at(r, j);
+      for (int c = 0; c < cols; ++c)
+        at(r, c) /= piv;
+      for (int i = 0; i <= m; ++i)
+      {
+        if (i == r)
+          continue;
+        const double f = at(i, j);
+        if (f == 0)
+          continue;
+        for (int c = 0; c < cols; ++c)
+          at(i, c) -= f * at(r, c);
+      }
+      basis[r] = j;
+    }
+    if (!optimal)
+      return false;
+    double x[7] = { 0, 0, 0, 0, 0, 0, 0 };
+    for (int i = 0; i < m; ++i)
+      if (basis[i] < n)
+        x[basis[i]] = at(i, cols - 1);
+    if (!(x[6] > 1e-14))
+      return false;
+    for (int k = 0; k < 3; ++k)
+      y[k] = x[k] - x[3 + k];
+    return true;
+  }
+
+  std::vector<std::array<double, 3>> normals_, cands_;
+  std::vector<double> tableau_;
 
   MeshEditor& ed_;
   TetMesh& m_;

@@ -8,10 +8,13 @@
 //      triangle itself, so the final boundary is exactly the input;
 //   2. the tets around p, split by the boundary into one side (after exterior removal) or two (an
 //      interface kept on both sides), are replaced on each side by the cone from a relocated point p'
-//      strictly inside that side: p' = p + delta * (inward normal), delta halved until every face of the
-//      side's cavity sees p' strictly positively (checked with the exact orient3d; the centroid of the
-//      cavity is tried too). The first side reuses p's vertex id (moved), a second side gets a new
-//      vertex. Relocated points are interior Steiner points (allowed, counted).
+//      strictly inside that side's cavity (every cavity face sees p' strictly positively, checked with the
+//      exact orient3d). Candidates: p pushed along the mean normal of the new boundary triangles, points
+//      towards the cavity's centroid, and the Chebyshev centre of the cavity's kernel (a small linear
+//      programme: the point deepest inside every face plane) with points between it and p. When the
+//      kernel is empty (p in a reflex or flat corner), the cavity is enlarged by up to three layers of
+//      outer tets (never across a constraint, never swallowing a vertex) and the search repeated.
+//      Relocated points are new interior Steiner points (allowed, counted).
 // Points that cannot be removed stay and are reported (the caller turns them into RecoveryFailed).
 #pragma once
 
