@@ -1,0 +1,19 @@
+// Exact triangle-triangle intersection: the primitives behind trianglesIntersect and
+// triangleIsDegenerate (declared in SurfaceChecks.h). Every decision is an exact orientation test;
+// coplanar cases are decided in the projection that drops one axis. The helpers below are shared with
+// the point-in-surface test (ShellNesting.cxx). Internal to Core.
+#pragma once
+
+namespace volgrid::detail
+{
+
+// Axis whose projection keeps triangle (a,b,c) non-degenerate, or -1 when it is collinear.
+int projectionAxis(const double* a, const double* b, const double* c);
+
+// Closed point-in-triangle test in the projection dropping `axis`; o = orient2dProjected(a,b,c,axis) != 0.
+bool pointInTriangle2(const double* p, const double* a, const double* b, const double* c, int axis, int o);
+
+// Closed segment-triangle test for a segment in the triangle's plane.
+bool coplanarSegmentTriangle(const double* p, const double* q, const double* a, const double* b, const double* c);
+
+} // namespace volgrid::detail
