@@ -212,6 +212,13 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   }
   st.secondsSteiner = since(t0);
 
+  // 5b. Grid control and quality (MeshImprovement.h).
+  t0 = std::chrono::steady_clock::now();
+  s = improveDomainMesh(ed, bc, surf, kinds, regions.tetRegion, options.improvement, st.improvement, pr);
+  if (!s.ok())
+    return s;
+  st.secondsImprovement = since(t0);
+
   // 6. Output.
   const int32_t nv = mesh.numVertices();
   std::vector<int32_t> outId(static_cast<size_t>(nv), -1);
@@ -256,6 +263,7 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     result.boundaryInputTriangle.push_back(t);
     result.boundaryPatch.push_back(surf.hasPatchIds() ? surf.patchIds[t] : result.triangleShell[t]);
   }
+  st.steinerInterior -= st.improvement.fieldPoints + st.improvement.clusterPoints;
   st.points = static_cast<int64_t>(result.points.size() / 3);
   st.tets = static_cast<int64_t>(result.tets.size() / 4);
   st.enclosedVolume = enclosedVolume(surf.points, surf.triangles, result.triangleShell, shellDepth, options.regionRule);

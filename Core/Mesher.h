@@ -11,10 +11,12 @@
 //   3. Recover the missing boundary edges and facets: flips, then Steiner points (BoundaryRecovery.h).
 //   4. Remove the exterior by flood fill and select the regions (Regions.h).
 //   5. Remove every Steiner point that lies on the boundary by relocating it inside (SteinerRemoval.h).
+//   5b. Grid control and quality: field points, clustering, optimisation (MeshImprovement.h).
 //   6. Output the tets (positively oriented, labelled by region) and the boundary triangles with PatchId.
 // Anything that cannot be recovered is reported with ErrorKind::RecoveryFailed, never hidden.
 #pragma once
 
+#include "MeshImprovement.h"
 #include "Progress.h"
 #include "Regions.h"
 #include "Status.h"
@@ -49,6 +51,9 @@ struct MesherOptions
   bool verify = false;
   // Threads for the surface checks (0 = automatic).
   int threads = 0;
+  // Grid control and quality after step 5 (MeshImprovement.h): field points, sizing, clustering,
+  // optimisation. On by default.
+  ImprovementOptions improvement;
 };
 
 struct MesherStatistics
@@ -69,6 +74,9 @@ struct MesherStatistics
   double tetVolume = 0;          // sum of the output tets' volumes
   double secondsCheck = 0, secondsDelaunay = 0, secondsRecovery = 0, secondsExterior = 0, secondsSteiner = 0,
          secondsTotal = 0;
+  // Grid control and quality (field and cluster points are not counted in steinerInterior).
+  ImprovementStatistics improvement;
+  double secondsImprovement = 0;
 };
 
 struct MesherResult

@@ -13,7 +13,7 @@ packages=(build-essential cmake pkg-config libgtest-dev
 case "$level" in
   build) ;;
   test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev) ;;
-  bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time) ;;
+  bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac
 

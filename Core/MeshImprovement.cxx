@@ -1,0 +1,329 @@
+#include "MeshImprovement.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+namespace volgrid
+{
+
+namespace
+{
+double since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool finitePositive(double x)
+{
+  return std::isfinite(x) && x > 0;
+}
+
+Status checkOptions(const ImprovementOptions& o)
+{
+  const FieldPointOptions& f = o.fieldPointOptions;
+  if (!(f.alpha > 0) || !(f.beta >= 0) || !std::isfinite(f.alpha) || !std::isfinite(f.beta) || f.maxPasses < 0 ||
+    !(f.maxVolume >= 0))
+    return Status::failure(ErrorKind::InvalidOption, "Field points need alpha > 0, beta >= 0, maxVolume >= 0.");
+  const SizingOptions& s = o.sizing;
+  if (!(s.maxEdgeLength >= 0) || !(s.minEdgeLength >= 0) || !(s.scale > 0) || !std::isfinite(s.gradation))
+    return Status::failure(ErrorKind::InvalidOption,
+      "Sizing needs maxEdgeLength >= 0, minEdgeLength >= 0, scale > 0 and a finite gradation.");
+  if (o.clusterPoints.size() % 3 != 0 || o.sizingPoints.size() % 3 != 0)
+    return Status::failure(ErrorKind::InvalidOption, "Cluster and sizing points are given as x,y,z triples.");
+  if (!o.clusterSizes.empty() && o.clusterSizes.size() * 3 != o.clusterPoints.size())
+    return Status::failure(ErrorKind::InvalidOption, "clusterSizes needs one value per cluster point (or none).");
+  if (o.sizingValues.size() * 3 != o.sizingPoints.size())
+    return Status::failure(ErrorKind::InvalidOption, "sizingValues needs one value per sizing point.");
+  if (o.optimize && (!(o.optimization.targetDegrees > 0 && o.optimization.targetDegrees < 90) ||
+                      o.optimization.maxPasses < 0))
+    return Status::failure(ErrorKind::InvalidOption, "Optimisation needs 0 < targetDegrees < 90 and maxPasses >= 0.");
+  return Status::success();
+}
+} // namespace
+
+ImprovementOptions::ImprovementOptions()
+{
+  // Defaults chosen for a good mesh with no option set (measured on the sphere-in-sphere domain and the
+  // clean corpus): the paper's density, a smooth size transition, and every dihedral angle in [18, 162]
+  // where the boundary triangles allow it.
+  fieldPointOptions.alpha = 1.2;
+  fieldPointOptions.beta = 0.55;
+  sizing.gradation = 1.5;
+  optimization.targetDegrees = 18.0;
+  optimization.maxPasses = 8;
+}
+
+Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, const SurfaceMesh& surface,
+  std::vector<VertexKind>& kinds, std::vector<int32_t>& tetRegion, const ImprovementOptions& options,
+  ImprovementStatistics& stats, Progress* progress)
+{
+  stats = ImprovementStatistics();
+  TetMesh& mesh = editor.mesh;
+  if (!options.fieldPoints && !options.optimize && options.clusterPoints.empty())
+    return Status::success();
+  Status s = checkOptions(options);
+  if (!s.ok())
+    return s;
+  if (mesh.numGhostTets() > 0)
+    return Status::failure(ErrorKind::InternalError, "Grid improvement needs the mesh of the domain (no ghosts).");
+  const int32_t nv0 = mesh.numVertices();
+
+  // 1. Interior boundary subfaces (interfaces between kept regions) become explicit constraints; faces
+  //    without a neighbour are constrained anyway.
+  FaceConstraints fc;
+  editor.rebuildVertexMap();
+  for (int32_t f = 0; f < bc.capacity(); ++f)
+  {
+    if (!bc.alive(f))
+      continue;
+    const int32_t* v = bc.subface(f);
+    int face = -1;
+    const int32_t t = editor.findFace(v[0], v[1], v[2], &face);
+    if (t >= 0 && face >= 0 && mesh.neighborCode(t, face) >= 0)
+      fc.add(v[0], v[1], v[2]);
+  }
+  stats.interfaceFaces = static_cast<int64_t>(fc.size());
+  stats.before = summarizeDihedrals(mesh);
+  if (tetRegion.size() < static_cast<size_t>(mesh.tetCapacity()))
+    tetRegion.resize(static_cast<size_t>(mesh.tetCapacity()), -1);
+
+  // 2. Sizing field and 3. clustering + field points.
+  const size_t nCluster = options.clusterPoints.size() / 3;
+  if (options.fieldPoints || nCluster > 0)
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    SizingField sizing;
+    if (options.sizingFunction)
+      sizing.setUserFunction(options.sizingFunction);
+    if (!options.sizingPoints.empty())
+      sizing.setBackgroundCloud(options.sizingPoints.data(), options.sizingValues.data(), options.sizingValues.size());
+    if (!options.clusterSizes.empty())
+      sizing.addSizedPoints(options.clusterPoints.data(), options.clusterSizes.data(), nCluster);
+    if (options.fieldPoints)
+    {
+      // The boundary points with their PDF (eq. 3) become sized nodes, each moved by a millionth of its
+      // own PDF: the background Delaunay of the sizing field then sees no cospherical or coplanar sets
+      // (spheres, boxes), which would send every insphere test to exact arithmetic, and the interpolated
+      // sizes change by a negligible amount. The mesh itself is untouched.
+      const std::vector<double> pdf = pointDistributionFunction(
+        surface.points.data(), surface.numberOfPoints(), surface.triangles.data(), surface.numberOfTriangles());
+      std::vector<double> xyz, h;
+      xyz.reserve(surface.points.size());
+      h.reserve(pdf.size());
+      uint64_t state = 0x9E3779B97F4A7C15ull;
+      for (int32_t i = 0; i < surface.numberOfPoints(); ++i)
+      {
+        if (!(pdf[i] > 0))
+          continue;
+        for (int k = 0; k < 3; ++k)
+        {
+          state = state * 6364136223846793005ull + 1442695040888963407ull;
+          const double u = static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0) - 0.5; // [-0.5, 0.5)
+          xyz.push_back(surface.points[3 * static_cast<size_t>(i) + k] + 2e-6 * u * pdf[i]);
+        }
+        h.push_back(pdf[i] * options.sizing.scale);
+      }
+      sizing.addSizedPoints(xyz.data(), h.data(), h.size());
+      s = sizing.build(nullptr, 0, nullptr, 0, options.sizing, progress);
+      if (!s.ok())
+        return s;
+    }
+    stats.secondsSizing = since(t0);
+    t0 = std::chrono::steady_clock::now();
+    FieldPointReport fr;
+    if (nCluster > 0)
+    {
+      s = insertClusterPoints(mesh, options.clusterPoints.data(), nCluster, 0, &fc, &tetRegion, nullptr, progress, &fr);
+      if (!s.ok())
+        return s;
+      stats.clusterPoints = fr.clusterInserted;
+      stats.clusterSkipped = fr.clusterOutside + fr.clusterRejected;
+    }
+    if (options.fieldPoints)
+    {
+      s = insertFieldPoints(mesh, sizing, options.fieldPointOptions, &fc, &tetRegion, nullptr, progress, &fr);
+      if (!s.ok())
+        return s;
+      stats.fieldPoints = fr.inserted;
+      stats.fieldPasses = fr.passes;
+    }
+    stats.secondsFieldPoints = since(t0);
+  }
+
+  // 4. Optimisation.
+  if (options.optimize)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    OptimizationReport orep;
+    s = optimizeMesh(mesh, &fc, nullptr, &tetRegion, options.optimization, progress, &orep);
+    if (!s.ok())
+      return s;
+    stats.after = orep.after;
+    stats.optimizationPasses = orep.passes;
+    stats.flips = orep.flips23 + orep.edgeRemovals;
+    stats.smoothMoves = orep.smoothMoves;
+    stats.secondsOptimization = since(t0);
+  }
+  else
+    stats.after = summarizeDihedrals(mesh);
+
+  if (mesh.numVertices() > nv0)
+    kinds.resize(static_cast<size_t>(mesh.numVertices()), VertexKind::SteinerInterior);
+  if (tetRegion.size() < static_cast<size_t>(mesh.tetCapacity()))
+    tetRegion.resize(static_cast<size_t>(mesh.tetCapacity()), -1);
+  editor.rebuildVertexMap();
+  return Status::success();
+}
+
+Status tetMeshFromTets(const std::vector<double>& points, const std::vector<int32_t>& tets, TetMesh& mesh)
+{
+  mesh.clear();
+  if (points.size() % 3 != 0 || tets.size() % 4 != 0)
+    return Status::failure(ErrorKind::InvalidOption, "Points come in triples and tets in quadruples.");
+  const int32_t nv = static_cast<int32_t>(points.size() / 3);
+  const size_t nt = tets.size() / 4;
+  mesh.points = points;
+  mesh.reserve(static_cast<size_t>(nv), nt);
+  for (size_t t = 0; t < nt; ++t)
+  {
+    int32_t v[4] = { tets[4 * t], tets[4 * t + 1], tets[4 * t + 2], tets[4 * t + 3] };
+    for (int i = 0; i < 4; ++i)
+      if (v[i] < 0 || v[i] >= nv)
+        return Status::failure(ErrorKind::InvalidOption,
+          "Tet " + std::to_string(t) + " refers to point " + std::to_string(v[i]) + ", which does not exist.",
+          { static_cast<int64_t>(t) });
+    const int o = predicates::orient3d(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+    if (o == 0)
+      return Status::failure(ErrorKind::InvalidOption, "Tet " + std::to_string(t) + " is flat.",
+        { static_cast<int64_t>(t) });
+    if (o < 0)
+      std::swap(v[0], v[1]);
+    mesh.newTet(v[0], v[1], v[2], v[3]);
+  }
+  // Link the faces through a map from the sorted vertex triple.
+  struct Key
+  {
+    int32_t a, b, c;
+    bool operator==(const Key& o) const { return a == o.a && b == o.b && c == o.c; }
+  };
+  struct Hash
+  {
+    size_t operator()(const Key& k) const
+    {
+      uint64_t h = static_cast<uint32_t>(k.a) * 0x9E3779B97F4A7C15ull;
+      h ^= (static_cast<uint64_t>(static_cast<uint32_t>(k.b)) + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
+      h ^= (static_cast<uint64_t>(static_cast<uint32_t>(k.c)) << 21) * 0x165667B19E3779F9ull;
+      return static_cast<size_t>(h ^ (h >> 29));
+    }
+  };
+  std::unordered_map<Key, int32_t, Hash> open;
+  open.reserve(nt * 2 + 16);
+  for (int32_t t = 0; t < static_cast<int32_t>(nt); ++t)
+    for (int i = 0; i < 4; ++i)
+    {
+      int32_t f[3];
+      mesh.faceVertices(t, i, f);
+      std::sort(f, f + 3);
+      const Key k{ f[0], f[1], f[2] };
+      auto it = open.find(k);
+      if (it == open.end())
+      {
+        open.emplace(k, TetMesh::encode(t, i));
+        continue;
+      }
+      if (it->second < 0)
+        return Status::failure(ErrorKind::InvalidOption,
+          "Face (" + std::to_string(f[0]) + "," + std::to_string(f[1]) + "," + std::to_string(f[2]) +
+            ") is shared by more than two tets.",
+          { t });
+      mesh.link(t, i, it->second >> 2, it->second & 3);
+      it->second = -2; // closed
+    }
+  return Status::success();
+}
+
+Status refineTetMesh(TetMesh& mesh, const std::vector<double>& targetSize, std::vector<int32_t>* regions,
+  const RefineOptions& options, Progress* progress, RefineReport* reportOut)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  RefineReport local;
+  RefineReport& report = reportOut ? *reportOut : local;
+  report = RefineReport();
+  if (mesh.numGhostTets() > 0)
+    return Status::failure(ErrorKind::InvalidOption, "Refinement works on a mesh without ghost tets.");
+  if (targetSize.size() != static_cast<size_t>(mesh.numVertices()))
+    return Status::failure(ErrorKind::InvalidOption, "Refinement needs one target size per mesh vertex.");
+  report.before = summarizeDihedrals(mesh);
+
+  // Constraints: faces between different regions (faces without a neighbour are constrained anyway).
+  FaceConstraints fc;
+  if (regions)
+  {
+    regions->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
+    mesh.forEachTet([&](int32_t t) {
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(t, i);
+        if (u > t && (*regions)[u] != (*regions)[t])
+        {
+          int32_t f[3];
+          mesh.faceVertices(t, i, f);
+          fc.add(f[0], f[1], f[2]);
+        }
+      }
+    });
+  }
+
+  // The targets as a background cloud over the used vertices, optionally graded over the mesh edges.
+  std::vector<double> sizes = targetSize;
+  std::vector<uint8_t> used(static_cast<size_t>(mesh.numVertices()), 0);
+  mesh.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      used[mesh.vertex(t, i)] = 1;
+  });
+  if (options.gradation > 1)
+    limitGradation(mesh, options.gradation - 1, sizes);
+  std::vector<double> xyz, val;
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    if (used[v] && finitePositive(sizes[v]))
+    {
+      xyz.insert(xyz.end(), mesh.point(v), mesh.point(v) + 3);
+      val.push_back(sizes[v]);
+    }
+  if (val.empty())
+    return Status::failure(ErrorKind::InvalidOption, "No vertex has a finite positive target size.");
+  SizingField sizing;
+  sizing.setBackgroundCloud(xyz.data(), val.data(), val.size());
+  Status s = sizing.buildUniform(1e300, SizingOptions());
+  if (!s.ok())
+    return s;
+  FieldPointReport fr;
+  s = insertFieldPoints(mesh, sizing, options.fieldPointOptions, fc.empty() ? nullptr : &fc, regions, nullptr,
+    progress, &fr);
+  if (!s.ok())
+    return s;
+  report.inserted = fr.inserted;
+  report.passes = fr.passes;
+  if (options.optimize)
+  {
+    OptimizationReport orep;
+    s = optimizeMesh(mesh, fc.empty() ? nullptr : &fc, nullptr, regions, options.optimization, progress, &orep);
+    if (!s.ok())
+      return s;
+    report.after = orep.after;
+  }
+  else
+    report.after = summarizeDihedrals(mesh);
+  if (regions)
+    regions->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
+  report.seconds = since(t0);
+  return Status::success();
+}
+
+} // namespace volgrid

@@ -1,0 +1,116 @@
+// Grid control and element quality as one mesher stage (paper 2, 4, 7.2 and 7.6; issue 4): the glue
+// between the mesher (Mesher.h) and the stages SizingField.h, FieldPoints.h, MeshSmoothing.h and
+// MeshOptimization.h, plus adaptivity of an existing tet mesh.
+//
+// improveDomainMesh() runs on the mesh of the domain once the boundary is recovered, the exterior removed
+// and the boundary Steiner points removed (Mesher.cxx step 5b):
+//   1. Constraints: faces without a neighbour (the domain boundary) are constrained by TetEditor; the
+//      live boundary subfaces that have tets on both sides (interfaces between kept regions, KeepAll)
+//      are added to a FaceConstraints set, so that no stage crosses or changes them.
+//   2. Sizing field: the boundary PDF (eq. 3) at the surface points, the optional clustering sizes as
+//      sized nodes, the optional background cloud / callback, graded and capped (SizingField.h).
+//   3. Clustering points (optional), then field points (eq. 4 and 5), both by constrained Bowyer-Watson
+//      insertion that never crosses a constrained face.
+//   4. Optimisation: flips, edge removal and smoothing towards a target minimum dihedral angle
+//      (MeshOptimization.h), which never changes a constrained face and never moves its vertices.
+// The boundary is therefore the input boundary, exactly: same points, same triangles. New vertices are
+// marked VertexKind::SteinerInterior in `kinds` (field and cluster points are strictly interior), region
+// labels follow the tets, and the editor's vertex map is rebuilt for the output stage.
+//
+// refineTetMesh() is the paper's section 4 adaptivity: an existing tet mesh (e.g. a VolGrid mesh read
+// back) and a target edge length per vertex (e.g. from a solver's error estimate) -> field points where
+// the target is smaller than the current spacing, then optimisation; the boundary faces (and the faces
+// between different regions) are kept exactly.
+#pragma once
+
+#include "BoundaryRecovery.h"
+#include "FieldPoints.h"
+#include "MeshOptimization.h"
+#include "Progress.h"
+#include "SizingField.h"
+#include "Status.h"
+#include "SurfaceMesh.h"
+#include "TetMesh.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace volgrid
+{
+
+// Grid control and quality options (a member of MesherOptions; shared by the CLI and the filter).
+struct ImprovementOptions
+{
+  ImprovementOptions();
+
+  // Field points (paper 7.2): alpha (eq. 4: larger = fewer points), beta (eq. 5: spacing in units of h),
+  // maxVolume (global cap on tet volume, 0 = none).
+  bool fieldPoints = true;
+  FieldPointOptions fieldPointOptions;
+  // Sizing: gradation (size growth bound between neighbours, > 1), maxEdgeLength (0 = none), scale.
+  SizingOptions sizing;
+  // Clustering: points (x,y,z each) inserted into the domain; clusterSizes (empty, or one target edge
+  // length per point; <= 0 or non-finite = none) densify their neighbourhood through the sizing field.
+  std::vector<double> clusterPoints;
+  std::vector<double> clusterSizes;
+  // Background sizing cloud: points (x,y,z each) with one target edge length each, interpolated linearly
+  // in space (e.g. a coarse background mesh or a CFD solution's point array).
+  std::vector<double> sizingPoints;
+  std::vector<double> sizingValues;
+  // Optional sizing callback h(x) (combined by min with the rest).
+  std::function<double(const double*)> sizingFunction;
+  // Optimisation (flips, edge removal, smoothing) towards a target min(theta_min, 180 - theta_max).
+  bool optimize = true;
+  OptimizationOptions optimization;
+};
+
+struct ImprovementStatistics
+{
+  int64_t fieldPoints = 0;      // field points inserted
+  int fieldPasses = 0;
+  int64_t clusterPoints = 0;    // clustering points inserted
+  int64_t clusterSkipped = 0;   // outside, on the boundary, duplicates or too close
+  int64_t interfaceFaces = 0;   // interior faces kept as constraints (region interfaces)
+  DihedralSummary before, after; // dihedral angles before the field points and after everything
+  int optimizationPasses = 0;
+  int64_t flips = 0;            // 2-3 flips and edge removals
+  int64_t smoothMoves = 0;
+  double secondsSizing = 0, secondsFieldPoints = 0, secondsOptimization = 0;
+};
+
+// The mesher's stage (see above). `surface` gives the boundary points and triangles for the PDF;
+// `kinds` is extended to the new vertices; tetRegion (per tet slot) is kept in step.
+// Errors: InvalidOption (bad option values), Cancelled.
+Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, const SurfaceMesh& surface,
+  std::vector<VertexKind>& kinds, std::vector<int32_t>& tetRegion, const ImprovementOptions& options,
+  ImprovementStatistics& stats, Progress* progress = nullptr);
+
+// A ghost-free TetMesh with adjacency from a tet list (4 ids per tet; negatively oriented tets are
+// reoriented). Faces shared by two tets are linked, the others have no neighbour.
+// Errors: InvalidOption (bad ids, a flat tet, a face shared by more than two tets).
+Status tetMeshFromTets(const std::vector<double>& points, const std::vector<int32_t>& tets, TetMesh& mesh);
+
+struct RefineOptions
+{
+  FieldPointOptions fieldPointOptions; // alpha, beta as for meshing
+  double gradation = 0;                // > 1: grade the target sizes over the mesh edges first
+  bool optimize = true;
+  OptimizationOptions optimization;
+};
+
+struct RefineReport
+{
+  int64_t inserted = 0;
+  int passes = 0;
+  DihedralSummary before, after;
+  double seconds = 0;
+};
+
+// Paper section 4: refine `mesh` (ghost-free) where targetSize (one per vertex; non-finite or <= 0 =
+// no target there) is smaller than the current spacing. Faces without a neighbour, and faces between
+// tets of different `regions` labels (optional, per tet slot), are kept exactly. regions is kept in step.
+Status refineTetMesh(TetMesh& mesh, const std::vector<double>& targetSize, std::vector<int32_t>* regions,
+  const RefineOptions& options, Progress* progress = nullptr, RefineReport* report = nullptr);
+
+} // namespace volgrid
