@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <set>
 #include <vector>
@@ -606,6 +607,140 @@ TEST(Predicates, InlineVersionsAgree)
       ASSERT_EQ(P::insphereSoSInline(a, b, c, d, e, 1, 2, 3, 4, 5), P::insphereSoS(a, b, c, d, e, 1, 2, 3, 4, 5));
     }
   }
+}
+
+// ---- Adaptive stages ----------------------------------------------------------------------------------------
+// Near-degenerate inputs whose coordinate differences are NOT exact (coordinates of different binades
+// around the origin): the exact paths decide them in stages (long double filter, stage B on the rounded
+// differences, stage C with the first-order tail terms, full evaluation). Every stage must give the
+// rational sign, and every stage must be reached, with and without the long double filter.
+int stagedInsphere(const std::array<Pt, 5>& p, bool extended, int& stage)
+{
+  return P::detail::insphereExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), extended,
+    &stage);
+}
+
+TEST(Predicates, InsphereAdaptiveStagesAgainstRational)
+{
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> axis(0, 2), which(0, 4), sign(0, 1);
+  auto onSphere = [&](const Pt& c, double r, const Pt& around, double spread) {
+    Pt v = { around[0] + spread * u(rng), around[1] + spread * u(rng), around[2] + spread * u(rng) };
+    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return Pt{ c[0] + r * v[0] / n, c[1] + r * v[1] / n, c[2] + r * v[2] / n };
+  };
+  int count[2][7] = {};
+  int checks = 0, inexact = 0;
+  for (int t = 0; t < 6000; ++t)
+  {
+    std::array<Pt, 5> p;
+    const int kind = t % 4;
+    if (kind < 3)
+    { // rounded points of a sphere around (near) the origin, spread over it or clustered (mesh-like)
+      const double r = kind == 0 ? 1.0 : (kind == 1 ? 0x1p-20 * 3 : 37.25);
+      const Pt c = { 0.25 * r * u(rng), 0.25 * r * u(rng), 0.25 * r * u(rng) };
+      const Pt around = { u(rng), u(rng), u(rng) };
+      const double spread = (t / 4) % 3 == 0 ? 4.0 : ((t / 4) % 3 == 1 ? 0.1 : 0.01);
+      for (auto& q : p)
+        q = onSphere(c, r, around, spread);
+    }
+    else
+    { // signed permutations of (x, y, z): exactly cospherical around the origin, differences such as
+      // x - y mostly inexact
+      const double v[3] = { u(rng), u(rng) * 0.3, u(rng) * 1e-3 };
+      std::array<int, 48> m;
+      for (int i = 0; i < 48; ++i)
+        m[i] = i;
+      std::shuffle(m.begin(), m.end(), rng);
+      static const int perms[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+      for (int i = 0; i < 5; ++i)
+      {
+        const int* pm = perms[m[i] / 8];
+        const int sg = m[i] % 8;
+        p[i] = { (sg & 1) ? -v[pm[0]] : v[pm[0]], (sg & 2) ? -v[pm[1]] : v[pm[1]], (sg & 4) ? -v[pm[2]] : v[pm[2]] };
+      }
+    }
+    if ((t / 2) % 3 == 1) // one coordinate of one point 1 ulp off
+      p[which(rng)] = nudge(p[which(rng)], axis(rng), sign(rng) ? 1 : -1);
+    if (refOrient3d(p[0], p[1], p[2], p[3]) == 0)
+      continue;
+    const int ref = refInsphere(p[0], p[1], p[2], p[3], p[4]);
+    for (int ext = 0; ext < 2; ++ext)
+    {
+      int stage = 0;
+      ASSERT_EQ(stagedInsphere(p, ext == 1, stage), ref) << "t=" << t << " extended=" << ext << " stage=" << stage;
+      ASSERT_GE(stage, 1);
+      ASSERT_LE(stage, 6);
+      ++count[ext][stage];
+      inexact += ext == 0 && stage >= 3;
+    }
+    ASSERT_EQ(insph(p[0], p[1], p[2], p[3], p[4]), ref) << "t=" << t;
+    ++checks;
+  }
+  EXPECT_GT(checks, 5000);
+  EXPECT_GT(inexact, 1000);
+  // Without the long double filter: stage B, stage C and the full evaluation all decide some.
+  EXPECT_EQ(count[0][1], 0);
+  EXPECT_GT(count[0][3], 50) << "stage B";
+  EXPECT_GT(count[0][4], 50) << "stage C";
+  EXPECT_GT(count[0][5], 50) << "full";
+  // With it (where long double is wider than double), it decides most of the near-degenerate calls.
+  if (std::numeric_limits<long double>::digits > 60)
+    EXPECT_GT(count[1][1], 1000);
+  else
+    EXPECT_EQ(count[1][1], 0);
+}
+
+TEST(Predicates, Orient3dAdaptiveStagesAgainstRational)
+{
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> axis(0, 2), which(0, 3), sign(0, 1);
+  int count[2][7] = {};
+  int checks = 0;
+  for (int t = 0; t < 6000; ++t)
+  {
+    // Near the origin, so that differences mix binades; d on the plane abc (rounded), or a plane through
+    // points of one binade per axis (x, y, 0)-like with a nudge.
+    const double sc = (t % 3 == 0) ? 1.0 : ((t % 3 == 1) ? 1e-7 : 3e5);
+    Pt a = { u(rng) * sc, u(rng) * sc, u(rng) * sc };
+    Pt b = { u(rng) * sc, u(rng) * sc, u(rng) * sc };
+    Pt c = { u(rng) * sc, u(rng) * sc, u(rng) * sc };
+    const double s = u(rng), r = u(rng);
+    Pt d;
+    for (int k = 0; k < 3; ++k)
+      d[k] = a[k] + s * (b[k] - a[k]) + r * (c[k] - a[k]);
+    if ((t / 3) % 4 == 1)
+      d = nudge(d, axis(rng), sign(rng) ? 1 : -1);
+    if ((t / 3) % 4 == 2)
+    { // exactly coplanar (z = 0 plane, tilted by swapping axes), differences inexact
+      a[2] = b[2] = c[2] = d[2] = 0.0;
+      const int k = axis(rng);
+      for (Pt* q : { &a, &b, &c, &d })
+        std::swap((*q)[2], (*q)[k]);
+    }
+    std::array<Pt, 4> p = { a, b, c, d };
+    if ((t / 3) % 4 == 3)
+      p[which(rng)] = nudge(p[which(rng)], axis(rng), sign(rng) ? 1 : -1);
+    const int ref = refOrient3d(p[0], p[1], p[2], p[3]);
+    for (int ext = 0; ext < 2; ++ext)
+    {
+      int stage = 0;
+      ASSERT_EQ(P::detail::orient3dExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), ext == 1, &stage),
+        ref)
+        << "t=" << t << " extended=" << ext << " stage=" << stage;
+      ++count[ext][stage];
+    }
+    ASSERT_EQ(orient(p[0], p[1], p[2], p[3]), ref);
+    ++checks;
+  }
+  EXPECT_EQ(checks, 6000);
+  EXPECT_GT(count[0][3], 50) << "stage B";
+  EXPECT_GT(count[0][4], 50) << "stage C";
+  EXPECT_GT(count[0][5], 50) << "full";
+  if (std::numeric_limits<long double>::digits > 60)
+    EXPECT_GT(count[1][1], 1000);
 }
 
 // ---- Simulation of Simplicity ------------------------------------------------------------------------------
