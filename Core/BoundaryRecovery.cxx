@@ -419,6 +419,7 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
 {
   if (bc && bc->isEdge(x, y))
     return false;
+  ++removalAttempts;
   std::vector<int32_t>& ring = tmpRing_;
   std::vector<int32_t> tets;
   if (!edgeRing(t, x, y, ring, tets))
@@ -1161,7 +1162,11 @@ private:
 } // namespace
 
 // Stop adding Steiner points after this many consecutive rounds in which the number of missing edges grew.
-static int kMaxGrowingRounds = 3;
+static constexpr int kMaxGrowingRounds = 3;
+// Work budget of the flip stages, in edge-removal attempts: kWorkPerMissingEdge per initially missing edge
+// plus kWorkBase. Cases that recover need far less (< 10 per missing edge on the corpus); cases that do
+// not would otherwise spend minutes before reporting RecoveryFailed.
+static constexpr uint64_t kWorkPerMissingEdge = 60, kWorkBase = 20000;
 
 Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
@@ -1182,6 +1187,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   int64_t steinerUsed = 0;
   size_t prevMissing = 0;
   int growing = 0;
+  uint64_t workLimit = 0;
+  bool outOfWork = false;
   for (int round = 0;; ++round)
   {
     if (pr->cancelled())
@@ -1206,7 +1213,10 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       }
     }
     if (first)
+    {
       rep.missingEdgesInitially = static_cast<int64_t>(missingEdges.size());
+      workLimit = ed.removalAttempts + kWorkBase + kWorkPerMissingEdge * missingEdges.size();
+    }
     first = false;
     failedEdges.clear();
     size_t done = 0;
@@ -1220,7 +1230,9 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       }
       if (!bc.isEdge(a, b))
         continue; // split meanwhile
-      if (rec.recoverEdgeByFlips(a, b))
+      if (ed.removalAttempts > workLimit)
+        outOfWork = true;
+      if (!outOfWork && rec.recoverEdgeByFlips(a, b))
         continue;
       failedEdges.push_back({ a, b });
     }
@@ -1231,7 +1243,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     else
       growing = 0;
     prevMissing = missingEdges.size();
-    if (growing >= kMaxGrowingRounds)
+    if (growing >= kMaxGrowingRounds || outOfWork)
       break;
     if (!failedEdges.empty())
     {
@@ -1279,9 +1291,13 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       if (!bc.alive(f))
         continue;
       const int32_t* s = bc.subface(f);
-      if (!rec.recoverFacetByFlips(s[0], s[1], s[2]))
+      if (ed.removalAttempts > workLimit)
+        outOfWork = true;
+      if (outOfWork || !rec.recoverFacetByFlips(s[0], s[1], s[2]))
         failedFaces.push_back(f);
     }
+    if (outOfWork)
+      break;
     if (failedFaces.empty())
       continue; // re-check edges (flips never remove constraint edges, so this ends quickly)
     if (!options.allowSteiner || steinerUsed >= budget)
@@ -1349,7 +1365,11 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       "Boundary recovery failed: " + std::to_string(rep.unrecoveredEdges) + " edge(s) and " +
         std::to_string(rep.unrecoveredFacets) + " facet(s) could not be recovered (" +
         std::to_string(steinerUsed) + " Steiner points used" +
-        (options.allowSteiner ? "" : ", Steiner points disabled") + "); first input triangles listed.",
+        (options.allowSteiner ? "" : ", Steiner points disabled") +
+        (outOfWork ? ", flip work budget exhausted"
+                   : growing >= kMaxGrowingRounds ? ", missing edges kept growing"
+                                                  : steinerUsed >= budget ? ", Steiner budget exhausted" : "") +
+        "); first input triangles listed.",
       ids);
   }
   return Status::success();

@@ -14,7 +14,10 @@
 //      made star-shaped exactly. The boundary triangles are then split into subfaces (BoundaryConstraints)
 //      and the pieces are recovered in turn. SteinerRemoval.h later removes every such boundary point.
 // Flips and insertions never destroy a recovered subface or subsegment (they are constraints).
-// Whatever cannot be recovered within the Steiner budget is reported as ErrorKind::RecoveryFailed.
+// Whatever cannot be recovered is reported as ErrorKind::RecoveryFailed, with the counts, the first
+// input triangles concerned and why recovery stopped: the Steiner budget, the missing-edge count growing
+// for three rounds (Steiner points that do not converge), or the flip work budget (edge-removal attempts,
+// 60 per initially missing edge + 20000) that keeps hopeless cases to seconds.
 #pragma once
 
 #include "Progress.h"
@@ -146,6 +149,8 @@ public:
   int32_t locate(const double* p, int32_t start);
 
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
+  // Edge removals attempted (successful or not): the unit of recovery work.
+  uint64_t removalAttempts = 0;
   // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to
   // the ring vertices (recursively, `depth` levels) when the edge cannot be removed directly.
   bool removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
@@ -195,15 +200,6 @@ struct RecoveryReport
   int64_t steinerSegment = 0;         // Steiner points put on input edges
   int64_t steinerFacet = 0;           // Steiner points put inside input triangles
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
-  // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to
-  // the ring vertices (recursively, `depth` levels) when the edge cannot be removed directly.
-  bool removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
-    int depth);
-
-  // The tets the last successful flip removed (for undo: replace(created, lastRemoved)) and their ids
-  // before the flip.
-  std::vector<std::array<int32_t, 4>> lastRemoved;
-  std::vector<int32_t> lastRemovedIds;
   int64_t unrecoveredEdges = 0, unrecoveredFacets = 0;
   double seconds = 0;
 };

@@ -86,12 +86,27 @@ struct CaseResult
   std::string line;
 };
 
+// This test is about boundary recovery, exterior removal and Steiner point removal: the grid control and
+// quality stage (MesherOptions::improvement, when present) is switched off to keep the corpus fast.
+template <class T>
+auto noImprovement(T& o, int) -> decltype(o.improvement.fieldPoints = false, o.improvement.optimize = false, void())
+{
+  o.improvement.fieldPoints = false;
+  o.improvement.optimize = false;
+}
+template <class T>
+void noImprovement(T&, long)
+{
+}
+
 CaseResult runCase(const std::string& name, const SurfaceMesh& s)
 {
   CaseResult cr;
   MesherResult r;
+  MesherOptions options;
+  noImprovement(options, 0);
   const auto t0 = std::chrono::steady_clock::now();
-  Status st = meshSurface(s, MesherOptions(), r);
+  Status st = meshSurface(s, options, r);
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   char buf[512];
   if (!st.ok())
