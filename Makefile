@@ -20,7 +20,7 @@ build: deps $(BUILD_DIR)/CMakeCache.txt
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
 $(VTK_ONLY_DIR)/CMakeCache.txt:
-	cmake -S . -B $(VTK_ONLY_DIR) -DCMAKE_BUILD_TYPE=Release -DVOLGRID_FLAVOUR=VTK -DVTK_DIR=$(PARAVIEW_VTK_DIR)
+	cmake -S . -B $(VTK_ONLY_DIR) -DCMAKE_BUILD_TYPE=Release -DVOLGRID_FLAVOUR=VTK -DVTK_DIR=$(PARAVIEW_VTK_DIR) -DVOLGRID_CORE_TESTS=OFF
 
 build-vtk-only: deps $(VTK_ONLY_DIR)/CMakeCache.txt
 	cmake --build $(VTK_ONLY_DIR) -j $(JOBS)
