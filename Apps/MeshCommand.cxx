@@ -19,16 +19,37 @@
 #include <cstring>
 #include <string>
 #include <vector>
+// Defined in RefineCommand.cxx: the points of a data set (VTK XML or legacy, or text "x y z [v]" lines)
+// and the named point array (empty name: the text file's fourth column, if any).
+bool readPointsWithArray(const char* command, const std::string& path, const std::string& arrayName, bool needArray,
+  std::vector<double>& xyz, std::vector<double>& values);
 
 namespace
 {
 const char* kUsage =
   "usage: volgrid mesh SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check]\n"
-  "                    [--regions even-odd|orientation|keep-all] [--no-steiner]\n"
+  "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [density and quality options]\n"
   "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
   "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region);\n"
   "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
-  "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n";
+  "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
+  "Density (field points, paper 7.2; on by default):\n"
+  "  --alpha A            eq. 4: a tet gets a point when its centroid is farther than A*h from its vertices\n"
+  "                       (default 0.75: mean edge length close to h; smaller = more points)\n"
+  "  --beta B             eq. 5: no two field points closer than B*h (default 0.4)\n"
+  "  --size-scale S       h at the boundary = S x the boundary's point spacing (default 1.6; 1 = as fine)\n"
+  "  --gradation G        size growth bound between neighbours, h(v) <= h(u) + (G-1)|uv| (default 1.5)\n"
+  "  --max-edge L         global cap on the target edge length       --max-volume V   cap on tet volume\n"
+  "  --no-field-points    boundary points (and recovery's interior points) only\n"
+  "Clustering and sizing:\n"
+  "  --sizing FILE        a data set (.vtu .vtp .vtk, or text 'x y z size' lines) whose point array\n"
+  "                       --size-array NAME gives target edge lengths, interpolated in space\n"
+  "  --cluster FILE       points (any data set, or text 'x y z [size]' lines) inserted into the volume; the\n"
+  "                       point array --size-array NAME (if present) or --cluster-size H densifies around them\n"
+  "Quality (optimisation: flips, edge removal, smoothing; on by default):\n"
+  "  --quality            optimise (default)                    --no-optimize    do not\n"
+  "  --target-angle DEG   target for min(dihedral, 180 - max dihedral) (default 18)\n"
+  "  --passes N           optimisation pass limit (default 8)   --no-smoothing   flips only\n";
 
 struct Arguments
 {
@@ -37,8 +58,11 @@ struct Arguments
   std::string boundaryOut;
   bool json = false;
   bool check = false;
+  std::string sizingFile, clusterFile, sizeArray;
+  double clusterSize = 0;
   volgrid::MesherOptions options;
 };
+
 
 bool parseArguments(int argc, char** argv, Arguments& args)
 {
@@ -60,6 +84,54 @@ bool parseArguments(int argc, char** argv, Arguments& args)
       args.check = true;
     else if (a == "--no-steiner")
       args.options.allowSteinerPoints = false;
+    else if (a == "--no-field-points")
+      args.options.improvement.fieldPoints = false;
+    else if (a == "--quality")
+      args.options.improvement.optimize = true;
+    else if (a == "--no-optimize")
+      args.options.improvement.optimize = false;
+    else if (a == "--no-smoothing")
+      args.options.improvement.optimization.smoothing = false;
+    else if (a == "--alpha" || a == "--beta" || a == "--gradation" || a == "--max-edge" || a == "--max-volume" ||
+      a == "--target-angle" || a == "--passes" || a == "--cluster-size" || a == "--size-scale")
+    {
+      const char* v = value(a.c_str());
+      double x = 0;
+      if (!v || !volgrid::cli::parseDouble("mesh", a.c_str(), v, x))
+        return false;
+      volgrid::ImprovementOptions& im = args.options.improvement;
+      bool ok = true;
+      if (a == "--alpha")
+        ok = x > 0, im.fieldPointOptions.alpha = x;
+      else if (a == "--beta")
+        ok = x >= 0, im.fieldPointOptions.beta = x;
+      else if (a == "--gradation")
+        ok = x >= 1, im.sizing.gradation = x;
+      else if (a == "--size-scale")
+        ok = x > 0, im.sizing.scale = x;
+      else if (a == "--max-edge")
+        ok = x >= 0, im.sizing.maxEdgeLength = x;
+      else if (a == "--max-volume")
+        ok = x >= 0, im.fieldPointOptions.maxVolume = x;
+      else if (a == "--target-angle")
+        ok = x > 0 && x < 60, im.optimization.targetDegrees = x;
+      else if (a == "--passes")
+        ok = x >= 0 && x <= 1000, im.optimization.maxPasses = static_cast<int>(x);
+      else
+        ok = x > 0, args.clusterSize = x;
+      if (!ok)
+      {
+        std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
+        return false;
+      }
+    }
+    else if (a == "--sizing" || a == "--cluster" || a == "--size-array")
+    {
+      const char* v = value(a.c_str());
+      if (!v)
+        return false;
+      (a == "--sizing" ? args.sizingFile : a == "--cluster" ? args.clusterFile : args.sizeArray) = v;
+    }
     else if (a == "--boundary")
     {
       const char* v = value("--boundary");
@@ -104,6 +176,17 @@ bool parseArguments(int argc, char** argv, Arguments& args)
   }
   args.surface = positional[0];
   args.out = positional[1];
+  volgrid::ImprovementOptions& im = args.options.improvement;
+  if (!args.sizingFile.empty() &&
+    !readPointsWithArray("mesh", args.sizingFile, args.sizeArray, true, im.sizingPoints, im.sizingValues))
+    return false;
+  if (!args.clusterFile.empty())
+  {
+    if (!readPointsWithArray("mesh", args.clusterFile, args.sizeArray, false, im.clusterPoints, im.clusterSizes))
+      return false;
+    if (args.clusterSize > 0)
+      im.clusterSizes.assign(im.clusterPoints.size() / 3, args.clusterSize);
+  }
   return true;
 }
 
@@ -171,13 +254,20 @@ int runMeshCommand(int argc, char** argv)
     return 1;
 
   const volgrid::MesherStatistics& s = result.stats;
+  // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
+  volgrid::TetMesh outMesh;
+  volgrid::DihedralSummary dihedral;
+  if (volgrid::tetMeshFromTets(result.points, result.tets, outMesh).ok())
+    dihedral = volgrid::summarizeDihedrals(outMesh);
   if (args.json)
   {
     std::printf("{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
                 "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
                 "\"missing_facets\": %lld, \"flips\": %lld, \"steiner_interior\": %lld, "
                 "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %.17g, "
-                "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"seconds\": %.6f, "
+                "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"field_points\": %lld, "
+                "\"cluster_points\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, "
+                "\"share_below_10\": %.6g, \"seconds_improvement\": %.6f, \"seconds\": %.6f, "
                 "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
       static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
@@ -185,7 +275,9 @@ int runMeshCommand(int argc, char** argv)
       static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets),
       static_cast<long long>(s.flips), static_cast<long long>(s.steinerInterior),
       static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", boundary.tetVolume,
-      s.enclosedVolume, boundary.relativeVolumeError, seconds, volgrid::cli::peakResidentMiB());
+      s.enclosedVolume, boundary.relativeVolumeError, static_cast<long long>(s.improvement.fieldPoints),
+      static_cast<long long>(s.improvement.clusterPoints), dihedral.minDihedral, dihedral.maxDihedral,
+      dihedral.shareBelow10(), s.secondsImprovement, seconds, volgrid::cli::peakResidentMiB());
   }
   else
   {
@@ -194,6 +286,10 @@ int runMeshCommand(int argc, char** argv)
       args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
       static_cast<long long>(s.tets), static_cast<long long>(s.points),
       static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
+    std::printf("%lld field points, %lld cluster points; dihedral angles %.2f..%.2f deg, %.3g%% of the tets "
+                "under 10 deg\n",
+      static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
+      dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
     std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
       boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
       boundary.relativeVolumeError);

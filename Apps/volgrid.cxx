@@ -5,6 +5,8 @@
 #include <cstring>
 #include <string>
 
+int runRefineCommand(int argc, char** argv); // RefineCommand.cxx: volgrid refine MESH.vtu OUT.vtu --size-array NAME
+
 namespace
 {
 struct SubCommand
@@ -18,7 +20,9 @@ const SubCommand kCommands[] = {
   { "delaunay", runDelaunayCommand,
     "INPUT.node | --random N [--seed S]  [--check] [--json] [--out FILE.vtu]: Delaunay tetrahedralization" },
   { "mesh", runMeshCommand,
-    "SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check] [--regions ...]: boundary-conforming volume mesh" },
+    "SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check] [--alpha A ...]: boundary-conforming volume mesh" },
+  { "refine", runRefineCommand,
+    "MESH.vtu OUT.vtu --size-array NAME [--alpha A] [--json]: refine a tet mesh to a target size (adaptivity)" },
   { "quality", runQualityCommand, "MESH.vtu [--json] [--bins N]: volume or surface grid quality summary" },
   { "prep", runPrepCommand,
     "IN... OUT [--enclosure box|sphere|...] [--enclosure-scale S] [--json]: repair, orient, enclose surfaces" },

@@ -45,10 +45,12 @@ struct ImprovementOptions
   ImprovementOptions();
 
   // Field points (paper 7.2): alpha (eq. 4: larger = fewer points), beta (eq. 5: spacing in units of h),
-  // maxVolume (global cap on tet volume, 0 = none).
+  // maxVolume (global cap on tet volume, 0 = none). Defaults: alpha 0.75, beta 0.4, gradation 1.5,
+  // scale 1.6, target 18 degrees, 8 passes (see the constructor).
   bool fieldPoints = true;
   FieldPointOptions fieldPointOptions;
-  // Sizing: gradation (size growth bound between neighbours, > 1), maxEdgeLength (0 = none), scale.
+  // Sizing: gradation (size growth bound between neighbours, > 1), maxEdgeLength (0 = none), scale (the
+  // boundary PDF times scale is the target edge length at the boundary points).
   SizingOptions sizing;
   // Clustering: points (x,y,z each) inserted into the domain; clusterSizes (empty, or one target edge
   // length per point; <= 0 or non-finite = none) densify their neighbourhood through the sizing field.
@@ -76,6 +78,9 @@ struct ImprovementStatistics
   int optimizationPasses = 0;
   int64_t flips = 0;            // 2-3 flips and edge removals
   int64_t smoothMoves = 0;
+  // Tets under 10 degrees whose four vertices are boundary (or interface) vertices: bounded by the
+  // surface triangles, not by the optimisation.
+  int64_t boundaryForcedBelow10 = 0;
   double secondsSizing = 0, secondsFieldPoints = 0, secondsOptimization = 0;
 };
 

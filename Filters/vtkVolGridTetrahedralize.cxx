@@ -10,6 +10,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -30,11 +31,39 @@ vtkStandardNewMacro(vtkVolGridTetrahedralize);
 
 vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
 {
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
+  // The Core defaults are the filter's defaults.
+  const volgrid::ImprovementOptions defaults;
+  this->FieldPoints = defaults.fieldPoints;
+  this->Alpha = defaults.fieldPointOptions.alpha;
+  this->Beta = defaults.fieldPointOptions.beta;
+  this->Gradation = defaults.sizing.gradation;
+  this->SizeScale = defaults.sizing.scale;
+  this->Optimize = defaults.optimize;
+  this->TargetMinDihedral = defaults.optimization.targetDegrees;
+  this->MaxPasses = defaults.optimization.maxPasses;
+  this->Smoothing = defaults.optimization.smoothing;
 }
 
-int vtkVolGridTetrahedralize::FillInputPortInformation(int, vtkInformation* info)
+vtkVolGridTetrahedralize::~vtkVolGridTetrahedralize()
 {
+  this->SetSourceSizeArray(nullptr);
+}
+
+void vtkVolGridTetrahedralize::SetSourceConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+int vtkVolGridTetrahedralize::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
   return 1;
 }
@@ -82,12 +111,13 @@ int vtkVolGridTetrahedralize::RequestData(
   }
   const bool surface = this->InputMode == SURFACE ||
     (this->InputMode == AUTOMATIC && hasSurfaceCells(input));
-  return surface ? this->MeshSurface(input, output, boundary)
+  vtkDataSet* sources = this->GetNumberOfInputConnections(1) > 0 ? vtkDataSet::GetData(inputVector[1]) : nullptr;
+  return surface ? this->MeshSurface(input, sources, output, boundary)
                  : this->TetrahedralizePoints(input, output);
 }
 
 int vtkVolGridTetrahedralize::MeshSurface(
-  vtkPointSet* input, vtkUnstructuredGrid* output, vtkPolyData* boundary)
+  vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary)
 {
   volgrid::SurfaceMesh surface;
   VolGridSurfaceConversionInfo converted;
@@ -113,6 +143,53 @@ int vtkVolGridTetrahedralize::MeshSurface(
                                                        : volgrid::RegionRule::EvenOdd;
   options.allowSteinerPoints = this->AllowSteinerPoints;
   options.verify = this->CheckOutput;
+  volgrid::ImprovementOptions& im = options.improvement;
+  im.fieldPoints = this->FieldPoints;
+  im.fieldPointOptions.alpha = this->Alpha;
+  im.fieldPointOptions.beta = this->Beta;
+  im.fieldPointOptions.maxVolume = this->MaxVolume;
+  im.sizing.gradation = this->Gradation;
+  im.sizing.scale = this->SizeScale;
+  im.sizing.maxEdgeLength = this->MaxEdgeLength;
+  im.optimize = this->Optimize;
+  im.optimization.targetDegrees = this->TargetMinDihedral;
+  im.optimization.maxPasses = this->MaxPasses;
+  im.optimization.smoothing = this->Smoothing;
+  if (sources && sources->GetNumberOfPoints() > 0)
+  {
+    const vtkIdType n = sources->GetNumberOfPoints();
+    std::vector<double> xyz(3 * static_cast<size_t>(n)), sizes;
+    for (vtkIdType i = 0; i < n; ++i)
+      sources->GetPoint(i, xyz.data() + 3 * i);
+    vtkDataArray* sizeArray = nullptr;
+    if (this->SourceSizeArray && *this->SourceSizeArray)
+    {
+      sizeArray = sources->GetPointData()->GetArray(this->SourceSizeArray);
+      if (!sizeArray)
+      {
+        vtkErrorMacro(<< "VolGrid Tetrahedralize: Sources has no point array '" << this->SourceSizeArray << "'.");
+        return 0;
+      }
+      sizes.resize(static_cast<size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+        sizes[i] = sizeArray->GetComponent(i, 0);
+    }
+    if (this->SizingFromSources)
+    {
+      if (!sizeArray)
+      {
+        vtkErrorMacro(<< "VolGrid Tetrahedralize: SizingFromSources needs SourceSizeArray.");
+        return 0;
+      }
+      im.sizingPoints = xyz;
+      im.sizingValues = sizes;
+    }
+    if (this->ClusterSourcePoints)
+    {
+      im.clusterPoints = std::move(xyz);
+      im.clusterSizes = std::move(sizes);
+    }
+  }
   volgrid::MesherResult result;
   VolGridFilterProgress progress(this);
   const volgrid::Status status = volgrid::meshSurface(surface, options, result, &progress);
@@ -261,4 +338,18 @@ void vtkVolGridTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SpatialSort: " << this->SpatialSort << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "CheckOutput: " << this->CheckOutput << "\n";
+  os << indent << "FieldPoints: " << this->FieldPoints << "\n";
+  os << indent << "Alpha: " << this->Alpha << "\n";
+  os << indent << "Beta: " << this->Beta << "\n";
+  os << indent << "Gradation: " << this->Gradation << "\n";
+  os << indent << "SizeScale: " << this->SizeScale << "\n";
+  os << indent << "MaxEdgeLength: " << this->MaxEdgeLength << "\n";
+  os << indent << "MaxVolume: " << this->MaxVolume << "\n";
+  os << indent << "ClusterSourcePoints: " << this->ClusterSourcePoints << "\n";
+  os << indent << "SourceSizeArray: " << (this->SourceSizeArray ? this->SourceSizeArray : "(none)") << "\n";
+  os << indent << "SizingFromSources: " << this->SizingFromSources << "\n";
+  os << indent << "Optimize: " << this->Optimize << "\n";
+  os << indent << "TargetMinDihedral: " << this->TargetMinDihedral << "\n";
+  os << indent << "MaxPasses: " << this->MaxPasses << "\n";
+  os << indent << "Smoothing: " << this->Smoothing << "\n";
 }

@@ -17,6 +17,18 @@
  * keeps one point per distinct location, in input order, and `InputPointId` maps each output point to
  * the first input point at that location. Port 1 is empty.
  *
+ * Grid control and quality (surface mode; paper 7.2 and 7.6), on by default:
+ *  - Density: Weatherill-Hassan field points (FieldPoints, Alpha, Beta) following the boundary's point
+ *    spacing, with a bounded size growth (Gradation) and optional global caps (MaxEdgeLength, MaxVolume).
+ *  - Clustering and sizing: an optional second input "Sources" (any vtkDataSet). With
+ *    ClusterSourcePoints its points are inserted into the volume (points outside the domain are skipped)
+ *    and, when the point array SourceSizeArray exists, each one densifies its neighbourhood to that
+ *    target edge length. With SizingFromSources the same array is a sizing field interpolated in space
+ *    (e.g. a coarse background mesh, or a CFD solution's error estimate).
+ *  - Quality: optimisation (flips, edge removal and smoothing that never touch the boundary) towards a
+ *    minimum dihedral angle TargetMinDihedral, at most MaxPasses passes.
+ * The boundary stays exactly the input's in every case.
+ *
  * Bad input (no points, NaN/Inf, all points coplanar; open or self-intersecting surfaces, non-manifold
  * edges, degenerate or duplicate triangles, intersecting shells) gives an error that names the defect,
  * its count and the first ids, and an empty output.
@@ -27,6 +39,8 @@
 #include "vtkUnstructuredGridAlgorithm.h"
 #include "vtkVolGridFiltersModule.h" // for export macro
 
+class vtkAlgorithmOutput;
+class vtkDataSet;
 class vtkPointSet;
 class vtkPolyData;
 
@@ -101,16 +115,124 @@ public:
   vtkBooleanMacro(CheckOutput, bool);
   ///@}
 
+  ///@{
+  /** Density: insert field points (paper 7.2) in surface mode. Default on. */
+  vtkSetMacro(FieldPoints, bool);
+  vtkGetMacro(FieldPoints, bool);
+  vtkBooleanMacro(FieldPoints, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Density: eq. 4's alpha. A tet gets a point at its centroid when the centroid is farther than
+   * Alpha * h from the tet's vertices (h: the local target edge length). Smaller = more points.
+   * Default 0.75 (mean edge length close to h).
+   */
+  vtkSetClampMacro(Alpha, double, 0.05, 10.0);
+  vtkGetMacro(Alpha, double);
+  ///@}
+
+  ///@{
+  /** Density: eq. 5's beta, the minimum spacing of field points in units of h. Default 0.4. */
+  vtkSetClampMacro(Beta, double, 0.0, 5.0);
+  vtkGetMacro(Beta, double);
+  ///@}
+
+  ///@{
+  /**
+   * Density: size growth bound between neighbours, h(v) <= h(u) + (Gradation - 1) |uv|; 1 = off.
+   * Default 1.5.
+   */
+  vtkSetClampMacro(Gradation, double, 1.0, 10.0);
+  vtkGetMacro(Gradation, double);
+  ///@}
+
+  ///@{
+  /**
+   * Density: target edge length at the boundary as a multiple of the boundary's own spacing (its mean
+   * edge length per point, paper eq. 3). Default 1.6; 1 = the volume as fine as the surface.
+   */
+  vtkSetClampMacro(SizeScale, double, 0.05, 100.0);
+  vtkGetMacro(SizeScale, double);
+  ///@}
+
+  ///@{
+  /** Density: global cap on the target edge length (0 = none). Default 0. */
+  vtkSetClampMacro(MaxEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxEdgeLength, double);
+  ///@}
+
+  ///@{
+  /** Density: global cap on the tet volume (0 = none). Default 0. */
+  vtkSetClampMacro(MaxVolume, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxVolume, double);
+  ///@}
+
+  ///@{
+  /** Clustering: insert the points of the second input (Sources) into the volume. Default on. */
+  vtkSetMacro(ClusterSourcePoints, bool);
+  vtkGetMacro(ClusterSourcePoints, bool);
+  vtkBooleanMacro(ClusterSourcePoints, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Clustering and sizing: the point array of Sources holding target edge lengths (empty = none).
+   * Non-finite or non-positive values mean "no target here".
+   */
+  vtkSetStringMacro(SourceSizeArray);
+  vtkGetStringMacro(SourceSizeArray);
+  ///@}
+
+  ///@{
+  /** Sizing: interpolate SourceSizeArray in space as a sizing field. Default off. */
+  vtkSetMacro(SizingFromSources, bool);
+  vtkGetMacro(SizingFromSources, bool);
+  vtkBooleanMacro(SizingFromSources, bool);
+  ///@}
+
+  ///@{
+  /** Quality: optimise the mesh (flips, edge removal, smoothing). Default on. */
+  vtkSetMacro(Optimize, bool);
+  vtkGetMacro(Optimize, bool);
+  vtkBooleanMacro(Optimize, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Quality: target for min(smallest dihedral angle, 180 - largest) in degrees. Default 18. Tets whose
+   * four vertices lie on the boundary keep the shape the boundary triangles give them.
+   */
+  vtkSetClampMacro(TargetMinDihedral, double, 1.0, 60.0);
+  vtkGetMacro(TargetMinDihedral, double);
+  ///@}
+
+  ///@{
+  /** Quality: optimisation pass limit. Default 8. */
+  vtkSetClampMacro(MaxPasses, int, 0, 1000);
+  vtkGetMacro(MaxPasses, int);
+  ///@}
+
+  ///@{
+  /** Quality: smoothing (paper 7.6) between the topological passes. Default on. */
+  vtkSetMacro(Smoothing, bool);
+  vtkGetMacro(Smoothing, bool);
+  vtkBooleanMacro(Smoothing, bool);
+  ///@}
+
+  /** Convenience: the second input (Sources) connection. */
+  void SetSourceConnection(vtkAlgorithmOutput* output);
+
 protected:
   vtkVolGridTetrahedralize();
-  ~vtkVolGridTetrahedralize() override = default;
+  ~vtkVolGridTetrahedralize() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int TetrahedralizePoints(vtkPointSet* input, vtkUnstructuredGrid* output);
-  int MeshSurface(vtkPointSet* input, vtkUnstructuredGrid* output, vtkPolyData* boundary);
+  int MeshSurface(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary);
 
   int InputMode = AUTOMATIC;
   int RegionRule = EVEN_ODD;
@@ -118,6 +240,20 @@ protected:
   bool SpatialSort = true;
   int RandomSeed = 1;
   bool CheckOutput = false;
+  bool FieldPoints = true;
+  double Alpha = 0.75;
+  double Beta = 0.4;
+  double Gradation = 1.5;
+  double SizeScale = 1.6;
+  double MaxEdgeLength = 0;
+  double MaxVolume = 0;
+  bool ClusterSourcePoints = true;
+  char* SourceSizeArray = nullptr;
+  bool SizingFromSources = false;
+  bool Optimize = true;
+  double TargetMinDihedral = 18;
+  int MaxPasses = 8;
+  bool Smoothing = true;
 
 private:
   vtkVolGridTetrahedralize(const vtkVolGridTetrahedralize&) = delete;

@@ -1,0 +1,333 @@
+// volgrid refine MESH.vtu OUT.vtu --size-array NAME: adaptivity (paper section 4). An existing tet mesh and
+// a target edge length per point (e.g. from a solver's error estimate) -> field points where the target
+// is smaller than the current spacing, then optimisation. The boundary (and the faces between regions of
+// the cell array Region, if present) is kept exactly.
+#include "CliSupport.h"
+#include "Commands.h"
+#include "VolGridConversion.h"
+
+#include "MeshImprovement.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLGenericDataObjectReader.h"
+#include "vtkXMLUnstructuredGridWriter.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* kUsage =
+  "usage: volgrid refine MESH.{vtu,vtk} OUT.vtu --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
+  "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json]\n"
+  "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
+  "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
+  "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
+  "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n";
+
+bool endsWith(const std::string& s, const std::string& e)
+{
+  return s.size() >= e.size() && s.compare(s.size() - e.size(), e.size(), e) == 0;
+}
+
+vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path)
+{
+  vtkSmartPointer<vtkDataObject> data;
+  if (endsWith(path, ".vtk"))
+  {
+    vtkNew<vtkGenericDataObjectReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    data = reader->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkXMLGenericDataObjectReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    data = reader->GetOutput();
+  }
+  return vtkDataSet::SafeDownCast(data);
+}
+
+// The boundary faces (faces of one tet only) as sorted triples.
+std::set<std::array<int32_t, 3>> boundaryFaces(const volgrid::TetMesh& mesh)
+{
+  std::set<std::array<int32_t, 3>> faces;
+  mesh.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      if (mesh.neighbor(t, i) < 0)
+      {
+        int32_t f[3];
+        mesh.faceVertices(t, i, f);
+        std::sort(f, f + 3);
+        faces.insert({ f[0], f[1], f[2] });
+      }
+  });
+  return faces;
+}
+} // namespace
+
+bool readPointsWithArray(const char* command, const std::string& path, const std::string& arrayName, bool needArray,
+  std::vector<double>& xyz, std::vector<double>& values)
+{
+  xyz.clear();
+  values.clear();
+  if (endsWith(path, ".txt") || endsWith(path, ".xyz") || endsWith(path, ".csv"))
+  {
+    std::ifstream in(path);
+    if (!in)
+    {
+      std::fprintf(stderr, "volgrid %s: cannot read '%s'\n", command, path.c_str());
+      return false;
+    }
+    std::string line;
+    size_t lineNo = 0;
+    bool anyValue = false, allValues = true;
+    while (std::getline(in, line))
+    {
+      ++lineNo;
+      std::replace(line.begin(), line.end(), ',', ' ');
+      if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t\r")] == '#')
+        continue;
+      std::istringstream ls(line);
+      double p[4];
+      int n = 0;
+      while (n < 4 && ls >> p[n])
+        ++n;
+      if (n < 3 || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      {
+        std::fprintf(stderr, "volgrid %s: %s line %zu: expected 'x y z [value]'\n", command, path.c_str(), lineNo);
+        return false;
+      }
+      xyz.insert(xyz.end(), p, p + 3);
+      values.push_back(n == 4 ? p[3] : 0.0);
+      anyValue |= n == 4;
+      allValues &= n == 4;
+    }
+    if (needArray && !allValues)
+    {
+      std::fprintf(stderr, "volgrid %s: %s: every line needs a fourth column (the size)\n", command, path.c_str());
+      return false;
+    }
+    if (!anyValue)
+      values.clear();
+    return true;
+  }
+  vtkSmartPointer<vtkDataSet> data = readDataSet(path);
+  if (!data || data->GetNumberOfPoints() == 0)
+  {
+    std::fprintf(stderr, "volgrid %s: cannot read points from '%s'\n", command, path.c_str());
+    return false;
+  }
+  const vtkIdType n = data->GetNumberOfPoints();
+  xyz.resize(3 * static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+    data->GetPoint(i, xyz.data() + 3 * i);
+  vtkDataArray* array = arrayName.empty() ? nullptr : data->GetPointData()->GetArray(arrayName.c_str());
+  if (!array && needArray)
+  {
+    std::fprintf(stderr, "volgrid %s: '%s' has no point array '%s'\n", command, path.c_str(), arrayName.c_str());
+    return false;
+  }
+  if (array)
+  {
+    values.resize(static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+      values[i] = array->GetComponent(i, 0);
+  }
+  return true;
+}
+
+int runRefineCommand(int argc, char** argv)
+{
+  std::vector<std::string> positional;
+  std::string arrayName;
+  bool json = false;
+  volgrid::RefineOptions options;
+  options.fieldPointOptions.alpha = volgrid::ImprovementOptions().fieldPointOptions.alpha;
+  options.optimization = volgrid::ImprovementOptions().optimization;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h")
+    {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if (a == "--json")
+      json = true;
+    else if (a == "--no-optimize")
+      options.optimize = false;
+    else if (a == "--size-array" || a == "--alpha" || a == "--beta" || a == "--gradation" || a == "--target-angle" ||
+      a == "--passes")
+    {
+      if (i + 1 >= argc)
+      {
+        std::fprintf(stderr, "volgrid refine: %s needs a value\n%s", a.c_str(), kUsage);
+        return 2;
+      }
+      const char* v = argv[++i];
+      if (a == "--size-array")
+      {
+        arrayName = v;
+        continue;
+      }
+      double x = 0;
+      if (!volgrid::cli::parseDouble("refine", a.c_str(), v, x))
+        return 2;
+      bool ok = true;
+      if (a == "--alpha")
+        ok = x > 0, options.fieldPointOptions.alpha = x;
+      else if (a == "--beta")
+        ok = x >= 0, options.fieldPointOptions.beta = x;
+      else if (a == "--gradation")
+        ok = x >= 1, options.gradation = x;
+      else if (a == "--target-angle")
+        ok = x > 0 && x < 60, options.optimization.targetDegrees = x;
+      else
+        ok = x >= 0 && x <= 1000, options.optimization.maxPasses = static_cast<int>(x);
+      if (!ok)
+      {
+        std::fprintf(stderr, "volgrid refine: %s is out of range: %s\n", a.c_str(), v);
+        return 2;
+      }
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      std::fprintf(stderr, "volgrid refine: unknown option '%s'\n%s", a.c_str(), kUsage);
+      return 2;
+    }
+    else
+      positional.push_back(a);
+  }
+  if (positional.size() != 2 || arrayName.empty())
+  {
+    std::fprintf(stderr, "volgrid refine: expected MESH.vtu OUT.vtu --size-array NAME\n%s", kUsage);
+    return 2;
+  }
+
+  vtkSmartPointer<vtkDataSet> data = readDataSet(positional[0]);
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid || grid->GetNumberOfCells() == 0)
+  {
+    std::fprintf(stderr, "volgrid refine: '%s' is not an unstructured grid with cells\n", positional[0].c_str());
+    return 1;
+  }
+  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
+  std::vector<double> points(3 * static_cast<size_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+    grid->GetPoint(i, points.data() + 3 * i);
+  std::vector<int32_t> tets;
+  tets.reserve(4 * static_cast<size_t>(nc));
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    if (grid->GetCellType(c) != VTK_TETRA)
+    {
+      std::fprintf(stderr, "volgrid refine: cell %lld is not a tetrahedron (only tet meshes are refined)\n",
+        static_cast<long long>(c));
+      return 1;
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* ids = nullptr;
+    grid->GetCellPoints(c, npts, ids);
+    for (int k = 0; k < 4; ++k)
+      tets.push_back(static_cast<int32_t>(ids[k]));
+  }
+  vtkDataArray* sizeArray = grid->GetPointData()->GetArray(arrayName.c_str());
+  if (!sizeArray)
+  {
+    std::fprintf(stderr, "volgrid refine: '%s' has no point array '%s'\n", positional[0].c_str(), arrayName.c_str());
+    return 1;
+  }
+  std::vector<double> target(static_cast<size_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+    target[i] = sizeArray->GetComponent(i, 0);
+  vtkDataArray* regionArray = grid->GetCellData()->GetArray("Region");
+  std::vector<int32_t> regions(static_cast<size_t>(nc), 0);
+  if (regionArray)
+    for (vtkIdType c = 0; c < nc; ++c)
+      regions[c] = static_cast<int32_t>(regionArray->GetComponent(c, 0));
+
+  volgrid::TetMesh mesh;
+  volgrid::Status s = volgrid::tetMeshFromTets(points, tets, mesh);
+  if (!s.ok())
+  {
+    std::fprintf(stderr, "volgrid refine: %s: %s\n", positional[0].c_str(), s.message.c_str());
+    return 1;
+  }
+  const auto facesBefore = boundaryFaces(mesh);
+  volgrid::RefineReport report;
+  const volgrid::cli::Stopwatch watch;
+  s = volgrid::refineTetMesh(mesh, target, &regions, options, nullptr, &report);
+  const double seconds = watch.seconds();
+  if (!s.ok())
+  {
+    std::fprintf(stderr, "volgrid refine: %s\n", s.message.c_str());
+    return 1;
+  }
+  const bool boundaryIdentical = boundaryFaces(mesh) == facesBefore;
+
+  // Output: every input point keeps its id (point data copied), new points follow (null values).
+  std::vector<int32_t> kept(static_cast<size_t>(mesh.numVertices()));
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    kept[v] = v;
+  vtkNew<vtkUnstructuredGrid> out;
+  VolGridFillUnstructuredGrid(mesh, kept, out);
+  vtkPointData* outPD = out->GetPointData();
+  outPD->CopyAllocate(grid->GetPointData(), mesh.numVertices());
+  for (vtkIdType v = 0; v < mesh.numVertices(); ++v)
+  {
+    if (v < np)
+      outPD->CopyData(grid->GetPointData(), v, v);
+    else
+      outPD->NullData(v);
+  }
+  vtkNew<vtkIntArray> region;
+  region->SetName("Region");
+  region->SetNumberOfValues(mesh.numFiniteTets());
+  vtkIdType cell = 0;
+  mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
+  out->GetCellData()->AddArray(region);
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(positional[1].c_str());
+  writer->SetInputData(out);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  if (writer->Write() != 1)
+  {
+    std::fprintf(stderr, "volgrid refine: cannot write '%s'\n", positional[1].c_str());
+    return 1;
+  }
+  if (json)
+    std::printf("{\"input\": %s, \"points_before\": %lld, \"tets_before\": %lld, \"points\": %d, \"tets\": %d, "
+                "\"inserted\": %lld, \"passes\": %d, \"boundary_identical\": %s, \"min_dihedral\": %.4f, "
+                "\"max_dihedral\": %.4f, \"share_below_10\": %.6g, \"seconds\": %.6f}\n",
+      volgrid::cli::jsonString(positional[0]).c_str(), static_cast<long long>(np), static_cast<long long>(nc),
+      mesh.numVertices(), mesh.numFiniteTets(), static_cast<long long>(report.inserted), report.passes,
+      boundaryIdentical ? "true" : "false", report.after.minDihedral, report.after.maxDihedral,
+      report.after.shareBelow10(), seconds);
+  else
+    std::printf("%s: %lld points, %lld tets -> %d points, %d tets (%lld inserted) in %.3f s; dihedral angles "
+                "%.2f..%.2f deg; boundary %s\n",
+      positional[0].c_str(), static_cast<long long>(np), static_cast<long long>(nc), mesh.numVertices(),
+      mesh.numFiniteTets(), static_cast<long long>(report.inserted), seconds, report.after.minDihedral,
+      report.after.maxDihedral, boundaryIdentical ? "identical" : "CHANGED");
+  return boundaryIdentical ? 0 : 1;
+}

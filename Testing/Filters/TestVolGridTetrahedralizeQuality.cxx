@@ -1,0 +1,264 @@
+// VolGrid Tetrahedralize's Density, Clustering and sizing, and Quality properties: what a VTK pipeline
+// relies on (defaults give a good mesh, alpha controls the density, the Sources input clusters and sizes,
+// the boundary output is the input, the numeric options are clamped).
+#include "vtkVolGridTetrahedralize.h"
+
+#include "VolGridSurfaceConversion.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include "Enclosures.h"
+#include "MeshChecker.h"
+#include "MeshImprovement.h"
+#include "SurfaceMesh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace
+{
+// Body sphere (r = 1) inside a far-field sphere (r = 6), as one vtkPolyData.
+vtkNew<vtkPolyData> sphereInSphere(double bodyEdge)
+{
+  volgrid::SurfaceMesh far, body;
+  volgrid::EnclosureOptions o;
+  o.shape = volgrid::EnclosureShape::Sphere;
+  o.dimensions[0] = 6;
+  o.targetEdgeLength = 1.0;
+  EXPECT_TRUE(volgrid::makeEnclosure(o, far).ok());
+  o.dimensions[0] = 1;
+  o.targetEdgeLength = bodyEdge;
+  EXPECT_TRUE(volgrid::makeEnclosure(o, body).ok());
+  const int32_t off = far.numberOfPoints();
+  far.points.insert(far.points.end(), body.points.begin(), body.points.end());
+  for (int32_t v : body.triangles)
+    far.triangles.push_back(v + off);
+  far.patchIds.clear();
+  vtkNew<vtkPolyData> poly;
+  VolGridSurfaceMeshToPolyData(far, poly);
+  return poly;
+}
+
+struct Summary
+{
+  vtkIdType tets = 0, points = 0, boundaryTriangles = 0;
+  volgrid::DihedralSummary dihedral;
+  bool valid = false;
+};
+
+Summary summarize(vtkVolGridTetrahedralize* f)
+{
+  Summary s;
+  vtkUnstructuredGrid* grid = f->GetOutput(0);
+  s.tets = grid->GetNumberOfCells();
+  s.points = grid->GetNumberOfPoints();
+  s.boundaryTriangles = vtkPolyData::SafeDownCast(f->GetOutputDataObject(1))->GetNumberOfPolys();
+  std::vector<double> xyz(3 * static_cast<size_t>(s.points));
+  for (vtkIdType i = 0; i < s.points; ++i)
+    grid->GetPoint(i, xyz.data() + 3 * i);
+  std::vector<int32_t> tets;
+  for (vtkIdType c = 0; c < s.tets; ++c)
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    grid->GetCellPoints(c, n, ids);
+    for (int k = 0; k < 4; ++k)
+      tets.push_back(static_cast<int32_t>(ids[k]));
+  }
+  volgrid::TetMesh m;
+  if (s.tets > 0 && volgrid::tetMeshFromTets(xyz, tets, m).ok())
+  {
+    // Orientation and adjacency (optimised meshes are not Delaunay; the domain has a hole, so no ball's
+    // Euler characteristic).
+    volgrid::MeshCheckOptions co;
+    co.delaunay = false;
+    co.euler = false;
+    const volgrid::MeshCheckReport r = volgrid::checkMesh(m, co);
+    s.valid = r.badVertices + r.invertedTets + r.badNeighbors + r.asymmetricNeighbors + r.faceMismatches == 0;
+    s.dihedral = volgrid::summarizeDihedrals(m);
+  }
+  return s;
+}
+
+vtkNew<vtkPolyData> sourcePoints(const std::vector<double>& xyz, const std::vector<double>& sizes)
+{
+  vtkNew<vtkPolyData> data;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> size;
+  size->SetName("TargetSize");
+  for (size_t i = 0; i < sizes.size(); ++i)
+  {
+    points->InsertNextPoint(&xyz[3 * i]);
+    size->InsertNextValue(sizes[i]);
+  }
+  data->SetPoints(points);
+  data->GetPointData()->AddArray(size);
+  return data;
+}
+} // namespace
+
+TEST(VolGridTetrahedralizeQuality, DefaultsGiveGoodTetsAndTheExactBoundary)
+{
+  vtkNew<vtkPolyData> input = sphereInSphere(0.15);
+  vtkNew<vtkVolGridTetrahedralize> f;
+  EXPECT_TRUE(f->GetFieldPoints());
+  EXPECT_TRUE(f->GetOptimize());
+  EXPECT_DOUBLE_EQ(f->GetAlpha(), volgrid::ImprovementOptions().fieldPointOptions.alpha);
+  EXPECT_DOUBLE_EQ(f->GetTargetMinDihedral(), 18.0);
+  f->SetInputData(input);
+  f->CheckOutputOn(); // the mesher verifies boundary == input and the volume exactly
+  f->Update();
+  const Summary s = summarize(f);
+  ASSERT_GT(s.tets, 0);
+  EXPECT_TRUE(s.valid);
+  EXPECT_EQ(s.boundaryTriangles, input->GetNumberOfPolys());
+  EXPECT_GE(s.dihedral.minDihedral, 15.0);
+  EXPECT_LE(s.dihedral.maxDihedral, 165.0);
+  // Input point i is output point i.
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); i += 97)
+  {
+    double a[3], b[3];
+    input->GetPoint(i, a);
+    f->GetOutput(0)->GetPoint(i, b);
+    EXPECT_EQ(a[0], b[0]);
+    EXPECT_EQ(a[1], b[1]);
+    EXPECT_EQ(a[2], b[2]);
+  }
+}
+
+TEST(VolGridTetrahedralizeQuality, AlphaAndFieldPointsControlTheDensity)
+{
+  vtkNew<vtkPolyData> input = sphereInSphere(0.2);
+  vtkIdType previous = 0;
+  for (double alpha : { 1.2, 0.75, 0.5 })
+  {
+    vtkNew<vtkVolGridTetrahedralize> f;
+    f->SetInputData(input);
+    f->SetAlpha(alpha);
+    f->Update();
+    const Summary s = summarize(f);
+    EXPECT_GT(s.tets, previous) << "alpha " << alpha;
+    EXPECT_TRUE(s.valid);
+    previous = s.tets;
+  }
+  vtkNew<vtkVolGridTetrahedralize> off;
+  off->SetInputData(input);
+  off->FieldPointsOff();
+  off->OptimizeOff();
+  off->Update();
+  EXPECT_LT(summarize(off).tets, previous);
+  vtkNew<vtkVolGridTetrahedralize> capped;
+  capped->SetInputData(input);
+  capped->SetMaxEdgeLength(0.5);
+  capped->Update();
+  EXPECT_GT(summarize(capped).points, summarize(off).points * 2);
+}
+
+TEST(VolGridTetrahedralizeQuality, SourcesClusterAndSize)
+{
+  vtkNew<vtkPolyData> input = sphereInSphere(0.2);
+  vtkNew<vtkVolGridTetrahedralize> plain;
+  plain->SetInputData(input);
+  plain->Update();
+  const Summary base = summarize(plain);
+
+  // Cluster: three points between the spheres (one outside the domain, inside the body), size 0.05.
+  const std::vector<double> xyz = { 2.0, 0.0, 0.0, 0.0, -2.5, 0.5, 0.0, 0.0, 0.0 };
+  vtkNew<vtkPolyData> sources = sourcePoints(xyz, { 0.05, 0.05, 0.05 });
+  vtkNew<vtkVolGridTetrahedralize> cluster;
+  cluster->SetInputData(0, input);
+  cluster->SetInputData(1, sources);
+  cluster->SetSourceSizeArray("TargetSize");
+  cluster->Update();
+  const Summary c = summarize(cluster);
+  EXPECT_TRUE(c.valid);
+  EXPECT_GT(c.tets, base.tets + 500);
+  vtkUnstructuredGrid* grid = cluster->GetOutput(0);
+  for (int k = 0; k < 2; ++k)
+  {
+    bool found = false;
+    for (vtkIdType i = input->GetNumberOfPoints(); i < grid->GetNumberOfPoints() && !found; ++i)
+    {
+      double p[3];
+      grid->GetPoint(i, p);
+      found = p[0] == xyz[3 * k] && p[1] == xyz[3 * k + 1] && p[2] == xyz[3 * k + 2];
+    }
+    EXPECT_TRUE(found) << "cluster point " << k;
+  }
+
+  // Sizing: a cloud asking for 0.8 everywhere -> many more points than the boundary spacing alone.
+  std::vector<double> cloud, sizes;
+  for (int i = -3; i <= 3; ++i)
+    for (int j = -3; j <= 3; ++j)
+      for (int k = -3; k <= 3; ++k)
+      {
+        cloud.insert(cloud.end(), { 2.0 * i, 2.0 * j, 2.0 * k });
+        sizes.push_back(0.8);
+      }
+  vtkNew<vtkPolyData> background = sourcePoints(cloud, sizes);
+  vtkNew<vtkVolGridTetrahedralize> sized;
+  sized->SetInputData(0, input);
+  sized->SetInputData(1, background);
+  sized->SetSourceSizeArray("TargetSize");
+  sized->ClusterSourcePointsOff();
+  sized->SizingFromSourcesOn();
+  sized->Update();
+  const Summary z = summarize(sized);
+  EXPECT_TRUE(z.valid);
+  EXPECT_GT(z.points, 3 * base.points);
+
+  // A missing array is an error with an empty output.
+  vtkNew<vtkVolGridTetrahedralize> bad;
+  bad->SetInputData(0, input);
+  bad->SetInputData(1, background);
+  bad->SetSourceSizeArray("NoSuchArray");
+  bad->Update();
+  EXPECT_EQ(bad->GetOutput(0)->GetNumberOfCells(), 0);
+}
+
+TEST(VolGridTetrahedralizeQuality, NumericOptionsAreClamped)
+{
+  vtkNew<vtkVolGridTetrahedralize> f;
+  f->SetAlpha(100);
+  EXPECT_DOUBLE_EQ(f->GetAlpha(), 10.0);
+  f->SetAlpha(-1);
+  EXPECT_DOUBLE_EQ(f->GetAlpha(), 0.05);
+  f->SetBeta(-1);
+  EXPECT_DOUBLE_EQ(f->GetBeta(), 0.0);
+  f->SetGradation(0.5);
+  EXPECT_DOUBLE_EQ(f->GetGradation(), 1.0);
+  f->SetMaxEdgeLength(-2);
+  EXPECT_DOUBLE_EQ(f->GetMaxEdgeLength(), 0.0);
+  f->SetMaxVolume(-2);
+  EXPECT_DOUBLE_EQ(f->GetMaxVolume(), 0.0);
+  f->SetTargetMinDihedral(90);
+  EXPECT_DOUBLE_EQ(f->GetTargetMinDihedral(), 60.0);
+  f->SetMaxPasses(-3);
+  EXPECT_EQ(f->GetMaxPasses(), 0);
+}
+
+TEST(VolGridTetrahedralizeQuality, OptimisationRaisesTheMinimumAngle)
+{
+  vtkNew<vtkPolyData> input = sphereInSphere(0.2);
+  vtkNew<vtkVolGridTetrahedralize> raw;
+  raw->SetInputData(input);
+  raw->OptimizeOff();
+  raw->Update();
+  vtkNew<vtkVolGridTetrahedralize> opt;
+  opt->SetInputData(input);
+  opt->Update();
+  const Summary a = summarize(raw), b = summarize(opt);
+  EXPECT_TRUE(a.valid && b.valid);
+  EXPECT_EQ(a.points, b.points); // optimisation adds no point
+  EXPECT_GT(b.dihedral.minDihedral, a.dihedral.minDihedral);
+  EXPECT_EQ(a.boundaryTriangles, b.boundaryTriangles);
+}
