@@ -267,7 +267,8 @@ int runMeshCommand(int argc, char** argv)
                 "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %.17g, "
                 "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"field_points\": %lld, "
                 "\"cluster_points\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, "
-                "\"share_below_10\": %.6g, \"seconds_improvement\": %.6f, \"seconds\": %.6f, "
+                "\"share_below_10\": %.6g, \"boundary_forced_below_10\": %lld, \"seconds_improvement\": %.6f, "
+                "\"seconds\": %.6f, "
                 "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
       static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
@@ -277,7 +278,8 @@ int runMeshCommand(int argc, char** argv)
       static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", boundary.tetVolume,
       s.enclosedVolume, boundary.relativeVolumeError, static_cast<long long>(s.improvement.fieldPoints),
       static_cast<long long>(s.improvement.clusterPoints), dihedral.minDihedral, dihedral.maxDihedral,
-      dihedral.shareBelow10(), s.secondsImprovement, seconds, volgrid::cli::peakResidentMiB());
+      dihedral.shareBelow10(), static_cast<long long>(s.improvement.boundaryForcedBelow10), s.secondsImprovement,
+      seconds, volgrid::cli::peakResidentMiB());
   }
   else
   {
