@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
@@ -45,6 +46,99 @@ Status checkOptions(const ImprovementOptions& o)
     return Status::failure(ErrorKind::InvalidOption, "Optimisation needs 0 < targetDegrees < 90 and maxPasses >= 0.");
   return Status::success();
 }
+// Tets still below `degrees` after optimisation (typically slivers whose four vertices are on the boundary,
+// which no flip or move can fix): a point at the circumcentre, or at the centroid when the circumcentre is
+// outside the domain, removes them by constrained Bowyer-Watson insertion, as Delaunay refinement does.
+// Constrained faces are never crossed, so the boundary is untouched. Candidates closer than half the
+// tet's shortest edge to a vertex are refused. Returns the number of points inserted.
+int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
+  double degrees, int64_t maxPoints)
+{
+  TetEditor editor(mesh, constraints, labels);
+  editor.rebuildVertexMap();
+  const std::vector<uint8_t> locked = editor.lockedVertices();
+  const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  auto quality = [&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    return tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+  };
+  std::vector<std::pair<double, int32_t>> bad;
+  mesh.forEachTet([&](int32_t t) {
+    const double q = quality(t);
+    if (q < qT)
+      bad.emplace_back(q, t);
+  });
+  std::sort(bad.begin(), bad.end());
+  int64_t inserted = 0;
+  for (const auto& b : bad)
+  {
+    const int32_t t = b.second;
+    if (inserted >= maxPoints)
+      break;
+    if (mesh.isFree(t) || quality(t) >= qT) // replaced by an earlier insertion
+      continue;
+    const int32_t* v = mesh.vertices(t);
+    const double* p[4] = { mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]) };
+    double len[4][4], lmin = std::numeric_limits<double>::infinity(), lmax = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+      {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k)
+          d2 += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+        len[i][j] = std::sqrt(d2);
+        lmin = std::min(lmin, len[i][j]);
+        lmax = std::max(lmax, len[i][j]);
+      }
+    // A short edge between two boundary vertices (a needle boundary triangle) makes every tet around it
+    // bad whatever is inserted: leave those to the report.
+    bool boundaryNeedle = false;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        boundaryNeedle |= locked[v[i]] && locked[v[j]] && len[i][j] < 0.25 * lmax;
+    if (boundaryNeedle)
+      continue;
+    double e[3][3], n[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        e[i][k] = p[i + 1][k] - p[0][k];
+    auto cross = [](const double* x, const double* y, double* out) {
+      out[0] = x[1] * y[2] - x[2] * y[1];
+      out[1] = x[2] * y[0] - x[0] * y[2];
+      out[2] = x[0] * y[1] - x[1] * y[0];
+    };
+    cross(e[1], e[2], n[0]);
+    cross(e[2], e[0], n[1]);
+    cross(e[0], e[1], n[2]);
+    const double den = 2 * (e[0][0] * n[0][0] + e[0][1] * n[0][1] + e[0][2] * n[0][2]);
+    double cand[2][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      double num = 0;
+      for (int i = 0; i < 3; ++i)
+        num += (e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2]) * n[i][k];
+      cand[0][k] = p[0][k] + num / den;
+      cand[1][k] = (p[0][k] + p[1][k] + p[2][k] + p[3][k]) / 4;
+    }
+    for (const double* c : cand)
+    {
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+        continue;
+      const int32_t start = editor.locate(c, t);
+      if (start < 0)
+        continue;
+      const int32_t nv = mesh.addPoint(c);
+      if (editor.insertPoint(nv, start, 0.5 * lmin) == TetEditor::InsertStatus::Inserted)
+      {
+        ++inserted;
+        break;
+      }
+      mesh.points.resize(mesh.points.size() - 3); // the last vertex, used by no tet
+    }
+  }
+  return inserted;
+}
+
 } // namespace
 
 ImprovementOptions::ImprovementOptions()
@@ -177,20 +271,45 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     const auto t0 = std::chrono::steady_clock::now();
     OptimizationOptions one = options.optimization;
     one.maxPasses = 1;
-    for (int pass = 0; pass < options.optimization.maxPasses; ++pass)
+    auto optimise = [&](int maxPasses) -> Status {
+      for (int pass = 0; pass < maxPasses; ++pass)
+      {
+        OptimizationReport orep;
+        Status os = optimizeMesh(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, one, progress, &orep);
+        if (!os.ok())
+          return os;
+        stats.after = orep.after;
+        stats.optimizationPasses += orep.passes;
+        stats.flips += orep.flips23 + orep.edgeRemovals;
+        stats.smoothMoves += orep.smoothMoves;
+        const int64_t gained = orep.belowTargetBefore - orep.belowTargetAfter;
+        const bool minImproved = orep.after.minDihedral > orep.before.minDihedral + 1.0;
+        if (orep.belowTargetAfter == 0 || orep.passes == 0 ||
+          (gained <= orep.belowTargetBefore / 50 && !minImproved))
+          break;
+      }
+      return Status::success();
+    };
+    s = optimise(options.optimization.maxPasses);
+    if (!s.ok())
+      return s;
+    // What optimisation cannot fix (slivers spanned by boundary vertices): split by a point inside, then
+    // optimise again. At most splitRounds rounds.
+    for (int round = 0; round < options.splitRounds && stats.after.minDihedral < options.optimization.targetDegrees;
+         ++round)
     {
-      OptimizationReport orep;
-      s = optimizeMesh(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, one, progress, &orep);
+      if (progress && progress->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+      const int64_t n = splitBadTets(mesh, &fc, &tetRegion, options.optimization.targetDegrees,
+        std::max<int64_t>(200, mesh.numTets() / 20));
+      stats.splitPoints += n;
+      if (n == 0)
+        break;
+      const double minBefore = stats.after.minDihedral;
+      s = optimise(std::min(3, options.optimization.maxPasses));
       if (!s.ok())
         return s;
-      stats.after = orep.after;
-      stats.optimizationPasses += orep.passes;
-      stats.flips += orep.flips23 + orep.edgeRemovals;
-      stats.smoothMoves += orep.smoothMoves;
-      const int64_t gained = orep.belowTargetBefore - orep.belowTargetAfter;
-      const bool minImproved = orep.after.minDihedral > orep.before.minDihedral + 0.01;
-      if (orep.belowTargetAfter == 0 || orep.passes == 0 ||
-        (gained <= orep.belowTargetBefore / 50 && !minImproved))
+      if (stats.after.minDihedral < minBefore + 0.1)
         break;
     }
     stats.secondsOptimization = since(t0);

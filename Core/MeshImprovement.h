@@ -12,7 +12,9 @@
 //   3. Clustering points (optional), then field points (eq. 4 and 5), both by constrained Bowyer-Watson
 //      insertion that never crosses a constrained face.
 //   4. Optimisation: flips, edge removal and smoothing towards a target minimum dihedral angle
-//      (MeshOptimization.h), which never changes a constrained face and never moves its vertices.
+//      (MeshOptimization.h), which never changes a constrained face and never moves its vertices; the
+//      tets it cannot fix (slivers spanned by boundary vertices) are split by a point at their
+//      circumcentre or centroid (constrained insertion), then optimisation runs again.
 // The boundary is therefore the input boundary, exactly: same points, same triangles. New vertices are
 // marked VertexKind::SteinerInterior in `kinds` (field and cluster points are strictly interior), region
 // labels follow the tets, and the editor's vertex map is rebuilt for the output stage.
@@ -65,6 +67,9 @@ struct ImprovementOptions
   // Optimisation (flips, edge removal, smoothing) towards a target min(theta_min, 180 - theta_max).
   bool optimize = true;
   OptimizationOptions optimization;
+  // Rounds of splitting the tets still below the target by a point at their circumcentre (or centroid),
+  // each followed by optimisation (0 = no point added by the quality stage).
+  int splitRounds = 3;
 };
 
 struct ImprovementStatistics
@@ -78,6 +83,7 @@ struct ImprovementStatistics
   int optimizationPasses = 0;
   int64_t flips = 0;            // 2-3 flips and edge removals
   int64_t smoothMoves = 0;
+  int64_t splitPoints = 0;      // points inserted to split tets optimisation could not fix
   // Tets under 10 degrees whose four vertices are boundary (or interface) vertices: bounded by the
   // surface triangles, not by the optimisation.
   int64_t boundaryForcedBelow10 = 0;
