@@ -55,10 +55,11 @@ struct DelaunayOptions
   PointLocation location = PointLocation::Walk;
   uint64_t seed = 0x766f6c67726964ull;     // BRIO rounds and walk randomization
   bool keepGhosts = true;                  // false: removeGhostTets() at the end (hull faces -> no neighbour)
-  // Threads for large inputs (>= 200k points, spatialSort, Walk): 1 = sequential, 2 = two threads,
-  // 0 = hardware concurrency (at most 2). The tets are the same (the triangulation is unique); their
-  // numbering may differ from run to run with more than one thread.
-  int threads = 1;
+  // Threads for large inputs (>= 200k points, spatialSort, Walk): 0 = automatic (hardware concurrency,
+  // at most 2), 1 = sequential, 2 = two threads. The output does not depend on it: the tets are unique
+  // (SoS-Delaunay) and are numbered canonically (smallest vertex id first in each tet, tets grouped by
+  // their last inserted vertex), so the mesh arrays are the same whatever the thread count, every run.
+  int threads = 0;
 };
 
 struct DelaunayReport
@@ -124,9 +125,8 @@ public:
 private:
   friend Status buildDelaunay(const double*, size_t, const DelaunayOptions&, TetMesh&, std::vector<int32_t>&,
     Progress*, DelaunayReport*);
-  template <class FirstTet>
   friend Status insertParallel(TetMesh&, DelaunayInserter&, const std::vector<int32_t>&, const std::vector<size_t>&,
-    size_t, FirstTet, std::vector<int32_t>&, std::vector<int32_t>&, DelaunayReport&, Progress*, uint64_t);
+    size_t, const int32_t*, std::vector<int32_t>&, std::vector<int32_t>&, DelaunayReport&, Progress*, uint64_t);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -15,6 +15,10 @@ bool runVolGrid(const std::vector<double>&, const VolGridSettings&, Meter&, Engi
 #include "Delaunay.h"
 #include "TetMesh.h"
 
+#include <algorithm>
+#include <cstdlib>
+#include <thread>
+
 namespace volgrid_bench
 {
 
@@ -23,6 +27,9 @@ bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings,
 {
   volgrid::DelaunayOptions options; // defaults (ghost tets kept, as CGAL keeps its infinite cells)
   options.spatialSort = settings.spatialSort;
+  // Threads: the default (automatic, at most 2), or VOLGRID_THREADS=1|2 to force a count.
+  if (const char* env = std::getenv("VOLGRID_THREADS"))
+    options.threads = std::atoi(env);
   if (settings.location == "walk")
     options.location = volgrid::PointLocation::Walk;
   else if (settings.location == "bucket-grid")
@@ -47,7 +54,8 @@ bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings,
   }
   result.tets = mesh.numFiniteTets();
   result.points = static_cast<int64_t>(report.numVertices);
-  result.threads = 1;
+  result.threads = options.threads > 0 ? std::min(options.threads, 2)
+                                       : std::max(1, std::min(2, static_cast<int>(std::thread::hardware_concurrency())));
   result.note = "location=" + settings.location + (settings.spatialSort ? " sort=brio-hilbert" : " sort=none") +
     " walk_steps=" + std::to_string(report.walkSteps) + " cavity_tets=" + std::to_string(report.cavityTets) +
     " duplicates=" + std::to_string(report.numDuplicates);

@@ -527,11 +527,22 @@ TEST(Delaunay, TwoThreadsGiveTheSameMesh)
   const auto grid = gridPoints(20);
   xyz.insert(xyz.end(), grid.begin(), grid.end());
   xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3 * 1000);
-  DelaunayOptions two;
+  DelaunayOptions one, two;
+  one.threads = 1;
   two.threads = 2;
-  Built a = build(xyz), b = build(xyz, two);
+  EXPECT_EQ(DelaunayOptions().threads, 0) << "automatic by default";
+  Built a = build(xyz, one), b = build(xyz, two);
   ASSERT_TRUE(a.status.ok() && b.status.ok());
   EXPECT_EQ(tetSet(a.mesh), tetSet(b.mesh));
+  // The product's rule: the same mesh ARRAYS (tet numbering, vertex order, neighbours) whatever the
+  // thread count, and from run to run.
+  EXPECT_EQ(a.mesh.tetVertices, b.mesh.tetVertices);
+  EXPECT_EQ(a.mesh.tetNeighbors, b.mesh.tetNeighbors);
+  EXPECT_EQ(a.mesh.tetFlags, b.mesh.tetFlags);
+  EXPECT_EQ(b.mesh.numFreeTets(), 0);
+  Built c = build(xyz, two);
+  EXPECT_EQ(b.mesh.tetVertices, c.mesh.tetVertices);
+  EXPECT_EQ(b.mesh.tetNeighbors, c.mesh.tetNeighbors);
   EXPECT_EQ(a.map, b.map);
   EXPECT_EQ(b.report.numDuplicates, 1000u);
   EXPECT_EQ(a.mesh.numGhostTets(), b.mesh.numGhostTets());
@@ -539,4 +550,37 @@ TEST(Delaunay, TwoThreadsGiveTheSameMesh)
   fast.euler = false;
   const MeshCheckReport r = checkMesh(b.mesh, fast);
   EXPECT_TRUE(r.valid) << r.summary();
+}
+
+TEST(Delaunay, CanonicalTetNumbering)
+{
+  // Canonical form of the output: within each tet the smallest vertex comes first and the next smallest
+  // second (orientation kept by an even permutation; the vertex at infinity counts as the largest), no
+  // free slots, and the same arrays from run to run, with and without spatial sorting.
+  for (bool sort : { true, false })
+  {
+    const auto xyz = randomPoints(3000, 5, 1);
+    DelaunayOptions options;
+    options.spatialSort = sort;
+    Built a = build(xyz, options);
+    ASSERT_TRUE(a.status.ok());
+    EXPECT_EQ(a.mesh.numFreeTets(), 0);
+    for (int32_t t = 0; t < a.mesh.tetCapacity(); ++t)
+    {
+      const int32_t* w = a.mesh.vertices(t);
+      const uint32_t u[4] = { uint32_t(w[0]), uint32_t(w[1]), uint32_t(w[2]), uint32_t(w[3]) };
+      ASSERT_LT(u[0], u[1]);
+      ASSERT_LT(u[0], u[2]);
+      ASSERT_LT(u[0], u[3]);
+      ASSERT_LT(u[1], u[2]);
+      ASSERT_LT(u[1], u[3]);
+    }
+    MeshCheckOptions fast;
+    fast.euler = false;
+    const MeshCheckReport r = checkMesh(a.mesh, fast);
+    EXPECT_TRUE(r.valid) << r.summary();
+    Built b = build(xyz, options);
+    EXPECT_EQ(a.mesh.tetVertices, b.mesh.tetVertices);
+    EXPECT_EQ(a.mesh.tetNeighbors, b.mesh.tetNeighbors);
+  }
 }

@@ -1,0 +1,733 @@
+// Internal header of the Delaunay kernel (Delaunay.cxx, DelaunayInserter.cxx, DelaunayParallel.cxx,
+// DelaunayCanonical.cxx): the inserter's state and its walk / cavity / insertion code, the tables
+// shared by those files, and the kernel's internal entry points. Not part of Core's interface.
+#pragma once
+
+#include "Delaunay.h"
+#include "PredicatesInline.h"
+
+#include <algorithm>
+#include <atomic>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace volgrid
+{
+namespace delaunay_detail
+{
+constexpr int kFV[4][3] = { { 1, 3, 2 }, { 0, 2, 3 }, { 0, 3, 1 }, { 0, 1, 2 } };
+// Transient marks during one insertion, in the sign bit of neighbour codes (codes are >= 0 while ghost
+// tets exist): bit 31 of tetNeighbors[4t] = t is in the cavity, of tetNeighbors[4t+1] = t was tested and
+// is not in conflict. Those words are read or written anyway, unlike a separate flag array.
+constexpr uint32_t kMarkBit = 0x80000000u;
+constexpr int32_t kCodeMask = 0x7fffffff;
+
+// The hot loop uses the inline filtered predicates (PredicatesInline.h): same results as Predicates.h.
+constexpr double kInsphereFilter2 =
+  (24.0 * predicates::detail::kInsphereBound) * (24.0 * predicates::detail::kInsphereBound) * (1.0 + 0x1p-20);
+
+inline bool samePoint(const double* a, const double* b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+// Key of the undirected edge {a,b} (a or b may be kGhostVertex).
+inline uint64_t edgeKey(int32_t a, int32_t b)
+{
+  const uint32_t x = static_cast<uint32_t>(a + 1), y = static_cast<uint32_t>(b + 1);
+  return x < y ? (uint64_t(x) << 32) | y : (uint64_t(y) << 32) | x;
+}
+
+// For a new tet with the cavity face opposite `f`, the face g (g != f) contains the new point and the
+// edge made of the two local indices other than f and g: kOther[f][g] = {x, y}.
+struct EdgePair
+{
+  int8_t x, y;
+};
+constexpr EdgePair kOther[4][4] = {
+  { { -1, -1 }, { 2, 3 }, { 1, 3 }, { 1, 2 } },
+  { { 2, 3 }, { -1, -1 }, { 0, 3 }, { 0, 2 } },
+  { { 1, 3 }, { 0, 3 }, { -1, -1 }, { 0, 1 } },
+  { { 1, 2 }, { 0, 2 }, { 0, 1 }, { -1, -1 } },
+};
+// Same pair, directed: face g of the new tet read cyclically from the new point (at position f) is
+// (new point, x, y). The new tet across that face lists the same edge as (y, x).
+constexpr EdgePair kDirected[4][4] = {
+  { { -1, -1 }, { 2, 3 }, { 3, 1 }, { 1, 2 } },
+  { { 3, 2 }, { -1, -1 }, { 0, 3 }, { 2, 0 } },
+  { { 1, 3 }, { 3, 0 }, { -1, -1 }, { 0, 1 } },
+  { { 2, 1 }, { 0, 2 }, { 1, 0 }, { -1, -1 } },
+};
+
+// Rounds at least this large run on two threads (buildDelaunay with threads > 1), for inputs at least
+// kParallelMinPoints large.
+constexpr size_t kParallelMinPoints = 200000;
+constexpr size_t kParallelMinRound = 50000;
+} // namespace delaunay_detail
+
+using namespace delaunay_detail;
+
+// ---------------------------------------------------------------------------------------------------
+struct DelaunayInserter::Impl
+{
+  TetMesh& mesh;
+  uint64_t rng;
+  int32_t last = -1;
+  uint64_t walkSteps = 0;
+  uint64_t cavityTets = 0;
+  const int32_t* sosId = nullptr; // optional: SoS id of each vertex (default: the vertex id)
+  // Lattice mode (see latticeUnit): limits on the coordinate differences for exact double evaluation;
+  // negative = off. Only buildDelaunay turns it on (later points need not be on the lattice).
+  double latticeOrientLimit = -1, latticeInsphereLimit2 = -1; // the latter squared
+
+  int orient(const double* a, const double* b, const double* c, const double* d) const
+  {
+    if (latticeOrientLimit > 0)
+    {
+      const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+      const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+      const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+      const double m = std::max({ std::fabs(ux), std::fabs(uy), std::fabs(uz), std::fabs(vx), std::fabs(vy),
+        std::fabs(vz), std::fabs(wx), std::fabs(wy), std::fabs(wz) });
+      if (m <= latticeOrientLimit)
+      {
+        const double det = (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
+        return (det > 0) - (det < 0);
+      }
+    }
+    return predicates::orient3dInline(a, b, c, d);
+  }
+
+  // Exact insphere sign (0 when cospherical); the SoS tie-break is the caller's. Fast path: the
+  // determinant with the expression tree of PredicatesInline.h, whose forward error is at most
+  // gamma_16 * P (P = sum of the absolute monomials, see Predicates.cxx). P is bounded from the lifted
+  // values w_i = |p_i - e|^2 without computing it: P = sum_i w_i q_i, where q_i is the permanent of the
+  // other three rows of |coordinates|, at most the product of their row sums (<= sqrt(3 w_j)), so
+  // P <= 4 W * 3^(3/2) W^(3/2) <= 24 W^(5/2) with W = max w_i. The test |det| > gamma_16 * 24 W^(5/2) is
+  // done squared (no square root) with a relative margin of 2^-20 for the rounding of both sides.
+  // Restricting W to [2^-200, 2^200] rules out overflow and keeps gradual underflow below 2^-800 of
+  // the bound. Uncertain cases go to the exact predicate.
+  int insphere(const double* a, const double* b, const double* c, const double* d, const double* e) const
+  {
+    const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
+    const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
+    const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
+    const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
+    const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
+    const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
+    const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
+    const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
+    const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
+    const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
+    const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
+    const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
+    const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
+    const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
+    const double det = (w0 * d123 - w1 * d023) + (w2 * d013 - w3 * d012); // > 0: e inside
+    const double W = std::max(std::max(w0, w1), std::max(w2, w3));
+    if (W <= latticeInsphereLimit2)
+      return (det > 0) - (det < 0); // exact (lattice input, differences <= 2^9 units)
+    const double W2 = W * W;
+    if (det * det > kInsphereFilter2 * (W2 * W2 * W) && W >= 0x1p-200 && W <= 0x1p200)
+      return (det > 0) - (det < 0);
+    return predicates::insphere(a, b, c, d, e);
+  }
+
+  // Parallel construction (buildDelaunay with threads > 1): tets are owned by one thread at a time
+  // (owner[t] = thread id + 1, acquired with compare-exchange before any read, released at the end of
+  // the insertion); an insertion that meets a tet owned by the other thread is undone and reported as
+  // aborted (the caller inserts it later, alone). New slots come from a pre-allocated pool.
+  std::atomic<uint8_t>* owner = nullptr;
+  uint8_t me = 0;
+  std::vector<int32_t> held, spare;
+  std::atomic<int32_t>* nextSlot = nullptr; // pool mode: next unused slot, pool ends at slotLimit
+  int32_t slotLimit = 0;
+  bool lockFailed = false, poolFull = false;
+  int32_t poolEnd = INT32_MAX; // smallest failed pool position (the pool's used part ends there)
+  int32_t pendingGhostDelta = 0; // pool mode: ghost count changes not yet reported to the mesh
+
+  bool acquire(int32_t t)
+  {
+    if (!owner)
+      return true;
+    uint8_t cur = owner[t].load(std::memory_order_relaxed);
+    if (cur == me)
+      return true;
+    cur = 0;
+    if (!owner[t].compare_exchange_strong(cur, me, std::memory_order_acquire, std::memory_order_relaxed))
+      return false;
+    held.push_back(t);
+    return true;
+  }
+  void releaseAll()
+  {
+    for (int32_t t : held)
+      owner[t].store(0, std::memory_order_release);
+    held.clear();
+  }
+
+  // Reused buffers (no allocation in the insertion loop once they have grown).
+  struct BoundaryFace
+  {
+    int32_t v[4];    // the new tet: the cavity tet's vertices with the new point at position `face`
+    int32_t outside; // neighbour code of the tet across the face (outside the cavity)
+    int8_t face;
+    int8_t local[4]; // local numbers of the face's vertices (matrix matching)
+  };
+  // Matching of the new tets around the cavity boundary edges: the boundary vertices get local numbers
+  // (vlocal[v+1], reset after each insertion from the list localVert), and directed edge (x,y) is stored
+  // at edgeMat[x*kMaxLocal+y]. Cavities with more boundary vertices use the edge hash instead.
+  // vlocal is -1 between insertions; edgeMat has a fixed stride of kMaxLocal.
+  static constexpr int kLocalShift = 7;
+  static constexpr int32_t kMaxLocal = 1 << kLocalShift;
+  std::vector<int32_t> vlocal, localVert = std::vector<int32_t>(kMaxLocal),
+                              edgeMat = std::vector<int32_t>(kMaxLocal * kMaxLocal);
+  std::vector<int32_t> cavity, outside;
+  std::vector<BoundaryFace> boundary;
+  struct HashSlot
+  {
+    uint64_t key;
+    int32_t code;
+    uint32_t stamp;
+  };
+  std::vector<HashSlot> table;
+  uint32_t stamp = 0;
+
+  // Bucket grid (PointLocation::BucketGrid).
+  bool grid = false;
+  double glo[3] = { 0, 0, 0 }, gscale[3] = { 0, 0, 0 };
+  int gres = 1;
+  std::vector<int32_t> bucketHead; // last vertex registered in the bucket
+  std::vector<int32_t> vertexNext; // next vertex in the same bucket
+  std::vector<int32_t> vertexTet;  // a tet (probably still) incident to the vertex
+
+  Impl(TetMesh& m, uint64_t seed) : mesh(m), rng(seed | 1) {}
+
+  uint32_t random()
+  {
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return static_cast<uint32_t>(rng);
+  }
+
+  int32_t liveTet(int32_t hint) const
+  {
+    if (hint >= 0 && hint < mesh.tetCapacity() && !mesh.isFree(hint))
+      return hint;
+    if (last >= 0 && last < mesh.tetCapacity() && !mesh.isFree(last))
+      return last;
+    for (int32_t t = 0; t < mesh.tetCapacity(); ++t)
+      if (!mesh.isFree(t))
+        return t;
+    return -1;
+  }
+
+  int32_t walk(const double* p, int32_t t)
+  {
+    const int32_t* V = mesh.tetVertices.data();
+    const int32_t* N = mesh.tetNeighbors.data();
+    const double* P = mesh.points.data();
+    int32_t prev = -1;
+    uint32_t bits = 0;
+    int bitsLeft = 0;
+    for (;;)
+    {
+      ++walkSteps;
+      if (owner && (!acquire(t) || (mesh.tetFlags[t] & TetMesh::kFree)))
+        return -1; // owned by the other thread, or a slot it freed
+      const int32_t* w = V + 4 * static_cast<size_t>(t);
+      if ((w[0] | w[1] | w[2] | w[3]) < 0)
+      {
+        // Ghost: p strictly beyond its hull face -> located (the ghost is in conflict); else go inside.
+        const int k = w[0] < 0 ? 0 : w[1] < 0 ? 1 : w[2] < 0 ? 2 : 3;
+        if (prev < 0)
+        {
+          const int o = orient(P + 3 * static_cast<size_t>(w[kFV[k][0]]),
+            P + 3 * static_cast<size_t>(w[kFV[k][1]]), P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
+          if (o > 0)
+            return t;
+        }
+        else
+          return t; // entered from a finite tet through a face that p strictly sees: in conflict
+        prev = t;
+        t = N[4 * static_cast<size_t>(t) + k] >> 2;
+        continue;
+      }
+      if (bitsLeft == 0)
+      {
+        bits = random();
+        bitsLeft = 16;
+      }
+      const int r = static_cast<int>(bits & 3);
+      bits >>= 2;
+      --bitsLeft;
+      int32_t next = -1;
+      for (int j = 0; j < 4; ++j)
+      {
+        const int i = (r + j) & 3;
+        const int32_t u = N[4 * static_cast<size_t>(t) + i] >> 2;
+        if (u == prev)
+          continue;
+        const int o = orient(P + 3 * static_cast<size_t>(w[kFV[i][0]]),
+          P + 3 * static_cast<size_t>(w[kFV[i][1]]), P + 3 * static_cast<size_t>(w[kFV[i][2]]), p);
+        if (o < 0)
+        {
+          next = u;
+          break;
+        }
+      }
+      if (next < 0)
+        return t;
+      prev = t;
+      t = next;
+    }
+  }
+
+  __attribute__((always_inline)) bool inConflict(int32_t u, const double* p, int32_t v)
+  {
+    const int32_t* w = mesh.tetVertices.data() + 4 * static_cast<size_t>(u);
+    const double* P = mesh.points.data();
+    if ((w[0] | w[1] | w[2] | w[3]) < 0)
+    {
+      const int k = w[0] < 0 ? 0 : w[1] < 0 ? 1 : w[2] < 0 ? 2 : 3;
+      const int o = orient(P + 3 * static_cast<size_t>(w[kFV[k][0]]),
+        P + 3 * static_cast<size_t>(w[kFV[k][1]]), P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
+      if (o != 0)
+        return o > 0;
+      // p on the plane of the hull face: same answer as the finite tet across it.
+      u = (mesh.tetNeighbors[4 * static_cast<size_t>(u) + k] & kCodeMask) >> 2;
+      if (!acquire(u))
+      {
+        lockFailed = true;
+        return false;
+      }
+      w = mesh.tetVertices.data() + 4 * static_cast<size_t>(u);
+    }
+    const double* pa = P + 3 * static_cast<size_t>(w[0]);
+    const double* pb = P + 3 * static_cast<size_t>(w[1]);
+    const double* pc = P + 3 * static_cast<size_t>(w[2]);
+    const double* pd = P + 3 * static_cast<size_t>(w[3]);
+    const int s = insphere(pa, pb, pc, pd, p);
+    if (s != 0)
+      return s > 0;
+    // Exactly cospherical: Simulation of Simplicity with the vertices' ids.
+    if (sosId)
+      return predicates::detail::insphereSoSTie(pa, pb, pc, pd, p, sosId[w[0]], sosId[w[1]], sosId[w[2]],
+               sosId[w[3]], sosId[v]) > 0;
+    return predicates::detail::insphereSoSTie(pa, pb, pc, pd, p, w[0], w[1], w[2], w[3], v) > 0;
+  }
+
+  int32_t gridStart(const double* p) const
+  {
+    int c[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double f = (p[a] - glo[a]) * gscale[a];
+      c[a] = f <= 0 ? 0 : f >= gres - 1 ? gres - 1 : static_cast<int>(f);
+    }
+    const double* P = mesh.points.data();
+    // Search rings of buckets around p's bucket; nearest vertex of the first non-empty ring. Give up
+    // after a few rings (the walk from the last tet takes over): early on most buckets are empty.
+    for (int ring = 0; ring <= std::min(2, gres); ++ring)
+    {
+      int32_t best = -1;
+      double bestD = 0;
+      for (int i = std::max(0, c[0] - ring); i <= std::min(gres - 1, c[0] + ring); ++i)
+        for (int j = std::max(0, c[1] - ring); j <= std::min(gres - 1, c[1] + ring); ++j)
+          for (int k = std::max(0, c[2] - ring); k <= std::min(gres - 1, c[2] + ring); ++k)
+          {
+            if (std::max({ std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2]) }) != ring)
+              continue;
+            for (int32_t v = bucketHead[(static_cast<size_t>(i) * gres + j) * gres + k]; v >= 0;
+                 v = vertexNext[v])
+            {
+              const double* q = P + 3 * static_cast<size_t>(v);
+              const double d =
+                (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]);
+              if (best < 0 || d < bestD)
+              {
+                best = v;
+                bestD = d;
+              }
+            }
+          }
+      if (best >= 0)
+      {
+        const int32_t t = vertexTet[best];
+        if (t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t))
+          return t;
+        return -1;
+      }
+    }
+    return -1;
+  }
+
+  void gridRegister(int32_t v, int32_t t)
+  {
+    if (!grid)
+      return;
+    if (static_cast<size_t>(v) >= vertexNext.size())
+    {
+      vertexNext.resize(static_cast<size_t>(v) + 1 + static_cast<size_t>(v) / 4, -1);
+      vertexTet.resize(vertexNext.size(), -1);
+    }
+    const double* p = mesh.point(v);
+    int c[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double f = (p[a] - glo[a]) * gscale[a];
+      c[a] = f <= 0 ? 0 : f >= gres - 1 ? gres - 1 : static_cast<int>(f);
+    }
+    const size_t b = (static_cast<size_t>(c[0]) * gres + c[1]) * gres + c[2];
+    vertexNext[v] = bucketHead[b];
+    bucketHead[b] = v;
+    vertexTet[v] = t;
+  }
+
+  // Hash of the cavity boundary edges: returns the code stored by the twin face, or stores `code`.
+  int32_t matchEdge(uint64_t key, int32_t code, uint32_t mask)
+  {
+    uint32_t h = static_cast<uint32_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+    for (;;)
+    {
+      HashSlot& s = table[h];
+      if (s.stamp != stamp)
+      {
+        s.key = key;
+        s.code = code;
+        s.stamp = stamp;
+        return -1;
+      }
+      if (s.key == key)
+        return s.code;
+      h = (h + 1) & mask;
+    }
+  }
+
+  Result insert(int32_t v, int32_t hint, const double* next)
+  {
+    Result res;
+    const double* p = mesh.point(v);
+    int32_t start = -1;
+    if (grid)
+      start = gridStart(p);
+    if (start < 0)
+      start = owner ? (hint >= 0 ? hint : last) : liveTet(hint);
+    int32_t t = walk(p, start);
+    if (t < 0)
+    {
+      releaseAll();
+      res.aborted = true;
+      return res;
+    }
+
+    uint8_t* F = mesh.tetFlags.data();
+    int32_t* V = mesh.tetVertices.data();
+    int32_t* N = mesh.tetNeighbors.data();
+    {
+      const int32_t* w = V + 4 * static_cast<size_t>(t);
+      if ((w[0] | w[1] | w[2] | w[3]) >= 0)
+        for (int k = 0; k < 4; ++k)
+          if (samePoint(mesh.point(w[k]), p))
+          {
+            res.tet = t;
+            res.duplicateOf = w[k];
+            last = t;
+            if (owner)
+              releaseAll();
+            return res;
+          }
+    }
+
+    // ---- cavity: tets in conflict, grown by adjacency from t (which contains p, hence in conflict)
+    cavity.clear();
+    outside.clear();
+    boundary.clear();
+    auto mark = [&](int32_t u, int word) {
+      N[4 * static_cast<size_t>(u) + word] = static_cast<int32_t>(static_cast<uint32_t>(N[4 * static_cast<size_t>(u) + word]) | kMarkBit);
+    };
+    mark(t, 0);
+    cavity.push_back(t);
+    int32_t ghostDelta = 0;
+    const size_t needV = static_cast<size_t>(mesh.numVertices()) + 1;
+    if (vlocal.size() < needV)
+      vlocal.resize(needV + needV / 4, -1);
+    int32_t* VL = vlocal.data();
+    int32_t* LV = localVert.data();
+    int32_t nloc = 0;
+    bool overflow = false;
+    // Breadth-first over `cavity` itself. The neighbours of a tet are usually cache misses: while one
+    // tet is processed, the neighbours of the next queued tet are requested.
+    auto prefetchAround = [&](int32_t c) {
+      for (int f = 0; f < 4; ++f)
+      {
+        const size_t u = static_cast<size_t>((N[4 * static_cast<size_t>(c) + f] & kCodeMask) >> 2);
+        __builtin_prefetch(V + 4 * u);
+        __builtin_prefetch(N + 4 * u);
+      }
+    };
+    prefetchAround(t);
+    for (size_t qi = 0; qi < cavity.size(); ++qi)
+    {
+      const int32_t c = cavity[qi];
+      if (qi + 1 < cavity.size())
+        prefetchAround(cavity[qi + 1]);
+      const int32_t* wc = V + 4 * static_cast<size_t>(c);
+      if ((wc[0] | wc[1] | wc[2] | wc[3]) < 0)
+        --ghostDelta;
+      for (int f = 0; f < 4; ++f)
+      {
+        const int32_t code = N[4 * static_cast<size_t>(c) + f] & kCodeMask;
+        const int32_t u = code >> 2;
+        if (owner && !acquire(u))
+          return abortInsertion(res, nloc);
+        const int32_t* nu = N + 4 * static_cast<size_t>(u);
+        if (nu[0] < 0)
+          continue; // in the cavity
+        if (nu[1] >= 0)
+        {
+          const bool conflict = inConflict(u, p, v);
+          if (lockFailed)
+            return abortInsertion(res, nloc);
+          if (conflict)
+          {
+            mark(u, 0);
+            cavity.push_back(u);
+            continue;
+          }
+          mark(u, 1);
+          outside.push_back(u);
+        }
+        boundary.emplace_back();
+        BoundaryFace& bf = boundary.back();
+        bf.v[0] = wc[0];
+        bf.v[1] = wc[1];
+        bf.v[2] = wc[2];
+        bf.v[3] = wc[3];
+        bf.v[f] = v;
+        bf.outside = code;
+        bf.face = static_cast<int8_t>(f);
+        // Local numbers of the face's vertices (the new point excluded).
+        for (int k = 0; k < 4; ++k)
+        {
+          if (k == f)
+            continue;
+          int32_t& li = VL[wc[k] + 1];
+          if (li < 0)
+          {
+            if (nloc == kMaxLocal)
+            {
+              overflow = true;
+              continue;
+            }
+            li = nloc;
+            LV[nloc++] = wc[k];
+          }
+          bf.local[k] = static_cast<int8_t>(li);
+        }
+      }
+    }
+    cavityTets += cavity.size();
+    for (int32_t u : outside)
+      N[4 * static_cast<size_t>(u) + 1] &= kCodeMask;
+
+    // ---- new tets: reuse the cavity slots, then free/appended slots
+    const size_t nb = boundary.size();
+    const size_t nc = cavity.size();
+    if (nextSlot)
+    {
+      // Pool mode: own spare slots first, then fresh ones from the shared pool.
+      while (cavity.size() < nb && !spare.empty())
+      {
+        cavity.push_back(spare.back());
+        spare.pop_back();
+      }
+      if (cavity.size() < nb)
+      {
+        const int32_t k = static_cast<int32_t>(nb - cavity.size());
+        const int32_t first = nextSlot->fetch_add(k);
+        if (first + k > slotLimit)
+        {
+          poolFull = true;
+          poolEnd = std::min(poolEnd, first); // slots from here on were never handed out
+          for (size_t i = nc; i < cavity.size(); ++i)
+            spare.push_back(cavity[i]);
+          cavity.resize(nc);
+          return abortInsertion(res, nloc);
+        }
+        for (int32_t s = first; s < first + k; ++s)
+        {
+          if (owner)
+          {
+            owner[s].store(me, std::memory_order_relaxed);
+            held.push_back(s);
+          }
+          cavity.push_back(s);
+        }
+      }
+    }
+    else
+    {
+      for (size_t i = nc; i < nb && mesh.freeListHead() >= 0; ++i)
+        cavity.push_back(mesh.newTet(0, 0, 0, 0));
+      if (cavity.size() < nb)
+      {
+        const int32_t first = mesh.appendTets(static_cast<int32_t>(nb - cavity.size()));
+        for (int32_t s = first; cavity.size() < nb; ++s)
+          cavity.push_back(s);
+      }
+    }
+    F = mesh.tetFlags.data();
+    V = mesh.tetVertices.data();
+    N = mesh.tetNeighbors.data();
+    for (int32_t k = 0; k < nloc; ++k)
+      VL[LV[k] + 1] = -1;
+    const bool useMatrix = !overflow;
+    uint32_t mask = 0;
+    if (!useMatrix)
+    {
+      uint32_t size = 64;
+      while (size < 4 * nb)
+        size <<= 1;
+      if (table.size() < size)
+        table.assign(size, HashSlot{ 0, 0, 0 }), stamp = 0;
+      if (++stamp == 0)
+      {
+        for (HashSlot& hs : table)
+          hs.stamp = 0;
+        stamp = 1;
+      }
+      mask = size - 1;
+    }
+    int32_t* M = edgeMat.data();
+    for (size_t i = 0; i < nb; ++i)
+    {
+      const BoundaryFace& bf = boundary[i];
+      const int32_t s = cavity[i];
+      int32_t* ws = V + 4 * static_cast<size_t>(s);
+      ws[0] = bf.v[0];
+      ws[1] = bf.v[1];
+      ws[2] = bf.v[2];
+      ws[3] = bf.v[3];
+      if ((bf.v[0] | bf.v[1] | bf.v[2] | bf.v[3]) < 0)
+        ++ghostDelta;
+      F[s] = 0;
+      int32_t* ns = N + 4 * static_cast<size_t>(s);
+      ns[bf.face] = bf.outside;
+      N[bf.outside] = (s << 2) | bf.face;
+      for (int g = 0; g < 4; ++g)
+      {
+        if (g == bf.face)
+          continue;
+        if (useMatrix)
+        {
+          const EdgePair e = kDirected[bf.face][g];
+          M[(bf.local[e.x] << kLocalShift) | bf.local[e.y]] = (s << 2) | g;
+          continue;
+        }
+        const EdgePair e = kOther[bf.face][g];
+        const int32_t twin = matchEdge(edgeKey(bf.v[e.x], bf.v[e.y]), (s << 2) | g, mask);
+        if (twin >= 0)
+        {
+          ns[g] = twin;
+          N[twin] = (s << 2) | g;
+        }
+      }
+    }
+    if (useMatrix)
+      for (size_t i = 0; i < nb; ++i)
+      {
+        const BoundaryFace& bf = boundary[i];
+        int32_t* ns = N + 4 * static_cast<size_t>(cavity[i]);
+        for (int g = 0; g < 4; ++g)
+        {
+          if (g == bf.face)
+            continue;
+          const EdgePair e = kDirected[bf.face][g];
+          ns[g] = M[(bf.local[e.y] << kLocalShift) | bf.local[e.x]];
+        }
+      }
+    // Leftover cavity slots (the cavity had more tets than boundary faces).
+    for (size_t i = nb; i < nc; ++i)
+    {
+      const int32_t s = cavity[i];
+      int32_t* ws = V + 4 * static_cast<size_t>(s);
+      ws[0] = ws[1] = ws[2] = ws[3] = 0; // so that freeTet does not count it as a ghost
+      if (nextSlot)
+      {
+        F[s] = TetMesh::kFree; // recycled by this inserter; freed in the mesh when the pool is closed
+        spare.push_back(s);
+      }
+      else
+        mesh.freeTet(s);
+    }
+    if (nextSlot)
+      pendingGhostDelta += ghostDelta;
+    else
+      mesh.adjustGhostCount(ghostDelta);
+    last = cavity[nb - 1];
+    if (next)
+    {
+      // Start the next walk from the new tet whose outer face is nearest to the next point (heuristic,
+      // plain doubles: only the walk length depends on it).
+      const double* P = mesh.points.data();
+      double best = -1;
+      for (size_t i = 0; i < nb; ++i)
+      {
+        const BoundaryFace& bf = boundary[i];
+        if ((bf.v[0] | bf.v[1] | bf.v[2] | bf.v[3]) < 0)
+          continue;
+        const double* a = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][0]]);
+        const double* b = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][1]]);
+        const double* c = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][2]]);
+        const double dx = a[0] + b[0] + c[0] - 3 * next[0];
+        const double dy = a[1] + b[1] + c[1] - 3 * next[1];
+        const double dz = a[2] + b[2] + c[2] - 3 * next[2];
+        const double d = dx * dx + dy * dy + dz * dz;
+        if (best < 0 || d < best)
+        {
+          best = d;
+          last = cavity[i];
+        }
+      }
+    }
+    res.tet = last;
+    gridRegister(v, last);
+    if (owner)
+      releaseAll();
+    return res;
+  }
+
+  // Undo the marks of a cavity search and give the tets back (parallel mode only).
+  Result abortInsertion(Result res, int32_t nloc)
+  {
+    int32_t* N = mesh.tetNeighbors.data();
+    for (int32_t c : cavity)
+      N[4 * static_cast<size_t>(c)] &= kCodeMask;
+    for (int32_t u : outside)
+      N[4 * static_cast<size_t>(u) + 1] &= kCodeMask;
+    for (int32_t k = 0; k < nloc; ++k)
+      vlocal[static_cast<size_t>(localVert[k]) + 1] = -1;
+    lockFailed = false;
+    releaseAll();
+    res.aborted = true;
+    return res;
+  }
+};
+
+// Two threads insert the two halves (along the Hilbert curve) of each BRIO round from `round0` on
+// (DelaunayParallel.cxx). firstTet: the four insertion positions of the first tet (already inserted).
+Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<int32_t>& order,
+  const std::vector<size_t>& roundStarts, size_t round0, const int32_t* firstTet,
+  std::vector<int32_t>& inputToVertex, std::vector<int32_t>& rest, DelaunayReport& rep, Progress* progress,
+  uint64_t seed);
+
+// Canonical tet numbering (DelaunayCanonical.cxx): see the file. Vertices are numbered in insertion
+// order on entry; toInput (optional) maps them to the output numbering as the tets are written.
+// threads > 1: the last pass runs on two threads (same result).
+void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads);
+
+} // namespace volgrid
