@@ -1,5 +1,6 @@
 #include "BoundaryRecovery.h"
 
+#include "FacetRecovery.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -1189,7 +1190,21 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   int growing = 0;
   uint64_t workLimit = 0;
   bool outOfWork = false;
-  for (int round = 0;; ++round)
+  // Input triangles whose cavity recovery failed: their inner subface edges are recovered one by one
+  // (flips, then Steiner points) like the segments. Other triangles only need their segments: the cavity
+  // retetrahedralization (FacetRecovery.h) triangulates their interior.
+  std::vector<char> fallback(static_cast<size_t>(bc.numInputTriangles()), 0);
+  auto requiredEdge = [&](int32_t a, int32_t b) {
+    const std::array<int32_t, 2>* ef = bc.edgeFaces(a, b);
+    if (!ef)
+      return false;
+    const int32_t f0 = (*ef)[0], f1 = (*ef)[1];
+    if (f0 < 0 || f1 < 0 || bc.parent[f0] != bc.parent[f1])
+      return true; // a (sub)segment
+    return fallback[static_cast<size_t>(bc.parent[f0])] != 0;
+  };
+  FacetCavityStats cavityStats;
+  for (int round = 0; round < 100000; ++round)
   {
     if (pr->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
@@ -1207,7 +1222,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
           const int32_t a = s[i], b = s[(i + 1) % 3];
           if (!seen.insert(edgeKey(a, b)).second)
             continue;
-          if (ed.findEdge(a, b) < 0)
+          if (ed.findEdge(a, b) < 0 && requiredEdge(a, b))
             missingEdges.push_back({ a, b });
         }
       }
@@ -1280,17 +1295,47 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       break;
     failedFaces.clear();
     done = 0;
+    // Cavity retetrahedralization of each input triangle with missing subfaces (all segments present).
+    {
+      std::unordered_map<int32_t, std::vector<int32_t>> byParent;
+      for (int32_t f : missingFaces)
+        if (!fallback[static_cast<size_t>(bc.parent[f])])
+          byParent.emplace(bc.parent[f], std::vector<int32_t>());
+      if (!byParent.empty())
+      {
+        for (int32_t f = 0; f < bc.capacity(); ++f)
+          if (bc.alive(f))
+          {
+            auto it = byParent.find(bc.parent[f]);
+            if (it != byParent.end())
+              it->second.push_back(f);
+          }
+        for (auto& [par, subs] : byParent)
+        {
+          if (++done % 256 == 0)
+          {
+            pr->report(0.5 + 0.5 * static_cast<double>(done) / byParent.size(), "Recovering boundary facets");
+            if (pr->cancelled())
+              return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
+          }
+          if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats))
+            fallback[static_cast<size_t>(par)] = 1;
+        }
+      }
+    }
+    bool edgesNeeded = false;
     for (int32_t f : missingFaces)
     {
-      if (++done % 256 == 0)
-      {
-        pr->report(0.5 + 0.5 * static_cast<double>(done) / missingFaces.size(), "Recovering boundary facets");
-        if (pr->cancelled())
-          return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
-      }
-      if (!bc.alive(f))
+      if (!bc.alive(f) || !fallback[static_cast<size_t>(bc.parent[f])])
         continue;
       const int32_t* s = bc.subface(f);
+      if (ed.findFace(s[0], s[1], s[2]) >= 0)
+        continue;
+      if (ed.findEdge(s[0], s[1]) < 0 || ed.findEdge(s[1], s[2]) < 0 || ed.findEdge(s[2], s[0]) < 0)
+      {
+        edgesNeeded = true; // recovered by the edge stage of the next round
+        continue;
+      }
       if (ed.removalAttempts > workLimit)
         outOfWork = true;
       if (outOfWork || !rec.recoverFacetByFlips(s[0], s[1], s[2]))
@@ -1298,7 +1343,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     }
     if (outOfWork)
       break;
-    if (failedFaces.empty())
+    if (failedFaces.empty() || edgesNeeded)
       continue; // re-check edges (flips never remove constraint edges, so this ends quickly)
     if (!options.allowSteiner || steinerUsed >= budget)
       break;
@@ -1349,6 +1394,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       }
     }
   }
+  rep.facetCavities = static_cast<int64_t>(cavityStats.successes);
+  rep.facetCavityEnlargements = static_cast<int64_t>(cavityStats.enlargements);
   rep.steinerSegment = rec.steinerSegment;
   rep.steinerFacet = rec.steinerFacet;
   rep.flips23 = ed.flips23 - f23;

@@ -6,8 +6,11 @@
 //      edge removal (3-2, 4-4 and general n-to-(2n-4), best triangulation of the edge's ring found by
 //      dynamic programming) of the edges it crosses. A flip is kept only when it strictly reduces the
 //      number of faces/edges the segment crosses, so the search always terminates.
-//   2. Missing facets (all three edges present) are recovered the same way: the edges crossing the
-//      triangle are removed by edge removal or 2-3 flips.
+//   2. Missing facets: once every segment (input edge, or piece of one between Steiner points) is
+//      present, each input triangle with missing subfaces is re-triangulated as a whole by cavity
+//      retetrahedralization (FacetRecovery.h): its inner subface edges need not be recovered first.
+//      When that fails for a triangle, its subface edges and subfaces are recovered one by one as before:
+//      the edges crossing a subface are removed by edge removal or 2-3 flips.
 //   3. What flips cannot recover gets a Steiner point (paper: "points at the intersection of the missing
 //      edges/facets with the tets"): the midpoint of a missing (sub)segment or the centroid of a missing
 //      (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
@@ -200,6 +203,8 @@ struct RecoveryReport
   int64_t steinerSegment = 0;         // Steiner points put on input edges
   int64_t steinerFacet = 0;           // Steiner points put inside input triangles
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
+  int64_t facetCavities = 0;          // input triangles recovered by cavity retetrahedralization
+  int64_t facetCavityEnlargements = 0; // tets added to those cavities for missing boundary faces
   int64_t unrecoveredEdges = 0, unrecoveredFacets = 0;
   double seconds = 0;
 };

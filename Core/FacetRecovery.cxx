@@ -1,0 +1,531 @@
+#include "FacetRecovery.h"
+
+#include "Delaunay.h"
+#include "Predicates.h"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace volgrid
+{
+
+namespace
+{
+
+using predicates::orient3d;
+
+// Cavities larger than this are not attempted (the caller falls back to flips and Steiner points).
+constexpr size_t kMaxCavityTets = 20000;
+// Enlargement rounds per side before giving up.
+constexpr int kMaxEnlargeRounds = 40;
+
+// A triangle with its orientation: rotated so that the smallest id comes first.
+struct OKey
+{
+  int32_t v[3];
+  bool operator==(const OKey& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
+};
+OKey orientedKey(const int32_t* f)
+{
+  if (f[0] < f[1] && f[0] < f[2])
+    return { { f[0], f[1], f[2] } };
+  if (f[1] < f[0] && f[1] < f[2])
+    return { { f[1], f[2], f[0] } };
+  return { { f[2], f[0], f[1] } };
+}
+struct OKeyHash
+{
+  size_t operator()(const OKey& k) const
+  {
+    TriKey t;
+    t.v[0] = k.v[0];
+    t.v[1] = k.v[1];
+    t.v[2] = k.v[2];
+    return TriKeyHash()(t);
+  }
+};
+
+// A face of a cavity's boundary, oriented so that the cavity is on its positive side.
+struct BFace
+{
+  int32_t v[3];
+  int32_t outer;     // mesh tet outside (-1: none)
+  int outerFace;     // its face index
+};
+using FaceMap = std::unordered_map<TriKey, BFace, TriKeyHash>;
+
+class FacetCavity
+{
+public:
+  FacetCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, const std::vector<int32_t>& subfaces)
+    : ed_(ed)
+    , m_(ed.mesh)
+    , bc_(bc)
+    , parent_(parent)
+    , subfaces_(subfaces)
+  {
+    for (int k = 0; k < 3; ++k)
+      abc_[k] = bc.verts[3 * static_cast<size_t>(parent) + k];
+    A_ = m_.point(abc_[0]);
+    B_ = m_.point(abc_[1]);
+    C_ = m_.point(abc_[2]);
+  }
+
+  bool run(std::vector<std::array<int32_t, 3>>& out, FacetCavityStats* st)
+  {
+    // R's border: the edges used by exactly one subface of the triangle; each must be a mesh edge.
+    std::unordered_map<uint64_t, int> uses;
+    std::vector<int32_t> borderVerts;
+    for (int32_t f : subfaces_)
+      for (int i = 0; i < 3; ++i)
+      {
+        ++uses[edgeKey(bc_.subface(f)[i], bc_.subface(f)[(i + 1) % 3])];
+        borderVerts.push_back(bc_.subface(f)[i]);
+      }
+    for (auto& [k, n] : uses)
+      if (n == 1)
+      {
+        border_.insert(k);
+        if (ed_.findEdge(static_cast<int32_t>(k >> 32), static_cast<int32_t>(k & 0xffffffffu)) < 0)
+          return false;
+      }
+    std::sort(borderVerts.begin(), borderVerts.end());
+    borderVerts.erase(std::unique(borderVerts.begin(), borderVerts.end()), borderVerts.end());
+    if (!collect(borderVerts))
+      return false;
+    if (!boundaryFaces())
+      return false;
+    std::vector<std::array<int32_t, 4>> newTets;
+    std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash> tri[2];
+    for (int s = 0; s < 2; ++s)
+    {
+      int round = 0;
+      for (;; ++round)
+      {
+        std::vector<TriKey> missing;
+        const size_t before = newTets.size();
+        tri[s].clear();
+        const int r = solveSide(s, newTets, tri[s], missing);
+        if (r < 0)
+          return false;
+        if (r == 0)
+          break;
+        newTets.resize(before);
+        if (round >= kMaxEnlargeRounds)
+          return false;
+        for (const TriKey& k : missing)
+        {
+          if (!enlarge(s, k))
+            return false;
+          if (st)
+            ++st->enlargements;
+        }
+      }
+    }
+    // Both sides triangulate R the same way, with opposite orientations.
+    if (tri[0].size() != tri[1].size() || tri[0].empty())
+      return false;
+    std::unordered_map<uint64_t, int> tuses;
+    for (auto& [k, f] : tri[0])
+    {
+      auto it = tri[1].find(k);
+      if (it == tri[1].end() || orientedKey(f.data()) == orientedKey(it->second.data()))
+        return false;
+      for (int i = 0; i < 3; ++i)
+        ++tuses[edgeKey(f[i], f[(i + 1) % 3])];
+    }
+    size_t borderSeen = 0;
+    for (auto& [k, n] : tuses)
+    {
+      if (n == 1)
+      {
+        if (!border_.count(k))
+          return false;
+        ++borderSeen;
+      }
+      else if (n != 2)
+        return false;
+    }
+    if (borderSeen != border_.size())
+      return false;
+    if (!interiorConstraintsFree())
+      return false;
+    std::vector<int32_t> old;
+    old.reserve(tetSide_.size());
+    for (auto& [t, s] : tetSide_)
+      old.push_back(t);
+    if (!ed_.replace(old, newTets, nullptr))
+      return false;
+    out.clear();
+    for (auto& [k, f] : tri[0])
+      out.push_back(f);
+    return true;
+  }
+
+private:
+  int side(int32_t v)
+  {
+    auto it = sideCache_.find(v);
+    if (it != sideCache_.end())
+      return it->second;
+    const int s = orient3d(A_, B_, C_, m_.point(v));
+    sideCache_.emplace(v, static_cast<int8_t>(s));
+    return s;
+  }
+
+  // Coplanar point u in the closed (strict = open) triangle ABC.
+  bool inTriangle(const double* u, bool strict) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int o = predicates::orient2dProjected(A_, B_, C_, k);
+      if (o == 0)
+        continue;
+      const int o1 = predicates::orient2dProjected(A_, B_, u, k), o2 = predicates::orient2dProjected(B_, C_, u, k),
+                o3 = predicates::orient2dProjected(C_, A_, u, k);
+      if (strict)
+        return o1 * o > 0 && o2 * o > 0 && o3 * o > 0;
+      return o1 * o >= 0 && o2 * o >= 0 && o3 * o >= 0;
+    }
+    return false;
+  }
+
+  bool onR(int32_t v)
+  {
+    auto it = onRCache_.find(v);
+    if (it != onRCache_.end())
+      return it->second;
+    const bool r = side(v) == 0 && inTriangle(m_.point(v), false);
+    onRCache_.emplace(v, r);
+    return r;
+  }
+
+  // 1: t belongs to the cavity, 0: no, -1: a vertex lies inside R (cavity method not applicable).
+  int classify(int32_t t)
+  {
+    const int32_t* v = m_.vertices(t);
+    int s[4], zeros = 0;
+    bool pos = false, neg = false;
+    for (int i = 0; i < 4; ++i)
+    {
+      s[i] = side(v[i]);
+      pos |= s[i] > 0;
+      neg |= s[i] < 0;
+      if (s[i] == 0)
+      {
+        ++zeros;
+        if (inTriangle(m_.point(v[i]), true))
+          return -1;
+      }
+    }
+    if (pos && neg)
+    {
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+          if (s[i] * s[j] >= 0)
+            continue;
+          const double *X = m_.point(v[i]), *Y = m_.point(v[j]);
+          const int l1 = orient3d(X, Y, A_, B_), l2 = orient3d(X, Y, B_, C_), l3 = orient3d(X, Y, C_, A_);
+          if ((l1 > 0 && l2 > 0 && l3 > 0) || (l1 < 0 && l2 < 0 && l3 < 0))
+            return 1;
+        }
+      return 0;
+    }
+    if (zeros == 3)
+    {
+      for (int i = 0; i < 4; ++i)
+        if (s[i] == 0 && !onR(v[i]))
+          return 0;
+      return 1;
+    }
+    return 0;
+  }
+
+  bool collect(const std::vector<int32_t>& borderVerts)
+  {
+    std::unordered_set<int32_t> tested;
+    std::vector<int32_t> star, queue;
+    for (int32_t v : borderVerts)
+    {
+      ed_.star(v, star);
+      for (int32_t t : star)
+      {
+        if (!tested.insert(t).second)
+          continue;
+        const int c = classify(t);
+        if (c < 0)
+          return false;
+        if (c > 0)
+        {
+          tetSide_.emplace(t, 2);
+          queue.push_back(t);
+        }
+      }
+    }
+    for (size_t k = 0; k < queue.size(); ++k)
+    {
+      if (queue.size() > kMaxCavityTets)
+        return false;
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t n = m_.neighbor(queue[k], i);
+        if (n < 0 || !tested.insert(n).second)
+          continue;
+        const int c = classify(n);
+        if (c < 0)
+          return false;
+        if (c > 0)
+        {
+          tetSide_.emplace(n, 2);
+          queue.push_back(n);
+        }
+      }
+    }
+    return !queue.empty();
+  }
+
+  // Splits the cavity's outer faces into the upper (side 0) and lower (side 1) boundaries.
+  bool boundaryFaces()
+  {
+    int32_t f[3];
+    for (auto& [t, s] : tetSide_)
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t n = m_.neighbor(t, i);
+        m_.faceVertices(t, i, f);
+        if (n >= 0 && tetSide_.count(n))
+          continue;
+        bool pos = false, neg = false;
+        for (int k = 0; k < 3; ++k)
+        {
+          const int sv = side(f[k]);
+          pos |= sv > 0;
+          neg |= sv < 0;
+        }
+        if (pos == neg)
+          return false; // in the plane or crossing it: not the configuration the method relies on
+        faces_[pos ? 0 : 1].emplace(TriKey(f[0], f[1], f[2]), BFace{ { f[0], f[1], f[2] }, n, m_.mirrorFace(t, i) });
+      }
+    return true;
+  }
+
+  // Grow side s's cavity by the tet outside its boundary face k.
+  bool enlarge(int s, const TriKey& k)
+  {
+    auto it = faces_[s].find(k);
+    if (it == faces_[s].end())
+      return false;
+    const BFace bf = it->second;
+    const int32_t x = bf.outer;
+    if (x < 0 || tetSide_.count(x) || bc_.findSubface(bf.v[0], bf.v[1], bf.v[2]) >= 0)
+      return false;
+    if (tetSide_.size() >= kMaxCavityTets)
+      return false;
+    faces_[s].erase(it);
+    tetSide_.emplace(x, s);
+    int32_t g[3];
+    for (int j = 0; j < 4; ++j)
+    {
+      if (j == bf.outerFace)
+        continue;
+      m_.faceVertices(x, j, g);
+      const TriKey gk(g[0], g[1], g[2]);
+      const int32_t n = m_.neighbor(x, j);
+      if (n >= 0 && tetSide_.count(n))
+      {
+        auto jt = faces_[s].find(gk);
+        if (jt == faces_[s].end())
+          return false; // touches the other side's cavity
+        faces_[s].erase(jt);
+        continue;
+      }
+      faces_[s].emplace(gk, BFace{ { g[0], g[1], g[2] }, n, m_.mirrorFace(x, j) });
+    }
+    return true;
+  }
+
+  // Delaunay tetrahedralization of side s's cavity. 0: done (tets appended to newTets, the faces in R
+  // to tri), 1: boundary faces missing (listed), -1: failure.
+  int solveSide(int s, std::vector<std::array<int32_t, 4>>& newTets,
+    std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash>& tri, std::vector<TriKey>& missing)
+  {
+    const FaceMap& fm = faces_[s];
+    if (fm.empty())
+      return -1;
+    std::vector<int32_t> verts;
+    for (auto& [k, bf] : fm)
+      verts.insert(verts.end(), bf.v, bf.v + 3);
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    if (verts.size() < 4)
+      return -1;
+    // Local ids in global order, so that Simulation of Simplicity breaks ties the same way on both sides.
+    std::vector<double> xyz(3 * verts.size());
+    for (size_t i = 0; i < verts.size(); ++i)
+      std::copy(m_.point(verts[i]), m_.point(verts[i]) + 3, xyz.begin() + 3 * i);
+    DelaunayOptions opt;
+    opt.spatialSort = false;
+    opt.keepGhosts = false;
+    TetMesh lm;
+    std::vector<int32_t> map;
+    if (!buildDelaunay(xyz.data(), verts.size(), opt, lm, map).ok())
+      return -1;
+    for (size_t i = 0; i < map.size(); ++i)
+      if (map[i] != static_cast<int32_t>(i))
+        return -1;
+    auto global = [&](int32_t l) { return verts[static_cast<size_t>(l)]; };
+    std::unordered_map<OKey, std::pair<int32_t, int>, OKeyHash> dtFaces;
+    int32_t f[3];
+    for (int32_t t = 0; t < lm.tetCapacity(); ++t)
+    {
+      if (lm.isFree(t))
+        continue;
+      for (int i = 0; i < 4; ++i)
+      {
+        lm.faceVertices(t, i, f);
+        for (int32_t& x : f)
+          x = global(x);
+        dtFaces.emplace(orientedKey(f), std::make_pair(t, i));
+      }
+    }
+    std::vector<int32_t> queue;
+    std::vector<char> inFill(static_cast<size_t>(lm.tetCapacity()), 0);
+    for (auto& [k, bf] : fm)
+    {
+      auto it = dtFaces.find(orientedKey(bf.v));
+      if (it == dtFaces.end())
+      {
+        missing.push_back(k);
+        continue;
+      }
+      if (!inFill[it->second.first])
+      {
+        inFill[it->second.first] = 1;
+        queue.push_back(it->second.first);
+      }
+    }
+    if (!missing.empty())
+      return 1;
+    const int want = s == 0 ? 1 : -1;
+    for (size_t q = 0; q < queue.size(); ++q)
+    {
+      const int32_t t = queue[q];
+      for (int i = 0; i < 4; ++i)
+      {
+        lm.faceVertices(t, i, f);
+        for (int32_t& x : f)
+          x = global(x);
+        const TriKey k(f[0], f[1], f[2]);
+        auto bt = fm.find(k);
+        if (bt != fm.end())
+        {
+          if (!(orientedKey(bt->second.v) == orientedKey(f)))
+            return -1; // reached a boundary face from outside
+          continue;
+        }
+        if (onR(f[0]) && onR(f[1]) && onR(f[2]))
+        {
+          if (side(global(lm.vertex(t, i))) != want)
+            return -1;
+          tri.emplace(k, std::array<int32_t, 3>{ { f[0], f[1], f[2] } });
+          continue;
+        }
+        const int32_t n = lm.neighbor(t, i);
+        if (n < 0)
+          return -1; // the fill leaks out of the cavity
+        if (!inFill[n])
+        {
+          inFill[n] = 1;
+          queue.push_back(n);
+        }
+      }
+    }
+    for (int32_t t : queue)
+    {
+      const int32_t* v = lm.vertices(t);
+      newTets.push_back({ { global(v[0]), global(v[1]), global(v[2]), global(v[3]) } });
+    }
+    return 0;
+  }
+
+  // The removed tets' interior faces and edges must not be constraints of another triangle.
+  bool interiorConstraintsFree()
+  {
+    std::unordered_set<uint64_t> bedges;
+    for (int s = 0; s < 2; ++s)
+      for (auto& [k, bf] : faces_[s])
+        for (int i = 0; i < 3; ++i)
+          bedges.insert(edgeKey(bf.v[i], bf.v[(i + 1) % 3]));
+    static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+    int32_t f[3];
+    for (auto& [t, s] : tetSide_)
+    {
+      const int32_t* v = m_.vertices(t);
+      for (auto& e : kEdge)
+      {
+        if (bedges.count(edgeKey(v[e[0]], v[e[1]])))
+          continue;
+        const std::array<int32_t, 2>* ef = bc_.edgeFaces(v[e[0]], v[e[1]]);
+        if (!ef)
+          continue;
+        for (int32_t sf : *ef)
+          if (sf >= 0 && bc_.parent[sf] != parent_)
+            return false;
+      }
+      for (int i = 0; i < 4; ++i)
+      {
+        m_.faceVertices(t, i, f);
+        const TriKey k(f[0], f[1], f[2]);
+        if (faces_[0].count(k) || faces_[1].count(k))
+          continue;
+        const int32_t sf = bc_.findSubface(f[0], f[1], f[2]);
+        if (sf >= 0 && bc_.parent[sf] != parent_)
+          return false;
+      }
+    }
+    return true;
+  }
+
+  MeshEditor& ed_;
+  TetMesh& m_;
+  BoundaryConstraints& bc_;
+  const int32_t parent_;
+  const std::vector<int32_t>& subfaces_;
+  int32_t abc_[3];
+  const double *A_, *B_, *C_;
+  std::unordered_set<uint64_t> border_;
+  std::unordered_map<int32_t, int8_t> sideCache_;
+  std::unordered_map<int32_t, bool> onRCache_;
+  std::unordered_map<int32_t, int> tetSide_; // removed tets: 2 = initial cavity, 0/1 = grown side
+  FaceMap faces_[2];
+};
+
+} // namespace
+
+bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
+  FacetCavityStats* stats)
+{
+  if (stats)
+    ++stats->attempts;
+  if (subfaces.empty())
+    return false;
+  std::vector<std::array<int32_t, 3>> tri;
+  {
+    FacetCavity fc(ed, bc, parent, subfaces);
+    if (!fc.run(tri, stats))
+      return false;
+  }
+  for (int32_t f : subfaces)
+    bc.removeSubface(f);
+  subfaces.clear();
+  for (auto& t : tri)
+    subfaces.push_back(bc.addSubface(t[0], t[1], t[2], parent));
+  if (stats)
+    ++stats->successes;
+  return true;
+}
+
+} // namespace volgrid
