@@ -48,7 +48,7 @@ struct ImprovementOptions
 
   // Field points (paper 7.2): alpha (eq. 4: larger = fewer points), beta (eq. 5: spacing in units of h),
   // maxVolume (global cap on tet volume, 0 = none). Defaults: alpha 0.75, beta 0.4, gradation 1.5,
-  // scale 1.6, target 18 degrees, 8 passes (see the constructor).
+  // scale 1, target 18 degrees, 8 passes (see the constructor).
   bool fieldPoints = true;
   FieldPointOptions fieldPointOptions;
   // Sizing: gradation (size growth bound between neighbours, > 1), maxEdgeLength (0 = none), scale (the
@@ -79,6 +79,7 @@ struct ImprovementStatistics
   int64_t clusterPoints = 0;    // clustering points inserted
   int64_t clusterSkipped = 0;   // outside, on the boundary, duplicates or too close
   int64_t interfaceFaces = 0;   // interior faces kept as constraints (region interfaces)
+  int64_t latticeNodes = 0;     // sizing nodes away from the boundary (size from the gradation)
   DihedralSummary before, after; // dihedral angles before the field points and after everything
   int optimizationPasses = 0;
   int64_t flips = 0;            // 2-3 flips and edge removals

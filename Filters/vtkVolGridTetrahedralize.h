@@ -140,8 +140,8 @@ public:
 
   ///@{
   /**
-   * Density: size growth bound between neighbours, h(v) <= h(u) + (Gradation - 1) |uv|; 1 = off.
-   * Default 1.5.
+   * Density: size growth between neighbours, h(v) <= h(u) + (Gradation - 1) |uv|; away from the
+   * boundary the size grows at that rate unless something smaller is asked. Smaller = finer. Default 1.5.
    */
   vtkSetClampMacro(Gradation, double, 1.0, 10.0);
   vtkGetMacro(Gradation, double);
@@ -150,7 +150,7 @@ public:
   ///@{
   /**
    * Density: target edge length at the boundary as a multiple of the boundary's own spacing (its mean
-   * edge length per point, paper eq. 3). Default 1.6; 1 = the volume as fine as the surface.
+   * edge length per point, paper eq. 3). Default 1: the volume as fine as the surface at the boundary.
    */
   vtkSetClampMacro(SizeScale, double, 0.05, 100.0);
   vtkGetMacro(SizeScale, double);
@@ -244,7 +244,7 @@ protected:
   double Alpha = 0.75;
   double Beta = 0.4;
   double Gradation = 1.5;
-  double SizeScale = 1.6;
+  double SizeScale = 1.0;
   double MaxEdgeLength = 0;
   double MaxVolume = 0;
   bool ClusterSourcePoints = true;

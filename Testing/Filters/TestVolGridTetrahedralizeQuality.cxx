@@ -195,14 +195,14 @@ TEST(VolGridTetrahedralizeQuality, SourcesClusterAndSize)
     EXPECT_TRUE(found) << "cluster point " << k;
   }
 
-  // Sizing: a cloud asking for 0.8 everywhere -> many more points than the boundary spacing alone.
+  // Sizing: a cloud asking for 0.5 everywhere -> many more points than the boundary spacing alone.
   std::vector<double> cloud, sizes;
   for (int i = -3; i <= 3; ++i)
     for (int j = -3; j <= 3; ++j)
       for (int k = -3; k <= 3; ++k)
       {
         cloud.insert(cloud.end(), { 2.0 * i, 2.0 * j, 2.0 * k });
-        sizes.push_back(0.8);
+        sizes.push_back(0.5);
       }
   vtkNew<vtkPolyData> background = sourcePoints(cloud, sizes);
   vtkNew<vtkVolGridTetrahedralize> sized;
