@@ -263,7 +263,7 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     result.boundaryInputTriangle.push_back(t);
     result.boundaryPatch.push_back(surf.hasPatchIds() ? surf.patchIds[t] : result.triangleShell[t]);
   }
-  st.steinerInterior -= st.improvement.fieldPoints + st.improvement.clusterPoints;
+  st.steinerInterior -= st.improvement.fieldPoints + st.improvement.clusterPoints + st.improvement.splitPoints;
   st.points = static_cast<int64_t>(result.points.size() / 3);
   st.tets = static_cast<int64_t>(result.tets.size() / 4);
   st.enclosedVolume = enclosedVolume(surf.points, surf.triangles, result.triangleShell, shellDepth, options.regionRule);

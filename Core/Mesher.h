@@ -74,7 +74,7 @@ struct MesherStatistics
   double tetVolume = 0;          // sum of the output tets' volumes
   double secondsCheck = 0, secondsDelaunay = 0, secondsRecovery = 0, secondsExterior = 0, secondsSteiner = 0,
          secondsTotal = 0;
-  // Grid control and quality (field and cluster points are not counted in steinerInterior).
+  // Grid control and quality (field, cluster and split points are not counted in steinerInterior).
   ImprovementStatistics improvement;
   double secondsImprovement = 0;
 };
