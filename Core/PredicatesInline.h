@@ -40,11 +40,13 @@ int orient2dExact(const double* a, const double* b, const double* c, int i, int 
 // The same as orient3dExact / insphereExact, reporting which stage decided in *stage (tests, tuning):
 // 1 = long double filter, 2 = exact coordinate differences, 3 = stage B (rounded differences, exactly),
 // 4 = stage C (first-order tail correction), 5 = full evaluation over the raw coordinates, 6 = big
-// integers (extreme exponents). extended = false skips stage 1 (to exercise the others).
+// integers (extreme exponents), 7 = fixed-point integers (narrow exponent range, PredicatesFixed.h).
+// extended = false skips stage 1, fixedPoint = false skips stage 7 (to exercise the others). The
+// production path (orient3dExact / insphereExact) tries stage 7 first, then 1, then 2..6.
 int orient3dExactStaged(const double* a, const double* b, const double* c, const double* d, bool extended,
-  int* stage);
+  int* stage, bool fixedPoint = false);
 int insphereExactStaged(const double* a, const double* b, const double* c, const double* d, const double* e,
-  bool extended, int* stage);
+  bool extended, int* stage, bool fixedPoint = false);
 // insphereSoS when insphere(a,b,c,d,e) == 0: the first nonzero cofactor in decreasing id order.
 int insphereSoSTie(const double* a, const double* b, const double* c, const double* d, const double* e,
   int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide);

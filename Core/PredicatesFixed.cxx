@@ -1,0 +1,359 @@
+// Exact orient3d / insphere on fixed-point integers (see PredicatesFixed.h).
+//
+// Conversion. A nonzero finite normal double x = +-m 2^(E - 52), m a 53-bit integer, E = floor(log2|x|):
+// its least significant set bit is 2^(E - 52 + ctz(m)). Over the coordinates of one call let
+// top = max E and low = min (E - 52 + ctz m). Then X = x / 2^low is an integer, obtained from m by a
+// shift of (E - 52 - low) bits (left, or right by at most ctz m: no bit is lost), and |X| < 2^(top+1-low).
+// The fast path requires top + 1 - low <= 61, i.e. |X| < 2^61 for every coordinate (zeros are X = 0).
+// Subnormal inputs are left to the expansion path.
+//
+// Bit bounds (B = 2^61 bounds every |X|; all bounds strict):
+//   differences      |X_p - X_q|                 < 2^62                 int64
+//   2x2 minors       |x_i y_j - x_j y_i|         < 2 * 2^124 = 2^125    int128 (each product < 2^124)
+//   squared norms    w = x^2 + y^2 + z^2         < 3 * 2^124 < 2^126    int128
+//   3x3 determinants sum of 3 |z| |minor|        < 3 * 2^187 < 2^189    3 limbs (signed range 2^191)
+//   insphere D       sum of 4 w |det3|           < 4 * 2^315 = 2^317    5 limbs (signed range 2^319)
+//   orient3d         a 3x3 determinant           < 2^189                3 limbs
+// Every partial sum is bounded by the same sums of absolute values, so nothing overflows. The wide
+// values are two's complement little-endian 64-bit limbs; products multiply magnitudes (schoolbook,
+// 64x64 -> 128-bit partial products) and negate, so a truncated product is exact whenever the true
+// product fits, which the bounds guarantee.
+#include "PredicatesFixed.h"
+
+#include <cstdint>
+#include <cstring>
+
+
+namespace volgrid
+{
+namespace predicates
+{
+namespace fixedpoint
+{
+#if defined(__SIZEOF_INT128__)
+namespace
+{
+using i128 = __int128;
+using u128 = unsigned __int128;
+
+constexpr int kMaxBits = 61; // |X| < 2^kMaxBits
+
+// Two's complement integer of N 64-bit limbs, least significant first.
+template <int N>
+struct Wide
+{
+  uint64_t v[N];
+};
+
+template <int N>
+inline Wide<N> fromI128(i128 x)
+{
+  Wide<N> r;
+  const u128 u = static_cast<u128>(x);
+  r.v[0] = static_cast<uint64_t>(u);
+  if (N > 1)
+  {
+    r.v[1] = static_cast<uint64_t>(u >> 64);
+  }
+  const uint64_t ext = x < 0 ? ~uint64_t(0) : 0;
+  for (int i = 2; i < N; ++i)
+  {
+    r.v[i] = ext;
+  }
+  return r;
+}
+
+template <int N>
+inline bool isNegative(const Wide<N>& a)
+{
+  return (a.v[N - 1] >> 63) != 0;
+}
+
+template <int N>
+inline void negateInPlace(Wide<N>& a)
+{
+  uint64_t carry = 1;
+  for (int i = 0; i < N; ++i)
+  {
+    const uint64_t x = ~a.v[i] + carry;
+    carry = (carry && x == 0) ? 1 : 0;
+    a.v[i] = x;
+  }
+}
+
+// a += s * b, s = +1 or -1.
+template <int N>
+inline void accumulate(Wide<N>& a, const Wide<N>& b, bool subtract)
+{
+  if (!subtract)
+  {
+    uint64_t carry = 0;
+    for (int i = 0; i < N; ++i)
+    {
+      const u128 t = u128(a.v[i]) + b.v[i] + carry;
+      a.v[i] = static_cast<uint64_t>(t);
+      carry = static_cast<uint64_t>(t >> 64);
+    }
+  }
+  else
+  {
+    uint64_t borrow = 0;
+    for (int i = 0; i < N; ++i)
+    {
+      const u128 t = u128(a.v[i]) - b.v[i] - borrow;
+      a.v[i] = static_cast<uint64_t>(t);
+      borrow = static_cast<uint64_t>(t >> 64) ? 1 : 0;
+    }
+  }
+}
+
+template <int N>
+inline int signOf(const Wide<N>& a)
+{
+  if (isNegative(a))
+  {
+    return -1;
+  }
+  for (int i = 0; i < N; ++i)
+  {
+    if (a.v[i] != 0)
+    {
+      return 1;
+    }
+  }
+  return 0;
+}
+
+// r = a * b (a magnitude of A limbs, b of B limbs), truncated to R limbs; r must not alias.
+template <int R, int A, int B>
+inline void multiplyMagnitudes(const uint64_t* a, const uint64_t* b, uint64_t* r)
+{
+  for (int i = 0; i < R; ++i)
+  {
+    r[i] = 0;
+  }
+  for (int i = 0; i < A && i < R; ++i)
+  {
+    uint64_t carry = 0;
+    for (int j = 0; j < B && i + j < R; ++j)
+    {
+      const u128 t = u128(a[i]) * b[j] + r[i + j] + carry;
+      r[i + j] = static_cast<uint64_t>(t);
+      carry = static_cast<uint64_t>(t >> 64);
+    }
+    if (i + B < R)
+    {
+      r[i + B] = carry;
+    }
+  }
+}
+
+// Signed int64 times a signed 128-bit value, as 3 limbs (|result| < 2^191 always).
+inline Wide<3> mul64x128(int64_t x, i128 m)
+{
+  const bool neg = (x < 0) != (m < 0);
+  const uint64_t ax = x < 0 ? uint64_t(0) - static_cast<uint64_t>(x) : static_cast<uint64_t>(x);
+  const u128 am = m < 0 ? u128(0) - static_cast<u128>(m) : static_cast<u128>(m);
+  const uint64_t bm[2] = { static_cast<uint64_t>(am), static_cast<uint64_t>(am >> 64) };
+  Wide<3> r;
+  multiplyMagnitudes<3, 1, 2>(&ax, bm, r.v);
+  if (neg)
+  {
+    negateInPlace(r);
+  }
+  return r;
+}
+
+// Nonnegative 128-bit w times a signed 3-limb value, as 5 limbs (the caller's bounds: |result| < 2^319).
+inline Wide<5> mul128x192(u128 w, Wide<3> m)
+{
+  const bool neg = isNegative(m);
+  if (neg)
+  {
+    negateInPlace(m); // |m| < 2^191: the magnitude fits
+  }
+  const uint64_t bw[2] = { static_cast<uint64_t>(w), static_cast<uint64_t>(w >> 64) };
+  Wide<5> r;
+  multiplyMagnitudes<5, 2, 3>(bw, m.v, r.v);
+  if (neg)
+  {
+    negateInPlace(r);
+  }
+  return r;
+}
+
+inline int countTrailingZeros(uint64_t m)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(m);
+#else
+  int n = 0;
+  while ((m & 1u) == 0)
+  {
+    m >>= 1;
+    ++n;
+  }
+  return n;
+#endif
+}
+
+// Coordinates of n points as integers X = x / 2^low (common low); false when they do not fit.
+inline bool toIntegers(const double* const* pts, int n, int64_t (*out)[3])
+{
+  uint64_t mant[5][3];
+  int expo[5][3]; // exponent of the least significant bit of the 53-bit significand (E - 52)
+  int top = INT32_MIN, low = INT32_MAX;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      uint64_t bits;
+      std::memcpy(&bits, &pts[i][k], sizeof bits);
+      const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+      const uint64_t frac = bits & ((uint64_t(1) << 52) - 1);
+      if (biased == 0)
+      {
+        if (frac != 0)
+        {
+          return false; // subnormal
+        }
+        mant[i][k] = 0;
+        expo[i][k] = 0;
+        continue;
+      }
+      if (biased == 0x7ff)
+      {
+        return false; // inf / NaN: not ours to judge
+      }
+      const uint64_t m = frac | (uint64_t(1) << 52);
+      const int e = biased - 1075;
+      mant[i][k] = m;
+      expo[i][k] = e;
+      top = e + 52 > top ? e + 52 : top;
+      const int l = e + countTrailingZeros(m);
+      low = l < low ? l : low;
+    }
+  }
+  if (top == INT32_MIN)
+  { // all zero
+    low = 0;
+    top = -1;
+  }
+  if (top + 1 - low > kMaxBits)
+  {
+    return false;
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const uint64_t m = mant[i][k];
+      int64_t x = 0;
+      if (m != 0)
+      {
+        const int s = expo[i][k] - low; // in [-ctz(m), kMaxBits - 53]
+        const uint64_t mag = s >= 0 ? (m << s) : (m >> -s);
+        x = static_cast<int64_t>(mag);
+        if (pts[i][k] < 0)
+        {
+          x = -x;
+        }
+      }
+      out[i][k] = x;
+    }
+  }
+  return true;
+}
+
+inline i128 minor2(int64_t a0, int64_t a1, int64_t b0, int64_t b1)
+{
+  return i128(a0) * b1 - i128(b0) * a1;
+}
+
+// det of rows p, q, r (x, y, z), expanded along z with the xy minors given.
+inline Wide<3> det3(int64_t pz, int64_t qz, int64_t rz, i128 mqr, i128 mpr, i128 mpq)
+{
+  Wide<3> s = mul64x128(pz, mqr);
+  accumulate(s, mul64x128(qz, mpr), true);
+  accumulate(s, mul64x128(rz, mpq), false);
+  return s;
+}
+} // namespace
+
+bool orient3d(const double* a, const double* b, const double* c, const double* d, int* sign)
+{
+  const double* in[4] = { a, b, c, d };
+  int64_t p[4][3];
+  if (!toIntegers(in, 4, p))
+  {
+    return false;
+  }
+  int64_t u[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      u[r][k] = p[r + 1][k] - p[0][k];
+    }
+  }
+  const i128 m01 = minor2(u[0][0], u[0][1], u[1][0], u[1][1]);
+  const i128 m02 = minor2(u[0][0], u[0][1], u[2][0], u[2][1]);
+  const i128 m12 = minor2(u[1][0], u[1][1], u[2][0], u[2][1]);
+  *sign = signOf(det3(u[0][2], u[1][2], u[2][2], m12, m02, m01));
+  return true;
+}
+
+bool insphere(const double* a, const double* b, const double* c, const double* d, const double* e, int* sign)
+{
+  const double* in[5] = { a, b, c, d, e };
+  int64_t p[5][3];
+  if (!toIntegers(in, 5, p))
+  {
+    return false;
+  }
+  int64_t q[4][3];
+  u128 w[4];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      q[r][k] = p[r][k] - p[4][k];
+    }
+    w[r] = static_cast<u128>((i128(q[r][0]) * q[r][0] + i128(q[r][1]) * q[r][1]) + i128(q[r][2]) * q[r][2]);
+  }
+  i128 m[4][4];
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = i + 1; j < 4; ++j)
+    {
+      m[i][j] = minor2(q[i][0], q[i][1], q[j][0], q[j][1]);
+    }
+  }
+  // M_i = det3 of the other three rows in increasing order; D = -w0 M0 + w1 M1 - w2 M2 + w3 M3.
+  const Wide<3> M0 = det3(q[1][2], q[2][2], q[3][2], m[2][3], m[1][3], m[1][2]);
+  const Wide<3> M1 = det3(q[0][2], q[2][2], q[3][2], m[2][3], m[0][3], m[0][2]);
+  const Wide<3> M2 = det3(q[0][2], q[1][2], q[3][2], m[1][3], m[0][3], m[0][1]);
+  const Wide<3> M3 = det3(q[0][2], q[1][2], q[2][2], m[1][2], m[0][2], m[0][1]);
+  Wide<5> D = mul128x192(w[1], M1);
+  accumulate(D, mul128x192(w[0], M0), true);
+  accumulate(D, mul128x192(w[3], M3), false);
+  accumulate(D, mul128x192(w[2], M2), true);
+  *sign = -signOf(D);
+  return true;
+}
+
+#else
+// Without a 128-bit integer type the expansion path decides everything.
+bool orient3d(const double*, const double*, const double*, const double*, int*)
+{
+  return false;
+}
+
+bool insphere(const double*, const double*, const double*, const double*, const double*, int*)
+{
+  return false;
+}
+#endif
+} // namespace fixedpoint
+} // namespace predicates
+} // namespace volgrid
