@@ -505,6 +505,106 @@ private:
 
 } // namespace
 
+bool fillCavityDelaunay(const TetMesh& m, const std::vector<std::array<int32_t, 3>>& faces,
+  std::vector<std::array<int32_t, 4>>& tets, std::vector<std::array<int32_t, 3>>* missing)
+{
+  tets.clear();
+  if (missing)
+    missing->clear();
+  if (faces.size() < 4)
+    return false;
+  std::vector<int32_t> verts;
+  std::unordered_map<TriKey, OKey, TriKeyHash> fm;
+  for (auto& f : faces)
+  {
+    verts.insert(verts.end(), f.begin(), f.end());
+    if (!fm.emplace(TriKey(f[0], f[1], f[2]), orientedKey(f.data())).second)
+      return false;
+  }
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  if (verts.size() < 4)
+    return false;
+  std::vector<double> xyz(3 * verts.size());
+  for (size_t i = 0; i < verts.size(); ++i)
+    std::copy(m.point(verts[i]), m.point(verts[i]) + 3, xyz.begin() + 3 * i);
+  DelaunayOptions opt;
+  opt.spatialSort = false;
+  opt.keepGhosts = false;
+  TetMesh lm;
+  std::vector<int32_t> map;
+  if (!buildDelaunay(xyz.data(), verts.size(), opt, lm, map).ok())
+    return false;
+  for (size_t i = 0; i < map.size(); ++i)
+    if (map[i] != static_cast<int32_t>(i))
+      return false;
+  auto global = [&](int32_t l) { return verts[static_cast<size_t>(l)]; };
+  std::unordered_map<OKey, int32_t, OKeyHash> dtFaces;
+  int32_t f[3];
+  for (int32_t t = 0; t < lm.tetCapacity(); ++t)
+  {
+    if (lm.isFree(t))
+      continue;
+    for (int i = 0; i < 4; ++i)
+    {
+      lm.faceVertices(t, i, f);
+      for (int32_t& x : f)
+        x = global(x);
+      dtFaces.emplace(orientedKey(f), t);
+    }
+  }
+  std::vector<int32_t> queue;
+  std::vector<char> inFill(static_cast<size_t>(lm.tetCapacity()), 0);
+  for (auto& [k, ok] : fm)
+  {
+    auto it = dtFaces.find(ok);
+    if (it == dtFaces.end())
+    {
+      if (missing)
+        missing->push_back({ { ok.v[0], ok.v[1], ok.v[2] } });
+      continue;
+    }
+    if (!inFill[it->second])
+    {
+      inFill[it->second] = 1;
+      queue.push_back(it->second);
+    }
+  }
+  if (missing && !missing->empty())
+    return false;
+  for (size_t q = 0; q < queue.size(); ++q)
+  {
+    const int32_t t = queue[q];
+    for (int i = 0; i < 4; ++i)
+    {
+      lm.faceVertices(t, i, f);
+      for (int32_t& x : f)
+        x = global(x);
+      auto bt = fm.find(TriKey(f[0], f[1], f[2]));
+      if (bt != fm.end())
+      {
+        if (!(bt->second == orientedKey(f)))
+          return false;
+        continue;
+      }
+      const int32_t n = lm.neighbor(t, i);
+      if (n < 0)
+        return false;
+      if (!inFill[n])
+      {
+        inFill[n] = 1;
+        queue.push_back(n);
+      }
+    }
+  }
+  for (int32_t t : queue)
+  {
+    const int32_t* v = lm.vertices(t);
+    tets.push_back({ { global(v[0]), global(v[1]), global(v[2]), global(v[3]) } });
+  }
+  return true;
+}
+
 bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
   FacetCavityStats* stats)
 {

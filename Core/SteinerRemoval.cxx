@@ -1,5 +1,7 @@
 #include "SteinerRemoval.h"
 
+#include "FacetRecovery.h"
+
 #include "Predicates.h"
 
 #include <algorithm>
@@ -277,6 +279,7 @@ public:
     std::vector<int> newTetSide;
     std::vector<std::array<double, 3>> sidePoint(static_cast<size_t>(nsides));
     std::vector<int32_t> sideRegion(static_cast<size_t>(nsides), -1);
+    std::vector<char> sideFilled(static_cast<size_t>(nsides), 0);
     size_t maxPoly = 3;
     for (auto& pl : polys)
       maxPoly = std::max(maxPoly, pl.v.size());
@@ -312,6 +315,7 @@ public:
         continue;
       cav = S;
       cavSide = side;
+      sideFilled.assign(static_cast<size_t>(nsides), 0);
       for (int sd = 0; sd < nsides && good; ++sd)
       {
         std::vector<std::array<int32_t, 3>> faces;
@@ -320,17 +324,47 @@ public:
             sideRegion[sd] = (*region_)[S[k]];
         // The cavity of this side: p's star on this side, enlarged by layers of outer tets when no point
         // sees all of its faces (a reflex or flat neighbourhood of p).
-        bool found = false;
+        bool found = false, facesValid = false;
         for (int layer = 0; layer <= kMaxLayers && !found; ++layer)
         {
+          facesValid = false;
           if (layer > 0 && !enlarge(p, sd, newTris))
             break;
           if (!cavityFaces(p, sd, newTris, newTriParent, sideOfParent[sd], faces))
             break;
+          facesValid = true;
           found = findPoint(p, faces, sidePoint[sd].data());
         }
         if (!found)
         {
+          // No point sees the whole cavity: tetrahedralize it without a point (Delaunay fill).
+          std::vector<std::array<int32_t, 4>> fill;
+          std::vector<std::array<int32_t, 3>> missing;
+          bool filled = false;
+          for (int grow = 0; grow <= kMaxFillGrowth && facesValid && !filled; ++grow)
+          {
+            if (fillCavityDelaunay(m_, faces, fill, &missing))
+            {
+              filled = true;
+              break;
+            }
+            // Grow the cavity across the faces the Delaunay tetrahedralization lacks (TetGen's approach).
+            bool grew = false;
+            for (auto& mf : missing)
+              grew = growAcross(p, sd, mf) || grew;
+            if (!grew || !cavityFaces(p, sd, newTris, newTriParent, sideOfParent[sd], faces))
+              break;
+          }
+          if (filled)
+          {
+            sideFilled[static_cast<size_t>(sd)] = 1;
+            for (auto& t : fill)
+            {
+              newTets.push_back(t);
+              newTetSide.push_back(sd);
+            }
+            continue;
+          }
           good = false;
           break;
         }
@@ -347,13 +381,19 @@ public:
     // The relocated points are new vertices (p's id cannot be reused: faces through the old and the new
     // position would have the same ids).
     const int32_t firstNew = m_.numVertices();
+    std::vector<int32_t> sideVertex(static_cast<size_t>(nsides), -1);
+    int coneSides = 0;
     for (int sd = 0; sd < nsides; ++sd)
     {
-      m_.addPoint(sidePoint[sd].data());
+      if (sideFilled[static_cast<size_t>(sd)])
+        continue;
+      sideVertex[static_cast<size_t>(sd)] = m_.addPoint(sidePoint[sd].data());
       kinds_.push_back(VertexKind::SteinerInterior);
+      ++coneSides;
     }
     for (auto& t : newTets)
-      t[3] = firstNew + (-2 - t[3]);
+      if (t[3] <= -2)
+        t[3] = sideVertex[static_cast<size_t>(-2 - t[3])];
     std::vector<int32_t> created;
     if (!ed_.replace(cav, newTets, &created, true))
     {
@@ -361,7 +401,7 @@ public:
       kinds_.resize(static_cast<size_t>(firstNew));
       return false;
     }
-    addedInterior += nsides - 1;
+    addedInterior += std::max(0, coneSides - 1);
     kinds_[p] = VertexKind::Unused;
     if (region_)
     {
@@ -382,6 +422,33 @@ public:
 
 private:
   static constexpr int kMaxLayers = 3;
+  static constexpr int kMaxFillGrowth = 16;
+
+  // Add to side sd's cavity the tet beyond its face f (oriented with the cavity on its positive side):
+  // never across a constraint, never a tet of the cavity, never swallowing a vertex.
+  bool growAcross(int32_t p, int sd, const std::array<int32_t, 3>& f)
+  {
+    if (bc_.findSubface(f[0], f[1], f[2]) >= 0)
+      return false;
+    int face = -1;
+    int32_t x = ed_.findFace(f[0], f[1], f[2], &face);
+    if (x < 0)
+      return false;
+    auto inCav = [&](int32_t t) { return std::find(cav.begin(), cav.end(), t) != cav.end(); };
+    if (inCav(x))
+      x = m_.neighbor(x, face);
+    if (x < 0 || inCav(x))
+      return false;
+    cav.push_back(x);
+    cavSide.push_back(sd);
+    if (!vertexOnBoundary(p, sd))
+    {
+      cav.pop_back();
+      cavSide.pop_back();
+      return false;
+    }
+    return true;
+  }
   std::vector<int32_t> cav;  // cavity tets: p's star, then enlargement layers
   std::vector<int32_t> cavSide;
 

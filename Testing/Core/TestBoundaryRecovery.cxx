@@ -1,11 +1,15 @@
 // Boundary recovery on its own: flips (2-3, 3-2, edge removal), Steiner fallback, constraints kept.
 #include "BoundaryRecovery.h"
 #include "Delaunay.h"
+#include "FacetRecovery.h"
 #include "MeshChecker.h"
 #include "MesherTestShapes.h"
 #include "Predicates.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
 
 using namespace volgrid;
 
@@ -142,4 +146,88 @@ TEST(BoundaryRecovery, SkinnyStripsRecovered)
   EXPECT_GT(rep.missingEdgesInitially, 0);
   EXPECT_TRUE(allPresent(ed, su.bc));
   EXPECT_TRUE(checkMesh(su.mesh, structural()).valid);
+}
+
+// The Delaunay cavity fill used when no single point sees a cavity: a closed cube (8 cospherical
+// corners, so Simulation of Simplicity picks the diagonals) given by the 12 triangles of the
+// tetrahedralization's own hull, and a face set the Delaunay tetrahedralization cannot contain.
+TEST(BoundaryRecovery, DelaunayCavityFill)
+{
+  TetMesh m;
+  for (int c = 0; c < 8; ++c)
+  {
+    const double p[3] = { double(c & 1), double((c >> 1) & 1), double((c >> 2) & 1) };
+    m.addPoint(p);
+  }
+  // Hull triangles of the cube as the Delaunay tetrahedralization splits them.
+  TetMesh dt;
+  std::vector<int32_t> map;
+  DelaunayOptions o;
+  o.keepGhosts = false;
+  ASSERT_TRUE(buildDelaunay(m.points.data(), 8, o, dt, map).ok());
+  std::vector<std::array<int32_t, 3>> faces;
+  int32_t f[3];
+  for (int32_t t = 0; t < dt.tetCapacity(); ++t)
+    if (!dt.isFree(t))
+      for (int i = 0; i < 4; ++i)
+        if (dt.neighbor(t, i) < 0)
+        {
+          dt.faceVertices(t, i, f);
+          faces.push_back({ { f[0], f[1], f[2] } });
+        }
+  ASSERT_EQ(faces.size(), 12u);
+  std::vector<std::array<int32_t, 4>> tets;
+  std::vector<std::array<int32_t, 3>> missing;
+  ASSERT_TRUE(fillCavityDelaunay(m, faces, tets, &missing));
+  EXPECT_TRUE(missing.empty());
+  double vol = 0;
+  for (auto& t : tets)
+  {
+    const double *a = m.point(t[0]), *b = m.point(t[1]), *c = m.point(t[2]), *d = m.point(t[3]);
+    EXPECT_GT(predicates::orient3d(a, b, c, d), 0);
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] },
+                 w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+    vol += (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+  }
+  EXPECT_NEAR(vol, 1.0, 1e-12);
+  // Flip the diagonal of one square: that cavity boundary is not in the Delaunay tetrahedralization.
+  std::vector<std::array<int32_t, 3>> other;
+  std::array<int32_t, 3> first{}, second{};
+  int found = 0;
+  for (auto& a : faces)
+    for (auto& b : faces)
+    {
+      if (&a >= &b || found)
+        continue;
+      int shared = 0;
+      for (int x : a)
+        for (int y : b)
+          shared += x == y;
+      const bool coplanar = predicates::orient3d(m.point(a[0]), m.point(a[1]), m.point(a[2]), m.point(b[0])) == 0 &&
+        predicates::orient3d(m.point(a[0]), m.point(a[1]), m.point(a[2]), m.point(b[1])) == 0 &&
+        predicates::orient3d(m.point(a[0]), m.point(a[1]), m.point(a[2]), m.point(b[2])) == 0;
+      if (shared == 2 && coplanar)
+      {
+        first = a;
+        second = b;
+        found = 1;
+      }
+    }
+  ASSERT_TRUE(found);
+  // The square's corners in cyclic order, then the other diagonal.
+  int32_t apexB = -1;
+  for (int y : second)
+    if (y != first[0] && y != first[1] && y != first[2])
+      apexB = y;
+  int r = 0;
+  while (std::find(second.begin(), second.end(), first[r]) != second.end())
+    ++r; // first[r] is first's apex (not on the shared diagonal)
+  const int32_t q0 = first[r], q1 = first[(r + 1) % 3], q3 = first[(r + 2) % 3];
+  for (auto& a : faces)
+    if (a != first && a != second)
+      other.push_back(a);
+  other.push_back({ { q0, q1, apexB } });
+  other.push_back({ { q0, apexB, q3 } });
+  EXPECT_FALSE(fillCavityDelaunay(m, other, tets, &missing));
+  EXPECT_EQ(missing.size(), 2u);
 }

@@ -17,6 +17,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <thread>
 #include <fstream>
@@ -145,8 +146,12 @@ TEST(MesherCorpus, CleanClosedModels)
   };
   std::vector<Case> cases;
   std::vector<std::string> lines;
+  // VOLGRID_CORPUS_ONLY=substring runs the matching files only (diagnosis; no baseline check then).
+  const char* only = std::getenv("VOLGRID_CORPUS_ONLY");
   for (const std::string& f : files)
   {
+    if (only && f.find(only) == std::string::npos)
+      continue;
     const std::string path = dataDir() + "/" + f;
     SurfaceMesh s;
     if (endsWith(f, ".ply"))
@@ -225,5 +230,6 @@ TEST(MesherCorpus, CleanClosedModels)
   std::printf("\n");
   EXPECT_EQ(meshed, checked);
   // Baseline of this implementation (see the commit message); raise it as recovery improves.
-  EXPECT_GE(checked, kBaselineChecked);
+  if (!only)
+    EXPECT_GE(checked, kBaselineChecked);
 }
