@@ -1205,6 +1205,30 @@ int insphereSoSTie(const double* a, const double* b, const double* c, const doub
     }
     order[j + 1] = v;
   }
+  // The cofactors of exactly cospherical points are often 0 as well (coplanar faces of grid boxes):
+  // with the five points as fixed-point integers each one is a few exact integer products.
+  int64_t fixedPts[5][3];
+  if (fixedpoint::toFixed(pts, 5, fixedPts))
+  {
+    for (int r = 0; r < 5; ++r)
+    {
+      const int i = order[r];
+      const int64_t* q[4];
+      for (int j = 0, k = 0; j < 5; ++j)
+      {
+        if (j != i)
+        {
+          q[k++] = fixedPts[j];
+        }
+      }
+      const int o = fixedpoint::orient3dFixed(q[0], q[1], q[2], q[3]);
+      if (o != 0)
+      {
+        return (i & 1) ? o : -o; // -cofactor
+      }
+    }
+    return 0;
+  }
   for (int r = 0; r < 5; ++r)
   {
     const int i = order[r];

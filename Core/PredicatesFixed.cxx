@@ -5,7 +5,7 @@
 // top = max E and low = min (E - 52 + ctz m). Then X = x / 2^low is an integer, obtained from m by a
 // shift of (E - 52 - low) bits (left, or right by at most ctz m: no bit is lost), and |X| < 2^(top+1-low).
 // The fast path requires top + 1 - low <= 61, i.e. |X| < 2^61 for every coordinate (zeros are X = 0).
-// Subnormal inputs are left to the expansion path.
+// (toIntegers tests this condition by scaling with 2^(60 - top) and checking integrality, see there.)
 //
 // Bit bounds (B = 2^61 bounds every |X|; all bounds strict):
 //   differences      |X_p - X_q|                 < 2^62                 int64
@@ -20,6 +20,7 @@
 // product fits, which the bounds guarantee.
 #include "PredicatesFixed.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -69,14 +70,16 @@ inline bool isNegative(const Wide<N>& a)
   return (a.v[N - 1] >> 63) != 0;
 }
 
+// a = -a when mask is all ones, unchanged when mask is 0; branch-free (the signs of minors are
+// unpredictable, a mispredicted branch per product would cost more than the product).
 template <int N>
-inline void negateInPlace(Wide<N>& a)
+inline void negateIf(Wide<N>& a, uint64_t mask)
 {
-  uint64_t carry = 1;
+  uint64_t carry = mask & 1;
   for (int i = 0; i < N; ++i)
   {
-    const uint64_t x = ~a.v[i] + carry;
-    carry = (carry && x == 0) ? 1 : 0;
+    const uint64_t x = (a.v[i] ^ mask) + carry;
+    carry = x < carry ? 1 : 0;
     a.v[i] = x;
   }
 }
@@ -151,118 +154,82 @@ inline void multiplyMagnitudes(const uint64_t* a, const uint64_t* b, uint64_t* r
 // Signed int64 times a signed 128-bit value, as 3 limbs (|result| < 2^191 always).
 inline Wide<3> mul64x128(int64_t x, i128 m)
 {
-  const bool neg = (x < 0) != (m < 0);
-  const uint64_t ax = x < 0 ? uint64_t(0) - static_cast<uint64_t>(x) : static_cast<uint64_t>(x);
-  const u128 am = m < 0 ? u128(0) - static_cast<u128>(m) : static_cast<u128>(m);
+  const uint64_t sx = static_cast<uint64_t>(x >> 63); // all ones when negative
+  const u128 smWide = static_cast<u128>(m >> 127);
+  const uint64_t ax = (static_cast<uint64_t>(x) ^ sx) - sx;
+  const u128 am = (static_cast<u128>(m) ^ smWide) - smWide;
   const uint64_t bm[2] = { static_cast<uint64_t>(am), static_cast<uint64_t>(am >> 64) };
   Wide<3> r;
   multiplyMagnitudes<3, 1, 2>(&ax, bm, r.v);
-  if (neg)
-  {
-    negateInPlace(r);
-  }
+  negateIf(r, sx ^ static_cast<uint64_t>(smWide));
   return r;
 }
 
 // Nonnegative 128-bit w times a signed 3-limb value, as 5 limbs (the caller's bounds: |result| < 2^319).
 inline Wide<5> mul128x192(u128 w, Wide<3> m)
 {
-  const bool neg = isNegative(m);
-  if (neg)
-  {
-    negateInPlace(m); // |m| < 2^191: the magnitude fits
-  }
+  const uint64_t sm = static_cast<uint64_t>(static_cast<int64_t>(m.v[2]) >> 63);
+  negateIf(m, sm); // |m| < 2^191: the magnitude fits
   const uint64_t bw[2] = { static_cast<uint64_t>(w), static_cast<uint64_t>(w >> 64) };
   Wide<5> r;
   multiplyMagnitudes<5, 2, 3>(bw, m.v, r.v);
-  if (neg)
-  {
-    negateInPlace(r);
-  }
+  negateIf(r, sm);
   return r;
 }
 
-inline int countTrailingZeros(uint64_t m)
-{
-#if defined(__GNUC__) || defined(__clang__)
-  return __builtin_ctzll(m);
-#else
-  int n = 0;
-  while ((m & 1u) == 0)
-  {
-    m >>= 1;
-    ++n;
-  }
-  return n;
-#endif
-}
-
 // Coordinates of n points as integers X = x / 2^low (common low); false when they do not fit.
+// Implementation: with T = floor(log2 max |x|), every X = x 2^(60 - T) has |X| < 2^61, and the call fits
+// iff all these are integers (low >= T - 60, i.e. top + 1 - low <= 61 with top = T). Scaling by a power
+// of two is exact unless the result underflows; an underflowed nonzero product is either a nonzero
+// number below 1 or 0 from a nonzero x, and both are rejected, so accepted values are exact. (The
+// integers are those of the common exponent T - 60 rather than low: the same up to a positive power of
+// two, which changes no sign.) NaN and infinite inputs fail the magnitude test.
 inline bool toIntegers(const double* const* pts, int n, int64_t (*out)[3])
 {
-  uint64_t mant[5][3];
-  int expo[5][3]; // exponent of the least significant bit of the 53-bit significand (E - 52)
-  int top = INT32_MIN, low = INT32_MAX;
+  double m = 0.0;
   for (int i = 0; i < n; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
-      uint64_t bits;
-      std::memcpy(&bits, &pts[i][k], sizeof bits);
-      const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-      const uint64_t frac = bits & ((uint64_t(1) << 52) - 1);
-      if (biased == 0)
-      {
-        if (frac != 0)
-        {
-          return false; // subnormal
-        }
-        mant[i][k] = 0;
-        expo[i][k] = 0;
-        continue;
-      }
-      if (biased == 0x7ff)
-      {
-        return false; // inf / NaN: not ours to judge
-      }
-      const uint64_t m = frac | (uint64_t(1) << 52);
-      const int e = biased - 1075;
-      mant[i][k] = m;
-      expo[i][k] = e;
-      top = e + 52 > top ? e + 52 : top;
-      const int l = e + countTrailingZeros(m);
-      low = l < low ? l : low;
+      const double a = std::fabs(pts[i][k]);
+      m = a > m ? a : m;
     }
   }
-  if (top == INT32_MIN)
-  { // all zero
-    low = 0;
-    top = -1;
-  }
-  if (top + 1 - low > kMaxBits)
+  if (m == 0.0)
   {
-    return false;
+    for (int i = 0; i < n; ++i)
+    {
+      out[i][0] = out[i][1] = out[i][2] = 0;
+    }
+    return true;
   }
+  uint64_t bits;
+  std::memcpy(&bits, &m, sizeof bits);
+  const int T = static_cast<int>(bits >> 52) - 1023; // m is positive; subnormal m gives -1023
+  if (T < -960 || T > 960)
+  {
+    return false; // extreme magnitudes: left to the expansion path (keeps the scale factor normal)
+  }
+  const uint64_t scaleBits = static_cast<uint64_t>(1023 + kMaxBits - 1 - T) << 52;
+  double scale;
+  std::memcpy(&scale, &scaleBits, sizeof scale);
+  bool ok = true;
   for (int i = 0; i < n; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const uint64_t m = mant[i][k];
-      int64_t x = 0;
-      if (m != 0)
+      const double x = pts[i][k];
+      const double X = x * scale;
+      if (!(std::fabs(X) < 0x1p61))
       {
-        const int s = expo[i][k] - low; // in [-ctz(m), kMaxBits - 53]
-        const uint64_t mag = s >= 0 ? (m << s) : (m >> -s);
-        x = static_cast<int64_t>(mag);
-        if (pts[i][k] < 0)
-        {
-          x = -x;
-        }
+        return false;
       }
-      out[i][k] = x;
+      const int64_t xi = static_cast<int64_t>(X);
+      ok = ok & (static_cast<double>(xi) == X) & ((xi != 0) | (x == 0.0));
+      out[i][k] = xi;
     }
   }
-  return true;
+  return ok;
 }
 
 inline i128 minor2(int64_t a0, int64_t a1, int64_t b0, int64_t b1)
@@ -280,6 +247,28 @@ inline Wide<3> det3(int64_t pz, int64_t qz, int64_t rz, i128 mqr, i128 mpr, i128
 }
 } // namespace
 
+bool toFixed(const double* const* pts, int n, int64_t (*out)[3])
+{
+  return n <= 5 && toIntegers(pts, n, out);
+}
+
+int orient3dFixed(const int64_t* a, const int64_t* b, const int64_t* c, const int64_t* d)
+{
+  const int64_t* q[3] = { b, c, d };
+  int64_t u[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      u[r][k] = q[r][k] - a[k];
+    }
+  }
+  const i128 m01 = minor2(u[0][0], u[0][1], u[1][0], u[1][1]);
+  const i128 m02 = minor2(u[0][0], u[0][1], u[2][0], u[2][1]);
+  const i128 m12 = minor2(u[1][0], u[1][1], u[2][0], u[2][1]);
+  return signOf(det3(u[0][2], u[1][2], u[2][2], m12, m02, m01));
+}
+
 bool orient3d(const double* a, const double* b, const double* c, const double* d, int* sign)
 {
   const double* in[4] = { a, b, c, d };
@@ -288,18 +277,7 @@ bool orient3d(const double* a, const double* b, const double* c, const double* d
   {
     return false;
   }
-  int64_t u[3][3];
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      u[r][k] = p[r + 1][k] - p[0][k];
-    }
-  }
-  const i128 m01 = minor2(u[0][0], u[0][1], u[1][0], u[1][1]);
-  const i128 m02 = minor2(u[0][0], u[0][1], u[2][0], u[2][1]);
-  const i128 m12 = minor2(u[1][0], u[1][1], u[2][0], u[2][1]);
-  *sign = signOf(det3(u[0][2], u[1][2], u[2][2], m12, m02, m01));
+  *sign = orient3dFixed(p[0], p[1], p[2], p[3]);
   return true;
 }
 
@@ -344,6 +322,16 @@ bool insphere(const double* a, const double* b, const double* c, const double* d
 
 #else
 // Without a 128-bit integer type the expansion path decides everything.
+bool toFixed(const double* const*, int, int64_t (*)[3])
+{
+  return false;
+}
+
+int orient3dFixed(const int64_t*, const int64_t*, const int64_t*, const int64_t*)
+{
+  return 0; // never called: toFixed fails
+}
+
 bool orient3d(const double*, const double*, const double*, const double*, int*)
 {
   return false;

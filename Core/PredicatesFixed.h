@@ -15,6 +15,8 @@
 // filters fail and would otherwise go to the full expansion evaluation from raw coordinates.
 #pragma once
 
+#include <cstdint>
+
 namespace volgrid
 {
 namespace predicates
@@ -28,6 +30,13 @@ bool orient3d(const double* a, const double* b, const double* c, const double* d
 // insphere(a,b,c,d,e) (Predicates.h convention: -sign of det[p - e, |p - e|^2]) in *sign; false when the
 // inputs do not fit.
 bool insphere(const double* a, const double* b, const double* c, const double* d, const double* e, int* sign);
+
+// The integer images of n <= 5 points at one common power-of-two scale (every |coordinate| < 2^61), for
+// callers that evaluate several determinants of the same points (the SoS tie-break); false when the
+// points do not fit.
+bool toFixed(const double* const* pts, int n, int64_t (*out)[3]);
+// Sign of det[b-a; c-a; d-a] of integer images from toFixed.
+int orient3dFixed(const int64_t* a, const int64_t* b, const int64_t* c, const int64_t* d);
 
 } // namespace fixedpoint
 } // namespace predicates
