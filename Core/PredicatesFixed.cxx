@@ -178,22 +178,26 @@ inline Wide<5> mul128x192(u128 w, Wide<3> m)
 }
 
 // Coordinates of n points as integers X = x / 2^low (common low); false when they do not fit.
-// Implementation: with T = floor(log2 max |x|), every X = x 2^(60 - T) has |X| < 2^61, and the call fits
-// iff all these are integers (low >= T - 60, i.e. top + 1 - low <= 61 with top = T). Scaling by a power
-// of two is exact unless the result underflows; an underflowed nonzero product is either a nonzero
-// number below 1 or 0 from a nonzero x, and both are rejected, so accepted values are exact. (The
-// integers are those of the common exponent T - 60 rather than low: the same up to a positive power of
-// two, which changes no sign.) NaN and infinite inputs fail the magnitude test.
+// With T = floor(log2 max |x|), every X = x 2^(60 - T) has |X| < 2^61, and the call fits iff all these
+// are integers (low >= T - 60, i.e. top + 1 - low <= 61 with top = T). (The integers are those of the
+// common exponent T - 60 rather than low: the same up to a positive power of two, which changes no
+// sign.) Non-finite inputs are rejected.
 inline bool toIntegers(const double* const* pts, int n, int64_t (*out)[3])
 {
   double m = 0.0;
+  bool finite = true;
   for (int i = 0; i < n; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
       const double a = std::fabs(pts[i][k]);
       m = a > m ? a : m;
+      finite = finite & (a <= 0x1.fffffffffffffp1023); // false for inf and NaN
     }
+  }
+  if (!finite)
+  {
+    return false; // not ours to judge
   }
   if (m == 0.0)
   {
@@ -208,25 +212,29 @@ inline bool toIntegers(const double* const* pts, int n, int64_t (*out)[3])
   const int T = static_cast<int>(bits >> 52) - 1023; // m is positive; subnormal m gives -1023
   if (T < -960 || T > 960)
   {
-    return false; // extreme magnitudes: left to the expansion path (keeps the scale factor normal)
+    return false; // extreme magnitudes: left to the expansion path
   }
-  const uint64_t scaleBits = static_cast<uint64_t>(1023 + kMaxBits - 1 - T) << 52;
-  double scale;
-  std::memcpy(&scale, &scaleBits, sizeof scale);
+  // X = x 2^(60 - T) from the bits: the 53-bit significand m (value m 2^(E - 1075), E the biased
+  // exponent; subnormals have E = 1 and no hidden bit) is placed at bit 11 (m 2^11 < 2^64) and shifted
+  // right by r = 11 - (E - 1075 - (T - 60)) >= 11 - 8 = 3; the call fits iff no set bit is shifted out
+  // (r <= 63 for a nonzero m). Integer operations only, no branch per coordinate.
   bool ok = true;
   for (int i = 0; i < n; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const double x = pts[i][k];
-      const double X = x * scale;
-      if (!(std::fabs(X) < 0x1p61))
-      {
-        return false;
-      }
-      const int64_t xi = static_cast<int64_t>(X);
-      ok = ok & (static_cast<double>(xi) == X) & ((xi != 0) | (x == 0.0));
-      out[i][k] = xi;
+      uint64_t b;
+      std::memcpy(&b, &pts[i][k], sizeof b);
+      const int biased = static_cast<int>((b >> 52) & 0x7ff);
+      const uint64_t hidden = biased != 0 ? (uint64_t(1) << 52) : 0;
+      const uint64_t m = ((b & ((uint64_t(1) << 52) - 1)) | hidden) << 11;
+      const int e = biased != 0 ? biased : 1;
+      const int r = 11 - (e - 1075 - (T - 60));
+      const int rc = r > 63 ? 63 : r;
+      ok = ok & ((m & ((uint64_t(1) << rc) - 1)) == 0) & ((r <= 63) | (m == 0));
+      const uint64_t mag = m >> rc;
+      const uint64_t neg = static_cast<uint64_t>(static_cast<int64_t>(b) >> 63);
+      out[i][k] = static_cast<int64_t>((mag ^ neg) - neg);
     }
   }
   return ok;
