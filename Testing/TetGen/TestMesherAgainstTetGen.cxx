@@ -39,7 +39,7 @@ TEST(MesherVsTetGen, CleanCorpusSideBySide)
     bool read = false;
     if (volgrid_testing::endsWith(file, ".obj"))
       read = volgrid::testshapes::readObj(path, surface);
-    else if (!volgrid_testing::endsWith(file, ".ply"))
+    else
       read = volgrid::readSurface(path, surface).ok();
     if (!read || surface.numberOfTriangles() > kMaxTriangles)
     {
@@ -91,7 +91,7 @@ TEST(MesherVsTetGen, CleanCorpusSideBySide)
       theirs.seconds, notes.c_str());
   }
   std::printf("compared %d, only VolGrid meshed %d, only TetGen meshed %d, neither %d, skipped %d "
-              "(PLY or > %d triangles)\n",
+              "(> %d triangles)\n",
     compared, onlyVolGrid, onlyTetGen, neither, skipped, kMaxTriangles);
   for (const std::string& f : tetgenFailures)
     std::printf("TetGen -pY failed on %s\n", f.c_str());
