@@ -255,9 +255,38 @@ inline Wide<3> det3(int64_t pz, int64_t qz, int64_t rz, i128 mqr, i128 mpr, i128
 }
 } // namespace
 
+// The last five points insphere converted, per thread: the SoS tie-break (toFixed) follows an exactly
+// cospherical insphere on the same points, and reuses the conversion when the coordinates are equal.
+struct LastConversion
+{
+  double x[5][3];
+  int64_t X[5][3];
+  bool valid = false;
+};
+thread_local LastConversion lastConversion;
+
 bool toFixed(const double* const* pts, int n, int64_t (*out)[3])
 {
-  return n <= 5 && toIntegers(pts, n, out);
+  if (n != 5)
+  {
+    return n < 5 && toIntegers(pts, n, out);
+  }
+  LastConversion& c = lastConversion;
+  if (c.valid)
+  {
+    bool same = true;
+    for (int i = 0; i < 5; ++i)
+    {
+      same = same & (pts[i][0] == c.x[i][0]) & (pts[i][1] == c.x[i][1]) & (pts[i][2] == c.x[i][2]);
+    }
+    // == on doubles: equal values (+0 and -0 both convert to 0, no NaN was ever cached), same integers.
+    if (same)
+    {
+      std::memcpy(out, c.X, sizeof c.X);
+      return true;
+    }
+  }
+  return toIntegers(pts, 5, out);
 }
 
 int orient3dFixed(const int64_t* a, const int64_t* b, const int64_t* c, const int64_t* d)
@@ -297,6 +326,16 @@ bool insphere(const double* a, const double* b, const double* c, const double* d
   {
     return false;
   }
+  LastConversion& last = lastConversion;
+  for (int i = 0; i < 5; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      last.x[i][k] = in[i][k];
+    }
+  }
+  std::memcpy(last.X, p, sizeof p);
+  last.valid = true;
   int64_t q[4][3];
   u128 w[4];
   for (int r = 0; r < 4; ++r)
