@@ -5,7 +5,7 @@
 #   1. Delaunay kernel vs TetGen, CGAL, vtkDelaunay3D     scripts/bench_delaunay.sh BUILD_DIR [options]
 #   2. Grid quality (all metrics) vs vtkMeshQuality       BUILD_DIR/bin/volgrid_bench_quality
 #   3. Boundary-conforming meshing vs TetGen -pY           scripts/bench_mesher.sh BUILD_DIR
-#   4. Element quality vs TetGen -pYq1.414 and Gmsh HXT    scripts/bench_quality_mesh.sh BUILD_DIR (when present)
+#   4. Element quality vs TetGen -pYq1.414 and Gmsh HXT    Testing/Benchmarks/bench_quality_mesh.sh BUILD_DIR
 # Results go to BUILD_DIR/bench/. Timings are wall-clock on this machine: run on an idle machine.
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -47,10 +47,9 @@ else
   echo "  volgrid_bench_quality FAILED"; status=1
 fi
 
-for section in bench_mesher.sh bench_quality_mesh.sh; do
-  if [ -x "$root/scripts/$section" ]; then
-    echo
-    "$root/scripts/$section" "$build" "$@" || status=1
-  fi
-done
+echo
+"$root/scripts/bench_mesher.sh" "$build" || status=1
+echo
+echo "=== 4. Element quality with default settings: VolGrid vs TetGen -pYq1.414 vs Gmsh HXT ==="
+bash "$root/Testing/Benchmarks/bench_quality_mesh.sh" "$build" || status=1
 exit $status
