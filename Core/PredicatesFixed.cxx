@@ -11,7 +11,8 @@
 //   differences      |X_p - X_q|                 < 2^62                 int64
 //   2x2 minors       |x_i y_j - x_j y_i|         < 2 * 2^124 = 2^125    int128 (each product < 2^124)
 //   squared norms    w = x^2 + y^2 + z^2         < 3 * 2^124 < 2^126    int128
-//   3x3 determinants sum of 3 |z| |minor|        < 3 * 2^187 < 2^189    3 limbs (signed range 2^191)
+//   3x3 determinants sum of 3 |z| |minor|        < 3 * 2^187 < 2^189    3 limbs (signed range 2^191),
+//                    formed from two int128 sums (see det3)
 //   insphere D       sum of 4 w |det3|           < 4 * 2^315 = 2^317    5 limbs (signed range 2^319)
 //   orient3d         a 3x3 determinant           < 2^189                3 limbs
 // Every partial sum is bounded by the same sums of absolute values, so nothing overflows. The wide
@@ -151,20 +152,6 @@ inline void multiplyMagnitudes(const uint64_t* a, const uint64_t* b, uint64_t* r
   }
 }
 
-// Signed int64 times a signed 128-bit value, as 3 limbs (|result| < 2^191 always).
-inline Wide<3> mul64x128(int64_t x, i128 m)
-{
-  const uint64_t sx = static_cast<uint64_t>(x >> 63); // all ones when negative
-  const u128 smWide = static_cast<u128>(m >> 127);
-  const uint64_t ax = (static_cast<uint64_t>(x) ^ sx) - sx;
-  const u128 am = (static_cast<u128>(m) ^ smWide) - smWide;
-  const uint64_t bm[2] = { static_cast<uint64_t>(am), static_cast<uint64_t>(am >> 64) };
-  Wide<3> r;
-  multiplyMagnitudes<3, 1, 2>(&ax, bm, r.v);
-  negateIf(r, sx ^ static_cast<uint64_t>(smWide));
-  return r;
-}
-
 // Nonnegative 128-bit w times a signed 3-limb value, as 5 limbs (the caller's bounds: |result| < 2^319).
 inline Wide<5> mul128x192(u128 w, Wide<3> m)
 {
@@ -245,12 +232,24 @@ inline i128 minor2(int64_t a0, int64_t a1, int64_t b0, int64_t b1)
   return i128(a0) * b1 - i128(b0) * a1;
 }
 
-// det of rows p, q, r (x, y, z), expanded along z with the xy minors given.
+// det of rows p, q, r (x, y, z), expanded along z with the xy minors given, as 3 limbs. Each minor m
+// (|m| < 2^125) is split as m = mh 2^63 + ml, mh = m >> 63 (|mh| <= 2^62), ml in [0, 2^63): all four
+// fit in int64, so z mh and z ml are single 64x64 -> 128-bit products, and with |z| < 2^62
+//   |Hi| = |sum z mh| < 3 2^124 < 2^126,   |Lo| = |sum z ml| < 3 2^125 < 2^127:
+// both sums fit in int128; det = Hi 2^63 + Lo (< 2^189) is assembled in 3 limbs.
 inline Wide<3> det3(int64_t pz, int64_t qz, int64_t rz, i128 mqr, i128 mpr, i128 mpq)
 {
-  Wide<3> s = mul64x128(pz, mqr);
-  accumulate(s, mul64x128(qz, mpr), true);
-  accumulate(s, mul64x128(rz, mpq), false);
+  constexpr i128 kLow63 = (i128(1) << 63) - 1;
+  const i128 hi = i128(pz) * static_cast<int64_t>(mqr >> 63) - i128(qz) * static_cast<int64_t>(mpr >> 63) +
+    i128(rz) * static_cast<int64_t>(mpq >> 63);
+  const i128 lo = i128(pz) * static_cast<int64_t>(mqr & kLow63) - i128(qz) * static_cast<int64_t>(mpr & kLow63) +
+    i128(rz) * static_cast<int64_t>(mpq & kLow63);
+  const Wide<3> h = fromI128<3>(hi);
+  Wide<3> s;
+  s.v[0] = h.v[0] << 63;
+  s.v[1] = (h.v[1] << 63) | (h.v[0] >> 1);
+  s.v[2] = (h.v[2] << 63) | (h.v[1] >> 1);
+  accumulate(s, fromI128<3>(lo), false);
   return s;
 }
 } // namespace
