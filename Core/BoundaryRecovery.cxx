@@ -1,5 +1,7 @@
 #include "BoundaryRecovery.h"
 
+#include "Quality.h"
+
 #include "FacetRecovery.h"
 #include "Predicates.h"
 
@@ -396,25 +398,6 @@ bool MeshEditor::flip23(int32_t t, int face, const BoundaryConstraints* bc, std:
   return true;
 }
 
-static double tetQuality(const double* a, const double* b, const double* c, const double* d)
-{
-  double e[3][3];
-  for (int i = 0; i < 3; ++i)
-  {
-    e[0][i] = b[i] - a[i];
-    e[1][i] = c[i] - a[i];
-    e[2][i] = d[i] - a[i];
-  }
-  const double vol = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-  double s = 0;
-  const double* p[4] = { a, b, c, d };
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      for (int k = 0; k < 3; ++k)
-        s += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
-  return s > 0 ? vol / (s * std::sqrt(s)) : 0;
-}
 
 bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created)
 {
@@ -437,7 +420,7 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
     const double *A = mesh.point(ring[i]), *B = mesh.point(ring[k]), *C = mesh.point(ring[j]);
     if (orient3d(A, B, C, Y) <= 0 || orient3d(A, C, B, X) <= 0)
       return kInvalid;
-    return std::min(tetQuality(A, B, C, Y), tetQuality(A, C, B, X));
+    return std::min(quality::tetShapeMeasure(A, B, C, Y), quality::tetShapeMeasure(A, C, B, X));
   };
   for (int len = 1; len < n; ++len)
     for (int i = 0; i + len < n; ++i)

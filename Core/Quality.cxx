@@ -468,4 +468,24 @@ SurfaceSummary surfaceSummary(const double* points, int64_t numPoints, const int
 }
 
 } // namespace quality
+double quality::tetShapeMeasure(const double* a, const double* b, const double* c, const double* d)
+{
+  double e[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    e[0][i] = b[i] - a[i];
+    e[1][i] = c[i] - a[i];
+    e[2][i] = d[i] - a[i];
+  }
+  const double vol = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  double s = 0;
+  const double* p[4] = { a, b, c, d };
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      for (int k = 0; k < 3; ++k)
+        s += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+  return s > 0 ? vol / (s * std::sqrt(s)) : 0;
+}
+
 } // namespace volgrid

@@ -66,6 +66,10 @@ TriangleMetrics triangleMetrics(const double a[3], const double b[3], const doub
 // Single metrics, for callers that need only one (same values as tetMetrics()).
 double tetVolume(const double p0[3], const double p1[3], const double p2[3], const double p3[3]);
 double tetAspectRatio(const double p0[3], const double p1[3], const double p2[3], const double p3[3]);
+// A cheap shape measure used to choose between candidate tets (recovery, Steiner removal): six times the
+// signed volume over (sum of squared edge lengths)^(3/2); largest for the regular tet, <= 0 when flat or
+// inverted. Only ranks candidates: validity is always decided by the exact predicates.
+double tetShapeMeasure(const double p0[3], const double p1[3], const double p2[3], const double p3[3]);
 // The six dihedral angles in degrees, for edges (0,1) (0,2) (0,3) (1,2) (1,3) (2,3).
 void tetDihedralAngles(
   const double p0[3], const double p1[3], const double p2[3], const double p3[3], double angles[6]);
