@@ -24,8 +24,10 @@ namespace
 const char* kUsage =
   "usage: volgrid delaunay INPUT.node | --random N [--seed S]\n"
   "                        [--check] [--json] [--out FILE.vtu] [--no-sort] [--location walk|grid]\n"
+  "                        [--threads 0|1|2]\n"
   "  Tetrahedralizes the points exactly (Delaunay, symbolic tie-breaking). Exactly coincident points\n"
-  "  are merged. --check verifies orientation, adjacency, empty spheres and the hull (exit 1 if not).\n";
+  "  are merged. --check verifies orientation, adjacency, empty spheres and the hull (exit 1 if not).\n"
+  "  --threads: 0 (default) = all cores, at most 2; the output is the same for any value.\n";
 
 struct Arguments
 {
@@ -89,6 +91,19 @@ bool parseArguments(int argc, char** argv, Arguments& args)
         std::fprintf(stderr, "volgrid delaunay: --location is walk or grid, not '%s'\n", v);
         return false;
       }
+    }
+    else if (a == "--threads")
+    {
+      const char* v = value("--threads");
+      long long t = 0;
+      if (!v || !volgrid::cli::parseLong("delaunay", "--threads", v, t))
+        return false;
+      if (t < 0 || t > 2)
+      {
+        std::fprintf(stderr, "volgrid delaunay: --threads is 0 (all cores, at most 2), 1 or 2, not %lld\n", t);
+        return false;
+      }
+      args.options.threads = static_cast<int>(t);
     }
     else if (a == "--check")
       args.check = true;

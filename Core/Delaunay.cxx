@@ -1,5 +1,9 @@
 #include "Delaunay.h"
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include "DelaunayInserterImpl.h"
 #include "SpatialSort.h"
 
@@ -289,8 +293,22 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   }
   // Back to input vertex numbering; optionally canonical tet numbering (independent of the thread count
   // and of the construction's history).
-  if (options.canonicalNumbering)
+  rep.walkSteps += inserter.walkSteps();
+  rep.cavityTets += inserter.cavityTets();
+  const bool parallelPossible =
+    options.location == PointLocation::Walk && options.spatialSort && m >= kParallelMinPoints;
+  if (options.canonicalNumbering || parallelPossible)
+  {
+    // The inserter's per-vertex buffers are not needed any more: free them before the canonical pass
+    // (it sets the peak memory).
+    std::vector<int32_t>().swap(inserter.impl_->vlocal);
+    std::vector<int32_t>().swap(inserter.impl_->vertexNext);
+    std::vector<int32_t>().swap(inserter.impl_->vertexTet);
+#ifdef __GLIBC__
+    malloc_trim(0); // and give back what the parallel stage's threads freed in their own arenas
+#endif
     canonicalizeTets(mesh, options.spatialSort ? order.data() : nullptr, threads);
+  }
   else if (options.spatialSort)
   {
     for (int32_t& v : mesh.tetVertices)
@@ -310,8 +328,6 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
         rep.firstDuplicates.push_back(static_cast<int64_t>(i));
     }
   rep.numVertices = n - rep.numDuplicates;
-  rep.walkSteps += inserter.walkSteps();
-  rep.cavityTets += inserter.cavityTets();
   if (!options.keepGhosts)
     mesh.removeGhostTets();
   progress->report(1.0, "Inserting points");

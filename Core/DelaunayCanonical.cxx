@@ -11,7 +11,10 @@
 //     curve in BRIO rounds, and most tets have a vertex of the last round, so the tet order is
 //     spatially coherent), then by the rotated list (insertion sort within a vertex's few tets);
 //   * free slots are dropped; neighbour codes are rewritten for the new numbers and face positions.
-// Cost: a few linear passes over the tet arrays (about 5% of the construction for random points).
+// Memory: besides the new-to-old order (4 bytes per tet) and the rotations (1 byte), at most one new
+// 16-byte row array exists at a time, so the peak stays within the kernel's budget (issue 2: 60 bytes
+// per tet). (An in-place cycle-following permutation would need no row array but costs a dependent
+// cache miss per row: several times slower.) Cost: a few linear passes over the tet arrays.
 #include "DelaunayInserterImpl.h"
 
 #include <thread>
@@ -64,112 +67,139 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
   const int32_t cap = mesh.tetCapacity();
   const int32_t nv = mesh.numVertices();
   const int32_t ghosts = mesh.numGhostTets();
-  const int32_t* V = mesh.tetVertices.data();
-  const int32_t* N = mesh.tetNeighbors.data();
-  const uint8_t* F = mesh.tetFlags.data();
+  // The points are not needed here and the caller replaces them (buildDelaunay's output points are the
+  // input array): release them first, which lowers the peak.
+  std::vector<double>().swap(mesh.points);
+  int32_t* V = mesh.tetVertices.data();
+  int32_t* N = mesh.tetNeighbors.data();
+  uint8_t* F = mesh.tetFlags.data();
   auto toOutput = [toInput](int32_t v) { return (toInput && v >= 0) ? toInput[v] : v; };
   // Group key: the last inserted vertex (kGhostVertex = -1 never is). Most tets get a vertex of the
   // last BRIO round, so the groups follow that round's Hilbert order: neighbouring tets get nearby
   // numbers, which keeps the passes below cache-friendly.
   auto lastInserted = [](const int32_t* w) { return std::max(std::max(w[0], w[1]), std::max(w[2], w[3])); };
+  // Rotated list of tet t in output ids, and the rotation.
+  auto rotated = [&](int32_t t, int32_t row[4], int8_t ord[4]) {
+    const int32_t* w = V + 4 * static_cast<size_t>(t);
+    int32_t out[4];
+    for (int i = 0; i < 4; ++i)
+      out[i] = toOutput(w[i]);
+    canonicalOrder(out, ord);
+    for (int j = 0; j < 4; ++j)
+      row[j] = out[ord[j]];
+  };
 
-  // Pass 1: counts per last inserted vertex.
+  // Pass 1: counts per last inserted vertex. From here on the flag byte of a slot holds the tet's
+  // rotation (newPos below, never 0 for a live tet) and 0 for a free slot: no separate array.
   std::vector<int32_t> start(static_cast<size_t>(nv) + 1, 0);
   for (int32_t t = 0; t < cap; ++t)
-    if (!(F[t] & TetMesh::kFree))
+  {
+    const bool live = !(F[t] & TetMesh::kFree);
+    F[t] = live ? 0xff : 0; // 0xff: live, rotation not yet known
+    if (live)
       ++start[lastInserted(V + 4 * static_cast<size_t>(t)) + 1];
+  }
   for (int32_t v = 0; v < nv; ++v)
     start[v + 1] += start[v];
   const int32_t live = start[nv];
 
-  // Pass 2: rotation of every live tet (newPos: new position of old position f in bits 2f..2f+1), its
-  // rotated list written in its group; then each group sorted by the rotated lists.
-  std::vector<uint8_t> newPos(static_cast<size_t>(cap));
-  std::vector<int32_t> slotTet(static_cast<size_t>(live));
-  std::vector<int32_t> V2(4 * static_cast<size_t>(live));
+  // Pass 2: newToOld by groups (counting sort), then each group sorted by the rotated lists; the
+  // rotation of every live tet (newPos: new position of old position f in bits 2f..2f+1).
+  uint8_t* newPos = F;
+  std::vector<int32_t> newToOld(static_cast<size_t>(live));
   {
     std::vector<int32_t> fill(start.begin(), start.end() - 1);
     for (int32_t t = 0; t < cap; ++t)
-    {
-      if (F[t] & TetMesh::kFree)
-        continue;
-      const int32_t* w = V + 4 * static_cast<size_t>(t);
-      int32_t out[4];
-      for (int i = 0; i < 4; ++i)
-        out[i] = toOutput(w[i]);
-      int8_t ord[4];
-      canonicalOrder(out, ord);
-      newPos[t] = static_cast<uint8_t>((1 << (2 * ord[1])) | (2 << (2 * ord[2])) | (3 << (2 * ord[3])));
-      const int32_t pos = fill[lastInserted(w)]++;
-      slotTet[pos] = t;
-      int32_t* row = V2.data() + 4 * static_cast<size_t>(pos);
-      for (int j = 0; j < 4; ++j)
-        row[j] = out[ord[j]];
-    }
+      if (F[t] != 0)
+        newToOld[fill[lastInserted(V + 4 * static_cast<size_t>(t))]++] = t;
   }
-  for (int32_t v = 0; v < nv; ++v)
   {
-    const int32_t a = start[v], b = start[v + 1];
-    for (int32_t i = a + 1; i < b; ++i)
+    struct Keyed
     {
-      int32_t* rows = V2.data();
-      if (!rowLess(rows + 4 * static_cast<size_t>(i), rows + 4 * static_cast<size_t>(i) - 4))
-        continue;
-      int32_t key[4];
-      std::memcpy(key, rows + 4 * static_cast<size_t>(i), sizeof key);
-      const int32_t t = slotTet[i];
-      int32_t j = i - 1;
-      for (; j >= a && rowLess(key, rows + 4 * static_cast<size_t>(j)); --j)
+      int32_t row[4];
+      int32_t tet;
+    };
+    std::vector<Keyed> group;
+    for (int32_t v = 0; v < nv; ++v)
+    {
+      const int32_t a = start[v], b = start[v + 1];
+      group.resize(static_cast<size_t>(b - a));
+      for (int32_t i = a; i < b; ++i)
       {
-        std::memcpy(rows + 4 * static_cast<size_t>(j + 1), rows + 4 * static_cast<size_t>(j), sizeof key);
-        slotTet[j + 1] = slotTet[j];
+        Keyed& k = group[static_cast<size_t>(i - a)];
+        int8_t ord[4];
+        k.tet = newToOld[i];
+        rotated(k.tet, k.row, ord);
+        newPos[k.tet] = static_cast<uint8_t>((1 << (2 * ord[1])) | (2 << (2 * ord[2])) | (3 << (2 * ord[3])));
       }
-      std::memcpy(rows + 4 * static_cast<size_t>(j + 1), key, sizeof key);
-      slotTet[j + 1] = t;
+      if (b - a > 1)
+        std::sort(group.begin(), group.end(), [](const Keyed& x, const Keyed& y) { return rowLess(x.row, y.row); });
+      for (int32_t i = a; i < b; ++i)
+        newToOld[i] = group[static_cast<size_t>(i - a)].tet;
     }
   }
-  std::vector<int32_t> newId(static_cast<size_t>(cap));
+  std::vector<int32_t>().swap(start);
+  // New number of every live slot.
+  std::vector<int32_t> newId(static_cast<size_t>(cap), -1);
   for (int32_t i = 0; i < live; ++i)
-    newId[slotTet[i]] = i;
+    newId[newToOld[i]] = i;
 
-  // Pass 3: neighbour codes for the new numbers and face positions.
-  std::vector<int32_t> N2(4 * static_cast<size_t>(live));
-  auto write = [&](int32_t from, int32_t to) {
-    for (int32_t i = from; i < to; ++i)
+  auto inHalves = [threads](int32_t n, const auto& work) {
+    if (threads > 1 && n >= (1 << 20))
     {
-      const int32_t t = slotTet[i];
-      const uint8_t np = newPos[t];
-      const int32_t* n = N + 4 * static_cast<size_t>(t);
-      int32_t* n2 = N2.data() + 4 * static_cast<size_t>(i);
+      std::thread helper(work, n / 2, n);
+      work(0, n / 2);
+      helper.join();
+    }
+    else
+      work(0, n);
+  };
+  // Pass 3: neighbour codes rewritten in place for the new numbers and face positions (a row's
+  // rewrite reads only newId/newPos of its neighbours).
+  inHalves(cap, [&](int32_t from, int32_t to) {
+    for (int32_t t = from; t < to; ++t)
+    {
+      if (F[t] == 0)
+        continue; // free slot
+      int32_t* n = N + 4 * static_cast<size_t>(t);
       for (int f = 0; f < 4; ++f)
       {
         const int32_t c = n[f];
-        const int p = (np >> (2 * f)) & 3;
-        if (c < 0)
-        {
-          n2[p] = c;
-          continue;
-        }
-        const int32_t u = c >> 2;
-        n2[p] = (newId[u] << 2) | ((newPos[u] >> (2 * (c & 3))) & 3);
+        if (c >= 0)
+          n[f] = (newId[c >> 2] << 2) | ((newPos[c >> 2] >> (2 * (c & 3))) & 3);
       }
     }
-  };
-  if (threads > 1 && live >= (1 << 20))
-  {
-    std::thread helper(write, live / 2, live);
-    write(0, live / 2);
-    helper.join();
-  }
-  else
-    write(0, live);
+  });
+  std::vector<int32_t>().swap(newId);
 
-  std::vector<double> points;
-  points.swap(mesh.points);
+  // Pass 4: the rows gathered in the new order and rotated, one array at a time (the old one is freed
+  // before the next is allocated: the transient memory stays at one 16-byte row per tet). Writes are
+  // sequential; the reads follow the construction's slot order, which is spatially coherent too.
+  auto gather = [&](std::vector<int32_t>& rows, bool vertices) {
+    std::vector<int32_t> out(4 * static_cast<size_t>(live));
+    const int32_t* in = rows.data();
+    inHalves(live, [&](int32_t from, int32_t to) {
+      for (int32_t i = from; i < to; ++i)
+      {
+        const int32_t t = newToOld[i];
+        const uint8_t np = newPos[t];
+        const int32_t* r = in + 4 * static_cast<size_t>(t);
+        int32_t* o = out.data() + 4 * static_cast<size_t>(i);
+        for (int f = 0; f < 4; ++f)
+          o[(np >> (2 * f)) & 3] = vertices ? toOutput(r[f]) : r[f];
+      }
+    });
+    rows.swap(out);
+  };
+  gather(mesh.tetNeighbors, false);
+  gather(mesh.tetVertices, true);
+
+  std::vector<int32_t> vertices, neighbors;
+  vertices.swap(mesh.tetVertices);
+  neighbors.swap(mesh.tetNeighbors);
   mesh.clear();
-  mesh.points.swap(points);
-  mesh.tetVertices.swap(V2);
-  mesh.tetNeighbors.swap(N2);
+  mesh.tetVertices.swap(vertices);
+  mesh.tetNeighbors.swap(neighbors);
   mesh.tetFlags.assign(static_cast<size_t>(live), 0);
   mesh.adjustGhostCount(ghosts);
 }

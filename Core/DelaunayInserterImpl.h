@@ -727,7 +727,8 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
 
 // Canonical tet numbering (DelaunayCanonical.cxx): see the file. Vertices are numbered in insertion
 // order on entry; toInput (optional) maps them to the output numbering as the tets are written.
-// threads > 1: the last pass runs on two threads (same result).
+// threads > 1: the passes over all tets run on two threads (same result). The mesh's points are
+// released (the caller sets the output points).
 void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads);
 
 } // namespace volgrid

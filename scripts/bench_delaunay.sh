@@ -11,7 +11,8 @@
 #   --quick             the 100k-point cases only (random 100k, grid/jittered 46^3 = 97336, spheres 100k);
 #                       vtkDelaunay3D is left out unless --vtk is given
 #   --vtk / --no-vtk    force vtkDelaunay3D (random 100k) in or out
-#   --engines LIST      comma-separated subset of volgrid,tetgen,cgal,vtk
+#   --engines LIST      comma-separated subset of volgrid,volgrid1,tetgen,cgal,vtk (volgrid1: VolGrid
+#                       on one thread; volgrid: its defaults, two threads on two cores or more)
 #   --inputs LIST       comma-separated subset of random,grid,jittered-grid,spheres
 #   --sizes LIST        comma-separated n values to keep (e.g. 100000)
 #   --repeat R          run each case R times and report the fastest (default 1)
@@ -92,9 +93,13 @@ while i < len(args):
 binary = os.environ["VOLGRID_BENCH_BIN"]
 build_dir = os.environ["VOLGRID_BENCH_BUILD_DIR"]
 out_path = opt["out"] or os.path.join(build_dir, "bench", "delaunay.jsonl")
-ENGINES = ["volgrid", "tetgen", "cgal", "vtk"]
-NAMES = {"volgrid": "VolGrid", "tetgen": "TetGen", "cgal": "CGAL", "vtk": "vtkDelaunay3D"}
-THREE = ["volgrid", "tetgen", "cgal"]
+# volgrid: the default options (two threads on a machine with two cores or more, canonical numbering
+# for large inputs); volgrid1: the same forced to one thread (VOLGRID_THREADS=1), for the sequential
+# comparison. TetGen, CGAL (Delaunay_triangulation_3, sequential) and vtkDelaunay3D are sequential.
+ENGINES = ["volgrid", "volgrid1", "tetgen", "cgal", "vtk"]
+NAMES = {"volgrid": "VolGrid", "volgrid1": "VolGrid 1 thr", "tetgen": "TetGen", "cgal": "CGAL",
+         "vtk": "vtkDelaunay3D"}
+THREE = ["volgrid", "volgrid1", "tetgen", "cgal"]
 
 # (input, n, engines) in run order.
 if opt["quick"]:
@@ -116,14 +121,18 @@ def load1():
         return None
 
 def run_one(engine, inp, n, rep):
-    cmd = [binary, "--engine", engine, "--input", inp, "--n", str(n), "--seed", str(opt["seed"])]
-    if engine == "volgrid":
+    cmd = [binary, "--engine", "volgrid" if engine == "volgrid1" else engine, "--input", inp, "--n", str(n),
+           "--seed", str(opt["seed"])]
+    env = dict(os.environ)
+    if engine in ("volgrid", "volgrid1"):
         cmd += opt["volgrid_args"]
+    if engine == "volgrid1":
+        env["VOLGRID_THREADS"] = "1"
     base = {"engine": engine, "input": inp, "n": n, "seed": opt["seed"], "repeat": rep, "load1_before": load1(),
             "time": time.strftime("%Y-%m-%d %H:%M:%S")}
     t0 = time.time()
     try:
-        p = subprocess.run(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        p = subprocess.run(cmd, stdin=subprocess.DEVNULL, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                            timeout=opt["timeout"], text=True)
     except subprocess.TimeoutExpired:
         base.update(ok=False, error="timeout after %d s" % opt["timeout"], status="timeout")
@@ -146,6 +155,7 @@ def run_one(engine, inp, n, rep):
         rec.update(ok=False, error="exit code %d after a JSON line" % p.returncode)
     for k, v in base.items():
         rec.setdefault(k, v)
+    rec["engine"] = engine  # volgrid1 runs the volgrid engine on one thread
     rec["load1_before"] = base["load1_before"]
     rec["wall_seconds"] = round(wall, 3)
     rec["status"] = "ok" if rec.get("ok") else rec.get("status", "failed")
@@ -247,20 +257,21 @@ def ok(inp, n, engine):
 emit("")
 emit("Time ratios (< 1 means VolGrid is faster; fastest runs, and with --repeat the median of per-round ratios):")
 for inp, n in dict.fromkeys((k[0], k[1]) for k in order):
-    parts = []
-    v = ok(inp, n, "volgrid")
-    for other in ["tetgen", "cgal", "vtk"]:
-        if (inp, n, other) not in best:
-            continue
-        o = ok(inp, n, other)
-        label = "VolGrid/%s" % NAMES[other]
-        txt = "%.3f" % (v["seconds"] / o["seconds"]) if v and o and o["seconds"] > 0 else "n/a"
-        pm = paired_median((inp, n, "volgrid"), (inp, n, other))
-        if pm is not None:
-            txt += " (median %.3f)" % pm
-        parts.append("%s %s" % (label, txt))
-    if parts:
-        emit("  %-14s %9d  %s" % (inp, n, "   ".join(parts)))
+    for mine in ["volgrid", "volgrid1"]:
+        parts = []
+        v = ok(inp, n, mine)
+        for other in ["tetgen", "cgal", "vtk"]:
+            if (inp, n, other) not in best or (inp, n, mine) not in best:
+                continue
+            o = ok(inp, n, other)
+            label = "%s/%s" % (NAMES[mine], NAMES[other])
+            txt = "%.3f" % (v["seconds"] / o["seconds"]) if v and o and o["seconds"] > 0 else "n/a"
+            pm = paired_median((inp, n, mine), (inp, n, other))
+            if pm is not None:
+                txt += " (median %.3f)" % pm
+            parts.append("%s %s" % (label, txt))
+        if parts:
+            emit("  %-14s %9d  %s" % (inp, n, "   ".join(parts)))
 grid_sizes = sorted({k[1] for k in order if k[0] == "grid"} & {k[1] for k in order if k[0] == "jittered-grid"})
 if grid_sizes:
     emit("Grid / jittered-grid time ratio per engine (cospherical slowdown):")
@@ -285,6 +296,10 @@ if any(k[1] == N for k in order):
     g, j = ok("grid", N, "volgrid"), ok("jittered-grid", N, "volgrid")
     emit("  grid <= 2 x jittered-grid time (VolGrid)      %s" % verdict(None if not (g and j) else g["seconds"] <= 2 * j["seconds"]))
     emit("  1M random: <= 60 bytes/tet beyond the input   %s" % verdict(None if not v else v["bytes_per_tet_beyond_input"] <= 60))
+    v1 = ok("random", N, "volgrid1")
+    if v1 and t and c:
+        emit("  (one thread: VolGrid/TetGen %.3f, VolGrid/CGAL %.3f, %.1f bytes/tet; TetGen and CGAL are sequential)"
+             % (v1["seconds"] / t["seconds"], v1["seconds"] / c["seconds"], v1["bytes_per_tet_beyond_input"]))
 
 failed = [k for k in order if not best[k].get("ok")]
 emit("")
