@@ -178,6 +178,8 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
     os << readInfo.format << ", " << readInfo.fileFaces << " faces";
     if (readInfo.polygonFaces)
       os << ", " << readInfo.polygonFaces << " polygons triangulated";
+    if (readInfo.holeRegions)
+      os << ", " << readInfo.holeRegions << " facet hole(s) cut out";
     if (readInfo.mergedPoints)
       os << ", " << readInfo.mergedPoints << " coincident points merged";
     if (readInfo.skippedElements)
