@@ -7,7 +7,7 @@
 #include "PolygonTriangulation.h"
 
 #include <algorithm>
-#include <limits>
+#include <utility>
 #include <vector>
 
 namespace volgrid
@@ -104,12 +104,19 @@ public:
       order[i] = i;
     }
     std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return Frame.lessUV(P(hole[b]), P(hole[a])); });
+    std::vector<std::pair<double, size_t>> candidates;
     for (size_t hi : order)
     {
       const int32_t h = hole[hi];
-      size_t best = joined.size();
-      double bestDistance = std::numeric_limits<double>::infinity();
+      // Nearest joined corners first: the first valid one is the bridge (usually one of the first few).
+      candidates.clear();
       for (size_t j = 0; j < joined.size(); ++j)
+      {
+        candidates.emplace_back(distance2(h, joined[j]), j);
+      }
+      std::sort(candidates.begin(), candidates.end());
+      size_t best = joined.size();
+      for (const auto& [d2, j] : candidates)
       {
         const int32_t o = joined[j];
         if (o == h)
@@ -118,9 +125,8 @@ public:
           best = j;
           break;
         }
-        const double d2 = distance2(h, o);
-        if (d2 >= bestDistance || !insideCorner(joined, j, h) || !insideCorner(hole, hi, o) ||
-          hitsLoop(o, h, joined) || hitsLoop(o, h, hole))
+        if (!insideCorner(joined, j, h) || !insideCorner(hole, hi, o) || hitsLoop(o, h, joined) ||
+          hitsLoop(o, h, hole))
         {
           continue;
         }
@@ -136,7 +142,7 @@ public:
         if (clear)
         {
           best = j;
-          bestDistance = d2;
+          break;
         }
       }
       if (best == joined.size())

@@ -184,6 +184,87 @@ TEST(FacetTriangulation, SeveralNonConvexHolesAndAnIsland)
   EXPECT_EQ(r.nonManifoldEdges, 0);
 }
 
+TEST(FacetTriangulation, AlignedGridOfHolesInATiltedPlane)
+{
+  // 3x3 square holes on a grid inside a square: many corners share a u or v coordinate, so bridge
+  // candidates pass exactly through other corners (rejected exactly). Then the same facet tilted out
+  // of the coordinate planes (rounded coordinates, so only nearly planar).
+  for (int tilted = 0; tilted < 2; ++tilted)
+  {
+    SCOPED_TRACE(tilted ? "tilted" : "z = 0");
+    std::vector<double> p;
+    auto add = [&](double x, double y) {
+      if (tilted)
+      {
+        // Rodrigues rotation of (x, y, 0) by 0.7 rad about the unit axis k = (1,1,1)/sqrt(3), then an
+        // offset: v cos + (k x v) sin + k (k.v)(1 - cos).
+        const double c = std::cos(0.7), s = std::sin(0.7), k = 1.0 / std::sqrt(3.0);
+        const double v[3] = { x, y, 0 };
+        const double kxv[3] = { k * (v[2] - v[1]), k * (v[0] - v[2]), k * (v[1] - v[0]) };
+        const double kv = k * (v[0] + v[1] + v[2]);
+        for (int i = 0; i < 3; ++i)
+        {
+          p.push_back(v[i] * c + kxv[i] * s + k * kv * (1 - c) + 0.1 * (i + 1));
+        }
+      }
+      else
+      {
+        p.insert(p.end(), { x, y, 0 });
+      }
+      return static_cast<int32_t>(p.size() / 3 - 1);
+    };
+    std::vector<std::vector<int32_t>> polygons(1);
+    for (auto [x, y] : { std::pair<double, double>{ 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } })
+      polygons[0].push_back(add(x, y));
+    std::vector<double> holes;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        const double x0 = 1 + 3 * i, y0 = 1 + 3 * j;
+        polygons.emplace_back();
+        for (auto [x, y] : { std::pair<double, double>{ x0, y0 }, { x0 + 2, y0 }, { x0 + 2, y0 + 2 }, { x0, y0 + 2 } })
+          polygons.back().push_back(add(x, y));
+        const size_t before = p.size();
+        add(x0 + 1, y0 + 1); // the hole point, mapped like the corners
+        holes.insert(holes.end(), p.begin() + static_cast<std::ptrdiff_t>(before), p.end());
+        p.resize(before);
+      }
+    }
+    std::vector<int32_t> tris;
+    FacetTriangulationInfo info;
+    ASSERT_TRUE(triangulateFacet(p, polygons, holes, tris, &info));
+    EXPECT_EQ(info.holeRegions, 9);
+    // 40 corners, 9 holes: 40 + 18 - 2 triangles.
+    EXPECT_EQ(tris.size(), 56u * 3);
+    for (const auto& loop : polygons)
+    {
+      expectLoopEdges(tris, loop);
+    }
+    SurfaceMesh m;
+    m.points = p;
+    double area = 0;
+    for (size_t t = 0; t < tris.size(); t += 3)
+    {
+      m.addTriangle(tris[t], tris[t + 1], tris[t + 2], 0);
+      double n[3];
+      const double* a = m.point(tris[t]);
+      const double* b = m.point(tris[t + 1]);
+      const double* c = m.point(tris[t + 2]);
+      n[0] = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
+      n[1] = (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]);
+      n[2] = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+      area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    }
+    EXPECT_NEAR(area, 100 - 9 * 4, 1e-9);
+    const SurfaceCheckReport r = checkSurface(m);
+    EXPECT_EQ(r.selfIntersectingPairs + r.shellIntersectingPairs, 0);
+    EXPECT_EQ(r.degenerateTriangles, 0);
+    EXPECT_EQ(r.nonManifoldEdges, 0);
+    EXPECT_EQ(r.inconsistentEdges, 0);
+  }
+}
+
 TEST(FacetTriangulation, PolyReaderSquareFacetWithSquareHole)
 {
   // The square with a hole as one .poly facet in the plane x = 0 (the projection drops x).
