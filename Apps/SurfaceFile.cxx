@@ -2,6 +2,7 @@
 
 #include "VolGridSurfaceConversion.h"
 
+#include "GzipFile.h"
 #include "SurfaceReader.h"
 
 #include "vtkCellArray.h"
@@ -21,8 +22,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace volgrid
 {
@@ -34,14 +39,53 @@ bool fileReadable(const std::string& path)
   return static_cast<bool>(in);
 }
 
-Status readWithVtk(const std::string& path, const std::string& ext, SurfaceMesh& mesh, std::string& info)
+bool vtkReadFormat(const std::string& ext)
+{
+  return ext == "obj" || ext == "ply" || ext == "vtp" || ext == "vtk";
+}
+
+// VTK's readers want a file name: a compressed .obj/.vtp/.vtk is decompressed into a private temporary
+// file with the same inner extension, removed when this goes out of scope.
+class DecompressedCopy
+{
+public:
+  Status create(const std::string& gzPath, const std::string& ext)
+  {
+    std::string text;
+    Status status = readGzipFile(gzPath, text);
+    if (!status.ok())
+      return status;
+    std::string name = (std::filesystem::temp_directory_path() / "volgrid-gunzip-XXXXXX.").string() + ext;
+    const int fd = mkstemps(name.data(), static_cast<int>(ext.size() + 1));
+    if (fd < 0)
+      return Status::failure(ErrorKind::InvalidOption, gzPath + ": cannot create a temporary file to decompress into");
+    Path = name;
+    const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+    if (::close(fd) != 0 || !written)
+      return Status::failure(ErrorKind::InvalidOption, gzPath + ": writing the decompressed temporary file failed");
+    return Status::success();
+  }
+  ~DecompressedCopy()
+  {
+    if (!Path.empty())
+      std::remove(Path.c_str());
+  }
+  const std::string& path() const { return Path; }
+
+private:
+  std::string Path;
+};
+
+// `path` names the file in messages; `readPath` is the file VTK reads (a decompressed copy or path).
+Status readWithVtk(const std::string& path, const std::string& readPath, const std::string& ext, SurfaceMesh& mesh,
+  std::string& info)
 {
   vtkSmartPointer<vtkDataObject> data;
   std::string format;
   if (ext == "obj")
   {
     vtkNew<vtkOBJReader> r;
-    r->SetFileName(path.c_str());
+    r->SetFileName(readPath.c_str());
     r->Update();
     data = r->GetOutput();
     format = "OBJ";
@@ -49,7 +93,7 @@ Status readWithVtk(const std::string& path, const std::string& ext, SurfaceMesh&
   else if (ext == "ply")
   {
     vtkNew<vtkPLYReader> r;
-    r->SetFileName(path.c_str());
+    r->SetFileName(readPath.c_str());
     r->Update();
     data = r->GetOutput();
     format = "PLY";
@@ -57,7 +101,7 @@ Status readWithVtk(const std::string& path, const std::string& ext, SurfaceMesh&
   else if (ext == "vtp")
   {
     vtkNew<vtkXMLPolyDataReader> r;
-    r->SetFileName(path.c_str());
+    r->SetFileName(readPath.c_str());
     r->Update();
     data = r->GetOutput();
     format = "VTK XML poly data";
@@ -65,7 +109,7 @@ Status readWithVtk(const std::string& path, const std::string& ext, SurfaceMesh&
   else
   {
     vtkNew<vtkGenericDataObjectReader> r;
-    r->SetFileName(path.c_str());
+    r->SetFileName(readPath.c_str());
     r->Update();
     data = r->GetOutput();
     format = "legacy VTK";
@@ -144,8 +188,7 @@ std::string surfaceFileExtension(const std::string& path)
 
 bool surfaceFileSupported(const std::string& path)
 {
-  const std::string ext = surfaceFileExtension(path);
-  return surfaceReaderSupports(path) || ext == "obj" || ext == "ply" || ext == "vtp" || ext == "vtk";
+  return surfaceReaderSupports(path) || vtkReadFormat(surfaceFileExtension(stripGzipSuffix(path)));
 }
 
 Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& info)
@@ -160,7 +203,8 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
   if (!surfaceFileSupported(path))
   {
     return Status::failure(ErrorKind::InvalidOption,
-      path + ": unknown surface file type (expected .off .mesh .poly .smesh .msh .stl .obj .ply .vtp .vtk)");
+      path + ": unknown surface file type (expected .off .mesh .poly .smesh .msh .stl .obj .ply .vtp .vtk, or one "
+             "of them gzip-compressed as .gz)");
   }
   if (!fileReadable(path))
   {
@@ -178,6 +222,8 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
     os << readInfo.format << ", " << readInfo.fileFaces << " faces";
     if (readInfo.polygonFaces)
       os << ", " << readInfo.polygonFaces << " polygons triangulated";
+    if (readInfo.holeRegions)
+      os << ", " << readInfo.holeRegions << " facet hole(s) cut out";
     if (readInfo.mergedPoints)
       os << ", " << readInfo.mergedPoints << " coincident points merged";
     if (readInfo.skippedElements)
@@ -188,12 +234,20 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
   }
   else
   {
-    const Status status = readWithVtk(path, surfaceFileExtension(path), mesh, info);
+    const std::string ext = surfaceFileExtension(stripGzipSuffix(path));
+    DecompressedCopy copy;
+    if (isGzipPath(path))
+    {
+      const Status status = copy.create(path, ext);
+      if (!status.ok())
+        return status;
+    }
+    const Status status = readWithVtk(path, isGzipPath(path) ? copy.path() : path, ext, mesh, info);
     if (!status.ok())
       return status;
     // vtkOBJReader duplicates a point for each texture coordinate or normal it is used with: merging is
     // needed to recover the file's connectivity.
-    if (mergeCoincidentPoints || surfaceFileExtension(path) == "obj")
+    if (mergeCoincidentPoints || ext == "obj")
     {
       const MergeResult merged = volgrid::mergeCoincidentPoints(mesh);
       if (merged.mergedPoints)

@@ -15,6 +15,8 @@ namespace volgrid
 //                                      references, STL solids, gmsh entities)
 //   .obj .ply .vtp .vtk                VTK readers (OBJ, PLY, XML poly data, legacy VTK: polydata or an
 //                                      unstructured grid's 2D cells; a "PatchId" cell array is kept)
+// Any of them may be gzip-compressed (name.stl.gz, name.obj.gz ...): Core decompresses in memory, the
+// VTK formats go through a temporary decompressed copy.
 // Polygons and strips are triangulated and exactly coincident points merged. `info` receives a one-line
 // description (format, points, triangles, warnings). Failures name the file and the problem.
 Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& info);

@@ -2,6 +2,7 @@
 // (polygons are ear-clipped in their plane) and `tristrips` lists (-1 restarts a strip; every other
 // triangle of a strip is flipped so the strip keeps one orientation). Other elements and properties are
 // skipped. VTK's vtkPLYReader ignores triangle strips, which is why VolGrid reads PLY itself.
+#include "GzipFile.h"
 #include "SurfaceReader.h"
 #include "SurfaceReaderSupport.h"
 
@@ -134,9 +135,25 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   SurfaceReadInfo localInfo;
   SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
   info = SurfaceReadInfo();
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return plyError(path, "cannot open the file");
+  // A .ply.gz file is decompressed into memory and parsed from there.
+  std::ifstream file;
+  std::istringstream unpacked;
+  const bool gzip = isGzipPath(path);
+  if (gzip)
+  {
+    std::string text;
+    const Status s = readGzipFile(path, text);
+    if (!s.ok())
+      return s;
+    unpacked.str(std::move(text));
+  }
+  else
+  {
+    file.open(path, std::ios::binary);
+    if (!file)
+      return plyError(path, "cannot open the file");
+  }
+  std::istream& in = gzip ? static_cast<std::istream&>(unpacked) : file;
 
   // Header.
   std::string line;

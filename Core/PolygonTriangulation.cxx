@@ -1,5 +1,7 @@
-// Polygon triangulation by ear clipping in the polygon's plane (declared in SurfaceReader.h; the
-// readers split every polygon face with it).
+// Polygon triangulation by ear clipping in the polygon's plane (triangulatePolygon is declared in
+// SurfaceReader.h; the readers split every polygon face with it), and the projection frame shared with
+// the hole and facet triangulations (PolygonTriangulation.h).
+#include "PolygonTriangulation.h"
 #include "SurfaceReader.h"
 
 #include "Predicates.h"
@@ -12,12 +14,6 @@ namespace volgrid
 
 namespace
 {
-struct PlaneFrame
-{
-  int drop = 2;  // coordinate axis dropped by the projection
-  int sign = 1;  // sign that turns orient2dProjected into the loop's orientation (+1 = ear-convex)
-};
-
 double triangleQuality(const double* a, const double* b, const double* c)
 {
   double e[3][3];
@@ -40,8 +36,91 @@ double triangleQuality(const double* a, const double* b, const double* c)
 }
 } // namespace
 
+bool ProjectionFrame::chooseFrom(const double normal[3])
+{
+  drop = 2;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (std::fabs(normal[k]) > std::fabs(normal[drop]))
+    {
+      drop = k;
+    }
+  }
+  return normal[drop] != 0.0 && std::isfinite(normal[drop]);
+}
+
+int ProjectionFrame::orient(const double* a, const double* b, const double* c) const
+{
+  // orient2dProjected is the sign of the drop-th component of (b-a)x(c-a): counter-clockwise in (u, v).
+  return predicates::orient2dProjected(a, b, c, drop);
+}
+
+bool ProjectionFrame::lessUV(const double* a, const double* b) const
+{
+  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+  return a[u] < b[u] || (a[u] == b[u] && a[v] < b[v]);
+}
+
+void addNewellNormal(const std::vector<double>& points, const std::vector<int32_t>& loop, double nrm[3])
+{
+  const size_t n = loop.size();
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double* a = points.data() + 3 * size_t(loop[i]);
+    const double* b = points.data() + 3 * size_t(loop[(i + 1) % n]);
+    nrm[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    nrm[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    nrm[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+}
+
+int loopOrientation(const std::vector<double>& points, const std::vector<int32_t>& loop,
+  const ProjectionFrame& frame)
+{
+  const size_t n = loop.size();
+  if (n < 3)
+  {
+    return 0;
+  }
+  auto P = [&](size_t i) { return points.data() + 3 * size_t(loop[i % n]); };
+  size_t low = 0;
+  for (size_t i = 1; i < n; ++i)
+  {
+    if (frame.lessUV(P(i), P(low)))
+    {
+      low = i;
+    }
+  }
+  return frame.orient(P(low + n - 1), P(low), P(low + 1));
+}
+
 bool triangulatePolygon(const std::vector<double>& points, const std::vector<int32_t>& loop,
   std::vector<int32_t>& out)
+{
+  if (loop.size() < 3)
+  {
+    return false;
+  }
+  // Newell normal: its largest component picks the projection, its sign the loop orientation there.
+  double nrm[3] = { 0, 0, 0 };
+  addNewellNormal(points, loop, nrm);
+  ProjectionFrame frame;
+  const bool planar = frame.chooseFrom(nrm);
+  if (!planar && loop.size() > 3)
+  {
+    for (size_t i = 1; i + 1 < loop.size(); ++i)
+    {
+      out.push_back(loop[0]);
+      out.push_back(loop[i]);
+      out.push_back(loop[i + 1]);
+    }
+    return false;
+  }
+  return earClipPolygon(points, loop, frame, nrm[frame.drop] > 0 ? 1 : -1, out);
+}
+
+bool earClipPolygon(const std::vector<double>& points, const std::vector<int32_t>& loop,
+  const ProjectionFrame& frame, int sign, std::vector<int32_t>& out)
 {
   const size_t n = loop.size();
   if (n < 3)
@@ -54,24 +133,6 @@ bool triangulatePolygon(const std::vector<double>& points, const std::vector<int
     return true;
   }
   auto P = [&](int32_t id) { return points.data() + 3 * size_t(id); };
-  // Newell normal: its largest component picks the projection, its sign the loop orientation there.
-  double nrm[3] = { 0, 0, 0 };
-  for (size_t i = 0; i < n; ++i)
-  {
-    const double* a = P(loop[i]);
-    const double* b = P(loop[(i + 1) % n]);
-    nrm[0] += (a[1] - b[1]) * (a[2] + b[2]);
-    nrm[1] += (a[2] - b[2]) * (a[0] + b[0]);
-    nrm[2] += (a[0] - b[0]) * (a[1] + b[1]);
-  }
-  PlaneFrame frame;
-  for (int k = 0; k < 3; ++k)
-  {
-    if (std::fabs(nrm[k]) > std::fabs(nrm[frame.drop]))
-    {
-      frame.drop = k;
-    }
-  }
   auto fan = [&](const std::vector<int32_t>& rest) {
     for (size_t i = 1; i + 1 < rest.size(); ++i)
     {
@@ -80,24 +141,7 @@ bool triangulatePolygon(const std::vector<double>& points, const std::vector<int
       out.push_back(rest[i + 1]);
     }
   };
-  if (nrm[frame.drop] == 0.0 || !std::isfinite(nrm[frame.drop]))
-  {
-    fan(loop);
-    return false;
-  }
-  {
-    // Calibrate the sign convention of orient2dProjected: the (u,v) = ((k+1)%3, (k+2)%3) frame is the
-    // one whose signed area equals the Newell component nrm[k].
-    const int k = frame.drop, u = (k + 1) % 3, v = (k + 2) % 3;
-    double o[3] = { 0, 0, 0 }, pu[3] = { 0, 0, 0 }, pv[3] = { 0, 0, 0 };
-    pu[u] = 1.0;
-    pv[v] = 1.0;
-    const int conv = predicates::orient2dProjected(o, pu, pv, k);
-    frame.sign = conv * (nrm[k] > 0 ? 1 : -1);
-  }
-  auto orient = [&](int32_t a, int32_t b, int32_t c) {
-    return predicates::orient2dProjected(P(a), P(b), P(c), frame.drop) * frame.sign;
-  };
+  auto orient = [&](int32_t a, int32_t b, int32_t c) { return frame.orient(P(a), P(b), P(c)) * sign; };
 
   std::vector<int32_t> prev(n), next(n);
   for (size_t i = 0; i < n; ++i)

@@ -1,6 +1,7 @@
 // Reading a surface by file extension; each format has its own file (OffReader, MeditReader,
 // TetGenPolyReader, GmshReader, StlReader, PlyReader), the shared parsing helpers are in
-// SurfaceReaderSupport, polygon triangulation in PolygonTriangulation.
+// SurfaceReaderSupport, polygon triangulation in PolygonTriangulation. A trailing ".gz" is transparent:
+// lowerExtension skips it and loadFile decompresses (GzipFile).
 #include "SurfaceReader.h"
 #include "SurfaceReaderSupport.h"
 
@@ -47,7 +48,8 @@ Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* 
     return readPLY(path, mesh, info, options);
   }
   return readError(
-    path, 0, "unsupported file extension '." + ext + "' (supported: .off .mesh .poly .smesh .msh .stl .ply)");
+    path, 0, "unsupported file extension '." + ext +
+      "' (supported: .off .mesh .poly .smesh .msh .stl .ply, each also gzip-compressed as .gz)");
 }
 
 } // namespace volgrid

@@ -1,5 +1,7 @@
 #include "SurfaceReaderSupport.h"
 
+#include "GzipFile.h"
+
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
@@ -9,8 +11,9 @@
 namespace volgrid::detail
 {
 
-std::string lowerExtension(const std::string& path)
+std::string lowerExtension(const std::string& gzPath)
 {
+  const std::string path = stripGzipSuffix(gzPath);
   const size_t slash = path.find_last_of("/\\");
   const size_t dot = path.find_last_of('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
@@ -39,6 +42,10 @@ Status readError(const std::string& path, int64_t line, const std::string& what)
 
 Status loadFile(const std::string& path, std::string& text)
 {
+  if (isGzipPath(path))
+  {
+    return readGzipFile(path, text);
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {

@@ -16,13 +16,14 @@
 namespace volgrid::detail
 {
 
-// The extension after the last dot of the file name, lower-cased; empty when there is none.
+// The extension after the last dot of the file name, lower-cased; empty when there is none. A trailing
+// ".gz" is skipped: "wing.STL.gz" gives "stl" (loadFile decompresses such files).
 std::string lowerExtension(const std::string& path);
 
 // "path:line: what" as an ErrorKind::InvalidOption status (line <= 0: no line number).
 Status readError(const std::string& path, int64_t line, const std::string& what);
 
-// Reads the whole file (binary mode) into text.
+// Reads the whole file (binary mode) into text; a file whose name ends in ".gz" is decompressed.
 Status loadFile(const std::string& path, std::string& text);
 
 // True when the whole token is a number (a leading '+' is allowed).

@@ -1,8 +1,13 @@
 // TetGen .poly / .smesh reader: polygon facets triangulated by ear clipping in the facet plane (facet
-// markers become patch ids); the nodes come from the sibling .node file when the node list is empty.
+// markers become patch ids); a .poly facet with several polygons or hole points is one planar region
+// with inner boundaries and holes (triangulateFacet). The nodes come from the sibling .node file when
+// the node list is empty.
+#include "GzipFile.h"
+#include "PolygonTriangulation.h"
 #include "SurfaceReader.h"
 #include "SurfaceReaderSupport.h"
 
+#include <fstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -129,9 +134,17 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
   std::string nodeText;
   if (nodeCount == 0)
   {
-    // Nodes are in the sibling .node file.
-    const size_t dot = path.find_last_of('.');
-    const std::string nodePath = path.substr(0, dot) + ".node";
+    // Nodes are in the sibling .node file (name.node or name.node.gz, the compressed one first when
+    // the .poly itself is compressed).
+    const std::string inner = stripGzipSuffix(path);
+    const std::string plainNode = inner.substr(0, inner.find_last_of('.')) + ".node";
+    const std::string nodeCandidates[2] = { isGzipPath(path) ? plainNode + ".gz" : plainNode,
+      isGzipPath(path) ? plainNode : plainNode + ".gz" };
+    std::string nodePath = nodeCandidates[0];
+    if (!std::ifstream(nodePath) && std::ifstream(nodeCandidates[1]))
+    {
+      nodePath = nodeCandidates[1];
+    }
     s = loadFile(nodePath, nodeText);
     if (!s.ok())
     {
@@ -169,7 +182,6 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
     return sc.error("bad boundary-marker flag '" + std::string(toks[1]) + "'");
   }
   std::vector<int32_t> loop, scratch;
-  int64_t holeFacets = 0;
   for (int64_t f = 0; f < nf; ++f)
   {
     if (!sc.nextLine(toks))
@@ -245,23 +257,47 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
       }
     }
     ++info.fileFaces;
-    if (nholes > 0)
-    {
-      ++holeFacets;
-      if (holeFacets == 1)
-      {
-        return sc.error("facet " + std::to_string(f) + " has " + std::to_string(nholes) +
-          " hole(s): facets with holes are not supported by this reader");
-      }
-    }
+    int64_t areaPolygons = 0;
     for (const auto& poly : polygons)
     {
       if (poly.size() < 3)
       {
         ++info.skippedElements; // segments and isolated points inside a facet
-        continue;
       }
-      addPolygon(mesh, poly, static_cast<int32_t>(marker), info, scratch);
+      else
+      {
+        ++areaPolygons;
+      }
+    }
+    if (areaPolygons == 1 && nholes == 0)
+    {
+      for (const auto& poly : polygons)
+      {
+        if (poly.size() >= 3)
+        {
+          addPolygon(mesh, poly, static_cast<int32_t>(marker), info, scratch);
+        }
+      }
+      continue;
+    }
+    // Several polygons or hole points: one planar region with inner boundaries and holes.
+    ++info.polygonFaces;
+    scratch.clear();
+    FacetTriangulationInfo facet;
+    if (!triangulateFacet(mesh.points, polygons, holes, scratch, &facet))
+    {
+      info.warnings.push_back("facet " + std::to_string(f) + ": " + std::to_string(facet.failures) +
+        " region(s) could not be triangulated exactly (a hole not bridged or a fan fallback)");
+    }
+    info.holeRegions += facet.holeRegions;
+    if (facet.unusedHolePoints > 0)
+    {
+      info.warnings.push_back("facet " + std::to_string(f) + ": " + std::to_string(facet.unusedHolePoints) +
+        " hole point(s) outside all of its polygons ignored");
+    }
+    for (size_t i = 0; i + 2 < scratch.size(); i += 3)
+    {
+      mesh.addTriangle(scratch[i], scratch[i + 1], scratch[i + 2], static_cast<int32_t>(marker));
     }
   }
   fanFallbackWarning(info);

@@ -8,8 +8,10 @@ level="${1:-build}"
 
 # ParaView 5.11's CMake package needs MPI, double-conversion and utfcpp headers, and python3-paraview
 # (its targets name the vtkmodules .so files). Never add libvtk9-dev: it removes python3-paraview/pvpython.
+# zlib1g-dev: Core reads gzip-compressed surfaces (.stl.gz ...).
 packages=(build-essential cmake pkg-config libgtest-dev
-  paraview paraview-dev python3-paraview libopenmpi-dev libdouble-conversion-dev libutfcpp-dev)
+  paraview paraview-dev python3-paraview libopenmpi-dev libdouble-conversion-dev libutfcpp-dev
+  zlib1g-dev)
 case "$level" in
   build) ;;
   test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev) ;;
