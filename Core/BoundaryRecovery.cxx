@@ -2,6 +2,7 @@
 
 #include "Quality.h"
 
+#include "BoundaryCensus.h"
 #include "FacetRecovery.h"
 #include "Predicates.h"
 
@@ -365,6 +366,7 @@ bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<
   }
   if (created)
     *created = tmpTets_;
+  ++edits;
   return true;
 }
 
@@ -1187,14 +1189,17 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     return fallback[static_cast<size_t>(bc.parent[f0])] != 0;
   };
   FacetCavityStats cavityStats;
+  BoundaryCensus census;
   for (int round = 0; round < 100000; ++round)
   {
     if (pr->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
-    // Missing subface edges.
+    // Missing subface edges (in subface order: the order recovery tries them in).
     missingEdges.clear();
     {
-      std::unordered_set<uint64_t> seen;
+      if (!census.upToDate(ed, bc))
+        census.take(ed, bc);
+      std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
       for (int32_t f = 0; f < bc.capacity(); ++f)
       {
         if (!bc.alive(f))
@@ -1203,9 +1208,12 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
         for (int i = 0; i < 3; ++i)
         {
           const int32_t a = s[i], b = s[(i + 1) % 3];
-          if (!seen.insert(edgeKey(a, b)).second)
+          const int32_t id = census.edgeId(a, b); // -1: degenerate, never present
+          if (id >= 0 && seen[static_cast<size_t>(id)])
             continue;
-          if (ed.findEdge(a, b) < 0 && requiredEdge(a, b))
+          if (id >= 0)
+            seen[static_cast<size_t>(id)] = 1;
+          if ((id < 0 || !census.edgePresent(id)) && requiredEdge(a, b))
             missingEdges.push_back({ a, b });
         }
       }
@@ -1263,14 +1271,11 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     }
     // All edges present: facets.
     missingFaces.clear();
+    if (!census.upToDate(ed, bc))
+      census.take(ed, bc);
     for (int32_t f = 0; f < bc.capacity(); ++f)
-    {
-      if (!bc.alive(f))
-        continue;
-      const int32_t* s = bc.subface(f);
-      if (ed.findFace(s[0], s[1], s[2]) < 0)
+      if (bc.alive(f) && census.faceCode(f) < 0)
         missingFaces.push_back(f);
-    }
     if (firstFacets)
       rep.missingFacetsInitially = static_cast<int64_t>(missingFaces.size());
     firstFacets = false;
@@ -1351,7 +1356,9 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   // Final census.
   std::vector<int64_t> badEdges, badFaces;
   {
-    std::unordered_set<uint64_t> seen;
+    if (!census.upToDate(ed, bc))
+      census.take(ed, bc);
+    std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
     for (int32_t f = 0; f < bc.capacity(); ++f)
     {
       if (!bc.alive(f))
@@ -1361,7 +1368,11 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       for (int i = 0; i < 3; ++i)
       {
         const int32_t a = s[i], b = s[(i + 1) % 3];
-        if (seen.insert(edgeKey(a, b)).second && ed.findEdge(a, b) < 0)
+        const int32_t id = census.edgeId(a, b);
+        const bool firstSeen = id < 0 || !seen[static_cast<size_t>(id)];
+        if (id >= 0)
+          seen[static_cast<size_t>(id)] = 1;
+        if (firstSeen && (id < 0 || !census.edgePresent(id)))
         {
           ++rep.unrecoveredEdges;
           faceOk = false;
@@ -1369,7 +1380,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
             badEdges.push_back(bc.parent[f]);
         }
       }
-      if (faceOk && ed.findFace(s[0], s[1], s[2]) < 0)
+      if (faceOk && census.faceCode(f) < 0)
       {
         ++rep.unrecoveredFacets;
         if (badFaces.size() < 5)

@@ -152,6 +152,8 @@ public:
   int32_t locate(const double* p, int32_t start);
 
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
+  // Successful replace() calls: changes whenever the mesh does (BoundaryCensus::upToDate).
+  uint64_t edits = 0;
   // Edge removals attempted (successful or not): the unit of recovery work.
   uint64_t removalAttempts = 0;
   // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to
