@@ -42,8 +42,9 @@ void BoundaryConstraints::init(const int32_t* triangles, int32_t numTriangles)
   numAlive_ = 0;
   nonManifold_ = 0;
   numInput_ = numTriangles;
-  faces_.reserve(static_cast<size_t>(numTriangles) * 2);
-  edges_.reserve(static_cast<size_t>(numTriangles) * 3);
+  // A closed surface has 3/2 edges per triangle; room for some Steiner splits too.
+  faces_.reserve(static_cast<size_t>(numTriangles) * 9 / 8);
+  edges_.reserve(static_cast<size_t>(numTriangles) * 13 / 8);
   for (int32_t t = 0; t < numTriangles; ++t)
     addSubface(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], t);
 }
@@ -55,18 +56,19 @@ int32_t BoundaryConstraints::addSubface(int32_t a, int32_t b, int32_t c, int32_t
   verts.push_back(b);
   verts.push_back(c);
   parent.push_back(par);
-  faces_[TriKey(a, b, c)] = f;
+  faces_.insert(TriKey(a, b, c), f) = f;
   ++numAlive_;
   const int32_t e[3][2] = { { a, b }, { b, c }, { c, a } };
   for (auto& ed : e)
   {
-    auto it = edges_.find(edgeKey(ed[0], ed[1]));
-    if (it == edges_.end())
-      edges_.emplace(edgeKey(ed[0], ed[1]), std::array<int32_t, 2>{ { f, -1 } });
-    else if (it->second[0] < 0)
-      it->second[0] = f;
-    else if (it->second[1] < 0)
-      it->second[1] = f;
+    bool fresh = false;
+    std::array<int32_t, 2>& fs = edges_.insert(edgeKey(ed[0], ed[1]), { { f, -1 } }, &fresh);
+    if (fresh)
+      continue;
+    if (fs[0] < 0)
+      fs[0] = f;
+    else if (fs[1] < 0)
+      fs[1] = f;
     else
       ++nonManifold_;
   }
@@ -81,15 +83,16 @@ void BoundaryConstraints::removeSubface(int32_t f)
   faces_.erase(TriKey(v[0], v[1], v[2]));
   for (int i = 0; i < 3; ++i)
   {
-    auto it = edges_.find(edgeKey(v[i], v[(i + 1) % 3]));
-    if (it == edges_.end())
+    const uint64_t key = edgeKey(v[i], v[(i + 1) % 3]);
+    std::array<int32_t, 2>* fs = edges_.find(key);
+    if (!fs)
       continue;
-    if (it->second[0] == f)
-      it->second[0] = -1;
-    if (it->second[1] == f)
-      it->second[1] = -1;
-    if (it->second[0] < 0 && it->second[1] < 0)
-      edges_.erase(it);
+    if ((*fs)[0] == f)
+      (*fs)[0] = -1;
+    if ((*fs)[1] == f)
+      (*fs)[1] = -1;
+    if ((*fs)[0] < 0 && (*fs)[1] < 0)
+      edges_.erase(key);
   }
   parent[f] = -1;
   --numAlive_;
@@ -97,14 +100,13 @@ void BoundaryConstraints::removeSubface(int32_t f)
 
 int32_t BoundaryConstraints::findSubface(int32_t a, int32_t b, int32_t c) const
 {
-  auto it = faces_.find(TriKey(a, b, c));
-  return it == faces_.end() ? -1 : it->second;
+  const int32_t* f = faces_.find(TriKey(a, b, c));
+  return f ? *f : -1;
 }
 
 const std::array<int32_t, 2>* BoundaryConstraints::edgeFaces(int32_t a, int32_t b) const
 {
-  auto it = edges_.find(edgeKey(a, b));
-  return it == edges_.end() ? nullptr : &it->second;
+  return edges_.find(edgeKey(a, b));
 }
 
 // ------------------------------------------------------------------------------------------------

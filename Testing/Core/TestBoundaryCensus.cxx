@@ -1,11 +1,15 @@
 // BoundaryCensus (one sweep over the tets) against the per-item searches it replaces
-// (MeshEditor::findEdge / findFace).
+// (MeshEditor::findEdge / findFace), and the FlatHashMap behind BoundaryConstraints.
 #include "BoundaryCensus.h"
 #include "BoundaryRecovery.h"
 #include "Delaunay.h"
+#include "FlatHashMap.h"
 #include "MesherTestShapes.h"
 
 #include <gtest/gtest.h>
+
+#include <random>
+#include <unordered_map>
 
 using namespace volgrid;
 
@@ -133,4 +137,47 @@ TEST(BoundaryCensus, StaleAfterAnEditOrAConstraintChange)
   EXPECT_FALSE(census.upToDate(ed, su.bc));
   census.take(ed, su.bc);
   EXPECT_EQ(census.faceCode(0), -1); // dead subfaces are not looked for
+}
+
+TEST(FlatHashMap, AgreesWithUnorderedMap)
+{
+  // Keys from a small range: long probe runs, many erasures that must shift entries back.
+  struct Identity
+  {
+    uint64_t operator()(uint64_t k) const { return k; }
+  };
+  FlatHashMap<uint64_t, int, Identity> flat;
+  std::unordered_map<uint64_t, int> ref;
+  std::mt19937_64 rng(7);
+  for (int step = 0; step < 200000; ++step)
+  {
+    const uint64_t k = rng() % 3000;
+    switch (rng() % 3)
+    {
+      case 0:
+      {
+        bool fresh = false;
+        int& v = flat.insert(k, step, &fresh);
+        auto [it, refFresh] = ref.emplace(k, step);
+        ASSERT_EQ(fresh, refFresh);
+        ASSERT_EQ(v, it->second);
+        v = it->second = step;
+        break;
+      }
+      case 1:
+        ASSERT_EQ(flat.erase(k), ref.erase(k) == 1);
+        break;
+      default:
+      {
+        const int* v = flat.find(k);
+        auto it = ref.find(k);
+        ASSERT_EQ(v != nullptr, it != ref.end());
+        if (v)
+          ASSERT_EQ(*v, it->second);
+      }
+    }
+    ASSERT_EQ(flat.size(), ref.size());
+  }
+  for (auto& [k, v] : ref)
+    ASSERT_TRUE(flat.find(k) && *flat.find(k) == v);
 }
