@@ -54,7 +54,7 @@ inline void markEdges(int32_t* e, int32_t n, int32_t a, int32_t b, int32_t c)
 
 void BoundaryCensus::take(const MeshEditor& editor, const BoundaryConstraints& bc, bool withEdges)
 {
-  index(bc, editor.mesh);
+  index(bc.verts.data(), bc.capacity(), bc.parent.data(), editor.mesh.numVertices());
   sweep(editor.mesh, withEdges);
   edgesSwept_ = withEdges;
   mesh_ = &editor.mesh;
@@ -66,33 +66,43 @@ void BoundaryCensus::take(const MeshEditor& editor, const BoundaryConstraints& b
   bcAlive_ = bc.numAlive();
 }
 
+void BoundaryCensus::take(const TetMesh& mesh, const int32_t* triangles, int32_t count, bool withEdges)
+{
+  index(triangles, count, nullptr, mesh.numVertices());
+  sweep(mesh, withEdges);
+  edgesSwept_ = withEdges;
+  mesh_ = nullptr; // never up to date
+  bc_ = nullptr;
+}
+
 bool BoundaryCensus::upToDate(const MeshEditor& editor, const BoundaryConstraints& bc) const
 {
   return edgesSwept_ && mesh_ == &editor.mesh && bc_ == &bc && edits_ == editor.edits && tetCapacity_ == editor.mesh.tetCapacity() &&
     numTets_ == editor.mesh.numTets() && bcCapacity_ == bc.capacity() && bcAlive_ == bc.numAlive();
 }
 
-void BoundaryCensus::index(const BoundaryConstraints& bc, const TetMesh& mesh)
+void BoundaryCensus::index(const int32_t* verts, int32_t count, const int32_t* parent, int32_t numVertices)
 {
-  int32_t nrows = mesh.numVertices();
-  for (int32_t f = 0; f < bc.capacity(); ++f)
-    if (bc.alive(f))
+  auto alive = [&](int32_t f) { return !parent || parent[f] >= 0; };
+  int32_t nrows = numVertices;
+  for (int32_t f = 0; f < count; ++f)
+    if (alive(f))
       for (int k = 0; k < 3; ++k)
-        nrows = std::max(nrows, bc.subface(f)[k] + 1);
+        nrows = std::max(nrows, verts[3 * static_cast<size_t>(f) + k] + 1);
   const size_t n = static_cast<size_t>(nrows);
   // Counting sort of the edges (each listed by both its subfaces) by smallest vertex; degenerate subfaces
   // (a repeated vertex) are left out.
   std::vector<int32_t> edgeStart(n + 1, 0), faceCount(n, 0);
   auto sortedSubface = [&](int32_t f, int32_t& x, int32_t& y, int32_t& z) {
-    x = bc.subface(f)[0];
-    y = bc.subface(f)[1];
-    z = bc.subface(f)[2];
+    x = verts[3 * static_cast<size_t>(f)];
+    y = verts[3 * static_cast<size_t>(f) + 1];
+    z = verts[3 * static_cast<size_t>(f) + 2];
     sort3(x, y, z);
     return x >= 0 && x != y && y != z;
   };
   int32_t x, y, z;
-  for (int32_t f = 0; f < bc.capacity(); ++f)
-    if (bc.alive(f) && sortedSubface(f, x, y, z))
+  for (int32_t f = 0; f < count; ++f)
+    if (alive(f) && sortedSubface(f, x, y, z))
     {
       edgeStart[x + 1] += 2;
       edgeStart[y + 1] += 1;
@@ -103,8 +113,8 @@ void BoundaryCensus::index(const BoundaryConstraints& bc, const TetMesh& mesh)
   std::vector<int32_t> other(static_cast<size_t>(edgeStart[n]));
   {
     std::vector<int32_t> cursor(edgeStart.begin(), edgeStart.end() - 1);
-    for (int32_t f = 0; f < bc.capacity(); ++f)
-      if (bc.alive(f) && sortedSubface(f, x, y, z))
+    for (int32_t f = 0; f < count; ++f)
+      if (alive(f) && sortedSubface(f, x, y, z))
       {
         other[cursor[x]++] = y;
         other[cursor[x]++] = z;
@@ -114,7 +124,7 @@ void BoundaryCensus::index(const BoundaryConstraints& bc, const TetMesh& mesh)
   // Each row: distinct edge ends, then room for the subface quadruples.
   rows_.assign(n, Row{ 0, 0, 0 });
   data_.clear();
-  data_.reserve(other.size() / 2 + 4 * static_cast<size_t>(bc.numAlive()) + 4);
+  data_.reserve(other.size() / 2 + 4 * static_cast<size_t>(count) + 4);
   for (size_t v = 0; v < n; ++v)
   {
     Row& r = rows_[v];
@@ -129,9 +139,9 @@ void BoundaryCensus::index(const BoundaryConstraints& bc, const TetMesh& mesh)
     faceCount[v] = r.faces; // from now on: the next free quadruple of the row
   }
   data_.resize(data_.size() + 3, kEnd); // padding: the sweep reads edge entries four at a time
-  facePos_.assign(static_cast<size_t>(bc.capacity()), -1);
-  for (int32_t f = 0; f < bc.capacity(); ++f)
-    if (bc.alive(f) && sortedSubface(f, x, y, z))
+  facePos_.assign(static_cast<size_t>(count), -1);
+  for (int32_t f = 0; f < count; ++f)
+    if (alive(f) && sortedSubface(f, x, y, z))
     {
       int32_t* q = data_.data() + faceCount[x];
       q[0] = y;

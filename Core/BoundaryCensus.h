@@ -26,6 +26,9 @@ public:
   // Index the live subfaces of bc and sweep the live tets of the editor's mesh. Without edges only the
   // faces are looked for (edgePresent() is then false for all).
   void take(const MeshEditor& editor, const BoundaryConstraints& bc, bool withEdges = true);
+  // The same for a plain list of `count` triangles (3 vertex ids each; triangle t plays subface t), e.g.
+  // the input triangles once recovery is over. Never upToDate().
+  void take(const TetMesh& mesh, const int32_t* triangles, int32_t count, bool withEdges = true);
   // True when neither the mesh (MeshEditor::edits, tet counts) nor the constraints changed since a
   // take() with edges.
   bool upToDate(const MeshEditor& editor, const BoundaryConstraints& bc) const;
@@ -47,7 +50,8 @@ public:
   }
 
 private:
-  void index(const BoundaryConstraints& bc, const TetMesh& mesh);
+  // Subfaces 0..count-1 with vertices verts[3f..3f+2]; dead where parent[f] < 0 (parent may be null).
+  void index(const int32_t* verts, int32_t count, const int32_t* parent, int32_t numVertices);
   void sweep(const TetMesh& mesh, bool withEdges);
 
   // Row of vertex x: data_[rows_[x].begin .. rows_[x].faces) are the other ends b > x of its edges

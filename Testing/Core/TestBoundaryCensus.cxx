@@ -80,6 +80,23 @@ std::pair<int, int> expectCensusMatchesSearch(MeshEditor& ed, const BoundaryCons
       EXPECT_EQ(faces.faceCode(f), census.faceCode(f));
       EXPECT_FALSE(faces.edgePresent(faces.edgeId(bc.subface(f)[0], bc.subface(f)[1])));
     }
+  // A census of the live subfaces given as a plain triangle list answers the same.
+  std::vector<int32_t> tris, ids;
+  for (int32_t f = 0; f < bc.capacity(); ++f)
+    if (bc.alive(f))
+    {
+      tris.insert(tris.end(), bc.subface(f), bc.subface(f) + 3);
+      ids.push_back(f);
+    }
+  BoundaryCensus list;
+  list.take(ed.mesh, tris.data(), static_cast<int32_t>(ids.size()));
+  EXPECT_FALSE(list.upToDate(ed, bc));
+  for (size_t k = 0; k < ids.size(); ++k)
+  {
+    EXPECT_EQ(list.faceCode(static_cast<int32_t>(k)) >= 0, census.faceCode(ids[k]) >= 0);
+    const int32_t a = tris[3 * k], b = tris[3 * k + 1];
+    EXPECT_EQ(list.edgePresent(list.edgeId(a, b)), census.edgePresent(census.edgeId(a, b)));
+  }
   return { missingEdges, missingFaces };
 }
 
