@@ -42,9 +42,9 @@ void BoundaryConstraints::init(const int32_t* triangles, int32_t numTriangles)
   numAlive_ = 0;
   nonManifold_ = 0;
   numInput_ = numTriangles;
-  // A closed surface has 3/2 edges per triangle; room for some Steiner splits too.
-  faces_.reserve(static_cast<size_t>(numTriangles) * 9 / 8);
-  edges_.reserve(static_cast<size_t>(numTriangles) * 13 / 8);
+  // A closed surface has 3/2 edges per triangle (Steiner splits grow the maps when needed).
+  faces_.reserve(static_cast<size_t>(numTriangles));
+  edges_.reserve(static_cast<size_t>(numTriangles) * 3 / 2);
   for (int32_t t = 0; t < numTriangles; ++t)
     addSubface(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], t);
 }
