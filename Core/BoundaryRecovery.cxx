@@ -2,6 +2,7 @@
 
 #include "Quality.h"
 
+#include "BoundaryCensus.h"
 #include "FacetRecovery.h"
 #include "Predicates.h"
 
@@ -41,8 +42,9 @@ void BoundaryConstraints::init(const int32_t* triangles, int32_t numTriangles)
   numAlive_ = 0;
   nonManifold_ = 0;
   numInput_ = numTriangles;
-  faces_.reserve(static_cast<size_t>(numTriangles) * 2);
-  edges_.reserve(static_cast<size_t>(numTriangles) * 3);
+  // A closed surface has 3/2 edges per triangle (Steiner splits grow the maps when needed).
+  faces_.reserve(static_cast<size_t>(numTriangles));
+  edges_.reserve(static_cast<size_t>(numTriangles) * 3 / 2);
   for (int32_t t = 0; t < numTriangles; ++t)
     addSubface(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], t);
 }
@@ -54,18 +56,19 @@ int32_t BoundaryConstraints::addSubface(int32_t a, int32_t b, int32_t c, int32_t
   verts.push_back(b);
   verts.push_back(c);
   parent.push_back(par);
-  faces_[TriKey(a, b, c)] = f;
+  faces_.insert(TriKey(a, b, c), f) = f;
   ++numAlive_;
   const int32_t e[3][2] = { { a, b }, { b, c }, { c, a } };
   for (auto& ed : e)
   {
-    auto it = edges_.find(edgeKey(ed[0], ed[1]));
-    if (it == edges_.end())
-      edges_.emplace(edgeKey(ed[0], ed[1]), std::array<int32_t, 2>{ { f, -1 } });
-    else if (it->second[0] < 0)
-      it->second[0] = f;
-    else if (it->second[1] < 0)
-      it->second[1] = f;
+    bool fresh = false;
+    std::array<int32_t, 2>& fs = edges_.insert(edgeKey(ed[0], ed[1]), { { f, -1 } }, &fresh);
+    if (fresh)
+      continue;
+    if (fs[0] < 0)
+      fs[0] = f;
+    else if (fs[1] < 0)
+      fs[1] = f;
     else
       ++nonManifold_;
   }
@@ -80,15 +83,16 @@ void BoundaryConstraints::removeSubface(int32_t f)
   faces_.erase(TriKey(v[0], v[1], v[2]));
   for (int i = 0; i < 3; ++i)
   {
-    auto it = edges_.find(edgeKey(v[i], v[(i + 1) % 3]));
-    if (it == edges_.end())
+    const uint64_t key = edgeKey(v[i], v[(i + 1) % 3]);
+    std::array<int32_t, 2>* fs = edges_.find(key);
+    if (!fs)
       continue;
-    if (it->second[0] == f)
-      it->second[0] = -1;
-    if (it->second[1] == f)
-      it->second[1] = -1;
-    if (it->second[0] < 0 && it->second[1] < 0)
-      edges_.erase(it);
+    if ((*fs)[0] == f)
+      (*fs)[0] = -1;
+    if ((*fs)[1] == f)
+      (*fs)[1] = -1;
+    if ((*fs)[0] < 0 && (*fs)[1] < 0)
+      edges_.erase(key);
   }
   parent[f] = -1;
   --numAlive_;
@@ -96,14 +100,13 @@ void BoundaryConstraints::removeSubface(int32_t f)
 
 int32_t BoundaryConstraints::findSubface(int32_t a, int32_t b, int32_t c) const
 {
-  auto it = faces_.find(TriKey(a, b, c));
-  return it == faces_.end() ? -1 : it->second;
+  const int32_t* f = faces_.find(TriKey(a, b, c));
+  return f ? *f : -1;
 }
 
 const std::array<int32_t, 2>* BoundaryConstraints::edgeFaces(int32_t a, int32_t b) const
 {
-  auto it = edges_.find(edgeKey(a, b));
-  return it == edges_.end() ? nullptr : &it->second;
+  return edges_.find(edgeKey(a, b));
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -365,6 +368,7 @@ bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<
   }
   if (created)
     *created = tmpTets_;
+  ++edits;
   return true;
 }
 
@@ -1187,14 +1191,17 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     return fallback[static_cast<size_t>(bc.parent[f0])] != 0;
   };
   FacetCavityStats cavityStats;
+  BoundaryCensus census;
   for (int round = 0; round < 100000; ++round)
   {
     if (pr->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
-    // Missing subface edges.
+    // Missing subface edges (in subface order: the order recovery tries them in).
     missingEdges.clear();
     {
-      std::unordered_set<uint64_t> seen;
+      if (!census.upToDate(ed, bc))
+        census.take(ed, bc);
+      std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
       for (int32_t f = 0; f < bc.capacity(); ++f)
       {
         if (!bc.alive(f))
@@ -1203,9 +1210,12 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
         for (int i = 0; i < 3; ++i)
         {
           const int32_t a = s[i], b = s[(i + 1) % 3];
-          if (!seen.insert(edgeKey(a, b)).second)
+          const int32_t id = census.edgeId(a, b); // -1: degenerate, never present
+          if (id >= 0 && seen[static_cast<size_t>(id)])
             continue;
-          if (ed.findEdge(a, b) < 0 && requiredEdge(a, b))
+          if (id >= 0)
+            seen[static_cast<size_t>(id)] = 1;
+          if ((id < 0 || !census.edgePresent(id)) && requiredEdge(a, b))
             missingEdges.push_back({ a, b });
         }
       }
@@ -1263,14 +1273,11 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     }
     // All edges present: facets.
     missingFaces.clear();
+    if (!census.upToDate(ed, bc))
+      census.take(ed, bc);
     for (int32_t f = 0; f < bc.capacity(); ++f)
-    {
-      if (!bc.alive(f))
-        continue;
-      const int32_t* s = bc.subface(f);
-      if (ed.findFace(s[0], s[1], s[2]) < 0)
+      if (bc.alive(f) && census.faceCode(f) < 0)
         missingFaces.push_back(f);
-    }
     if (firstFacets)
       rep.missingFacetsInitially = static_cast<int64_t>(missingFaces.size());
     firstFacets = false;
@@ -1351,7 +1358,9 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   // Final census.
   std::vector<int64_t> badEdges, badFaces;
   {
-    std::unordered_set<uint64_t> seen;
+    if (!census.upToDate(ed, bc))
+      census.take(ed, bc);
+    std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
     for (int32_t f = 0; f < bc.capacity(); ++f)
     {
       if (!bc.alive(f))
@@ -1361,7 +1370,11 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       for (int i = 0; i < 3; ++i)
       {
         const int32_t a = s[i], b = s[(i + 1) % 3];
-        if (seen.insert(edgeKey(a, b)).second && ed.findEdge(a, b) < 0)
+        const int32_t id = census.edgeId(a, b);
+        const bool firstSeen = id < 0 || !seen[static_cast<size_t>(id)];
+        if (id >= 0)
+          seen[static_cast<size_t>(id)] = 1;
+        if (firstSeen && (id < 0 || !census.edgePresent(id)))
         {
           ++rep.unrecoveredEdges;
           faceOk = false;
@@ -1369,7 +1382,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
             badEdges.push_back(bc.parent[f]);
         }
       }
-      if (faceOk && ed.findFace(s[0], s[1], s[2]) < 0)
+      if (faceOk && census.faceCode(f) < 0)
       {
         ++rep.unrecoveredFacets;
         if (badFaces.size() < 5)

@@ -23,6 +23,7 @@
 // 60 per initially missing edge + 20000) that keeps hopeless cases to seconds.
 #pragma once
 
+#include "FlatHashMap.h"
 #include "Progress.h"
 #include "Status.h"
 #include "TetMesh.h"
@@ -84,7 +85,7 @@ public:
   int32_t addSubface(int32_t a, int32_t b, int32_t c, int32_t parent);
   void removeSubface(int32_t f);
   int32_t findSubface(int32_t a, int32_t b, int32_t c) const; // -1 when not a (live) subface
-  bool isEdge(int32_t a, int32_t b) const { return edges_.count(edgeKey(a, b)) != 0; }
+  bool isEdge(int32_t a, int32_t b) const { return edges_.contains(edgeKey(a, b)); }
   // The (at most two) live subfaces using edge ab; -1 entries are empty. nullptr when not an edge.
   const std::array<int32_t, 2>* edgeFaces(int32_t a, int32_t b) const;
 
@@ -100,8 +101,12 @@ public:
   std::vector<int32_t> parent; // input triangle id, -1 = removed
 
 private:
-  std::unordered_map<TriKey, int32_t, TriKeyHash> faces_;
-  std::unordered_map<uint64_t, std::array<int32_t, 2>> edges_;
+  struct EdgeKeyHash
+  {
+    uint64_t operator()(uint64_t k) const { return k; } // FlatHashMap mixes the bits
+  };
+  FlatHashMap<TriKey, int32_t, TriKeyHash> faces_;
+  FlatHashMap<uint64_t, std::array<int32_t, 2>, EdgeKeyHash> edges_;
   int32_t numAlive_ = 0;
   int32_t numInput_ = 0;
   int64_t nonManifold_ = 0;
@@ -152,6 +157,8 @@ public:
   int32_t locate(const double* p, int32_t start);
 
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
+  // Successful replace() calls: changes whenever the mesh does (BoundaryCensus::upToDate).
+  uint64_t edits = 0;
   // Edge removals attempted (successful or not): the unit of recovery work.
   uint64_t removalAttempts = 0;
   // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to

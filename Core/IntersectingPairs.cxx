@@ -17,8 +17,8 @@ struct BVH
   struct Node
   {
     double lo[3], hi[3];
-    int32_t left = -1, right = -1; // children, or -1 for a leaf
-    int32_t start = 0, count = 0;  // leaf range in `items`
+    int32_t left = -1, right = -1; // children (right = left + 1), or -1 for a leaf
+    int32_t start = 0, count = 0;  // range in `items`
   };
   std::vector<Node> nodes;
   std::vector<int32_t> items;
@@ -65,10 +65,10 @@ struct BVH
         }
       }
       const int32_t count = job.end - job.start;
+      node.start = job.start;
+      node.count = count;
       if (count <= 4)
       {
-        node.start = job.start;
-        node.count = count;
         nodes[job.node] = node;
         continue;
       }
@@ -97,42 +97,68 @@ struct BVH
     }
   }
 
-  // Calls f(j) for every item whose closed box overlaps `b`.
-  template <class F>
-  void query(const double* b, std::vector<int32_t>& stack, F&& f) const
+  static bool overlap(const double* alo, const double* ahi, const double* blo, const double* bhi)
   {
-    if (nodes.empty())
-    {
-      return;
-    }
+    return alo[0] <= bhi[0] && ahi[0] >= blo[0] && alo[1] <= bhi[1] && ahi[1] >= blo[1] && alo[2] <= bhi[2] &&
+      ahi[2] >= blo[2];
+  }
+
+  // Calls f(i, j), i < j, once for every pair of distinct items whose closed boxes overlap, found below the
+  // node pair (a, b) (a == b: pairs within one node). Traversing node pairs instead of querying the tree
+  // once per item visits each overlapping pair of subtrees once rather than twice, from its top.
+  template <class F>
+  void pairs(int32_t a0, int32_t b0, std::vector<std::pair<int32_t, int32_t>>& stack, F&& f) const
+  {
     stack.clear();
-    stack.push_back(0);
+    stack.push_back({ a0, b0 });
     while (!stack.empty())
     {
-      const Node& n = nodes[stack.back()];
+      const auto [a, b] = stack.back();
       stack.pop_back();
-      if (n.lo[0] > b[3] || n.hi[0] < b[0] || n.lo[1] > b[4] || n.hi[1] < b[1] || n.lo[2] > b[5] || n.hi[2] < b[2])
+      const Node& na = nodes[a];
+      const Node& nb = nodes[b];
+      if (a == b)
       {
+        if (na.left < 0)
+        {
+          for (int32_t i = na.start; i < na.start + na.count; ++i)
+            for (int32_t j = i + 1; j < na.start + na.count; ++j)
+              leafPair(items[i], items[j], f);
+          continue;
+        }
+        stack.push_back({ na.left, na.left });
+        stack.push_back({ na.right, na.right });
+        stack.push_back({ na.left, na.right });
         continue;
       }
-      if (n.left < 0)
+      if (!overlap(na.lo, na.hi, nb.lo, nb.hi))
+        continue;
+      if (na.left < 0 && nb.left < 0)
       {
-        for (int32_t i = n.start; i < n.start + n.count; ++i)
-        {
-          const int32_t j = items[i];
-          const double* c = boxes->data() + 6 * size_t(j);
-          if (c[0] <= b[3] && c[3] >= b[0] && c[1] <= b[4] && c[4] >= b[1] && c[2] <= b[5] && c[5] >= b[2])
-          {
-            f(j);
-          }
-        }
+        for (int32_t i = na.start; i < na.start + na.count; ++i)
+          for (int32_t j = nb.start; j < nb.start + nb.count; ++j)
+            leafPair(items[i], items[j], f);
+      }
+      else if (nb.left < 0 || (na.left >= 0 && na.count >= nb.count))
+      {
+        stack.push_back({ na.left, b });
+        stack.push_back({ na.right, b });
       }
       else
       {
-        stack.push_back(n.left);
-        stack.push_back(n.right);
+        stack.push_back({ a, nb.left });
+        stack.push_back({ a, nb.right });
       }
     }
+  }
+
+  template <class F>
+  void leafPair(int32_t t, int32_t u, F&& f) const
+  {
+    const double* bt = boxes->data() + 6 * size_t(t);
+    const double* bu = boxes->data() + 6 * size_t(u);
+    if (overlap(bt, bt + 3, bu, bu + 3))
+      f(std::min(t, u), std::max(t, u));
   }
 };
 
@@ -165,29 +191,47 @@ std::vector<std::pair<int32_t, int32_t>> findIntersectingPairs(const SurfaceMesh
     nthreads = std::min<int>(nthreads, static_cast<int>(hw));
   }
   nthreads = std::max(1, std::min(nthreads, 16));
+  // Node pairs to traverse, split a few levels down so that the threads share the work.
+  std::vector<std::pair<int32_t, int32_t>> tasks;
+  if (!bvh.nodes.empty())
+    tasks.push_back({ 0, 0 });
+  for (size_t k = 0; k < tasks.size() && tasks.size() < 64 * size_t(nthreads);)
+  {
+    const auto [a, b] = tasks[k];
+    const BVH::Node& na = bvh.nodes[a];
+    const BVH::Node& nb = bvh.nodes[b];
+    if (na.left < 0 || nb.left < 0)
+    {
+      ++k;
+      continue;
+    }
+    // Replace the task by its children's pairs (as the traversal would).
+    tasks.erase(tasks.begin() + static_cast<std::ptrdiff_t>(k));
+    if (a == b)
+    {
+      tasks.push_back({ na.left, na.left });
+      tasks.push_back({ na.right, na.right });
+      tasks.push_back({ na.left, na.right });
+    }
+    else if (BVH::overlap(na.lo, na.hi, nb.lo, nb.hi))
+      for (int32_t x : { na.left, na.right })
+        for (int32_t y : { nb.left, nb.right })
+          tasks.push_back({ x, y });
+  }
   std::vector<std::vector<std::pair<int32_t, int32_t>>> found(nthreads);
   auto work = [&](int w) {
-    std::vector<int32_t> stack;
-    for (size_t i = w; i < candidates.size(); i += nthreads)
-    {
-      const int32_t t = candidates[i];
-      const int32_t* tv = mesh.triangle(t);
-      const double* p[3] = { mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]) };
-      const int32_t ip[3] = { canon[tv[0]], canon[tv[1]], canon[tv[2]] };
-      bvh.query(boxes.data() + 6 * size_t(t), stack, [&](int32_t u) {
-        if (u <= t)
-        {
-          return;
-        }
+    std::vector<std::pair<int32_t, int32_t>> stack;
+    for (size_t k = w; k < tasks.size(); k += nthreads)
+      bvh.pairs(tasks[k].first, tasks[k].second, stack, [&](int32_t t, int32_t u) {
+        const int32_t* tv = mesh.triangle(t);
         const int32_t* uv = mesh.triangle(u);
+        const double* p[3] = { mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]) };
         const double* q[3] = { mesh.point(uv[0]), mesh.point(uv[1]), mesh.point(uv[2]) };
+        const int32_t ip[3] = { canon[tv[0]], canon[tv[1]], canon[tv[2]] };
         const int32_t iq[3] = { canon[uv[0]], canon[uv[1]], canon[uv[2]] };
         if (trianglesIntersect(p, ip, q, iq))
-        {
           found[w].emplace_back(t, u);
-        }
       });
-    }
   };
   if (nthreads == 1)
   {

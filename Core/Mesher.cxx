@@ -1,5 +1,6 @@
 #include "Mesher.h"
 
+#include "BoundaryCensus.h"
 #include "BoundaryCheck.h"
 #include "BoundaryRecovery.h"
 #include "Delaunay.h"
@@ -253,11 +254,13 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     result.tetRegion.push_back(regions.tetRegion[t]);
   });
   // Boundary triangles: input triangles that are faces of the mesh (all of them unless keep-all
-  // interfaces... which are faces too).
+  // interfaces... which are faces too), found by one sweep over the tets.
+  BoundaryCensus inputFaces;
+  inputFaces.take(mesh, surf.triangles.data(), NT, /*withEdges=*/false);
   for (int32_t t = 0; t < NT; ++t)
   {
     const int32_t* v = surf.triangle(t);
-    if (ed.findFace(v[0], v[1], v[2]) < 0)
+    if (inputFaces.faceCode(t) < 0)
       continue;
     result.boundaryTriangles.insert(result.boundaryTriangles.end(), v, v + 3);
     result.boundaryInputTriangle.push_back(t);

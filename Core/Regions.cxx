@@ -1,5 +1,7 @@
 #include "Regions.h"
 
+#include "BoundaryCensus.h"
+
 #include <algorithm>
 #include <string>
 
@@ -36,15 +38,17 @@ Status removeExterior(MeshEditor& ed, const BoundaryConstraints& bc, RegionRule 
   Progress* pr = progress ? progress : &silent;
   const int32_t cap = m.tetCapacity();
   res = RegionResult();
-  // Boundary faces of each tet (bit i = face i).
+  // Boundary faces of each tet (bit i = face i), located by one sweep over the tets.
+  BoundaryCensus census;
+  census.take(ed, bc, /*withEdges=*/false);
   std::vector<uint8_t> mask(static_cast<size_t>(cap), 0);
   for (int32_t f = 0; f < bc.capacity(); ++f)
   {
     if (!bc.alive(f))
       continue;
-    const int32_t* s = bc.subface(f);
-    int i = -1;
-    const int32_t t = ed.findFace(s[0], s[1], s[2], &i);
+    const int32_t code = census.faceCode(f);
+    const int32_t t = code < 0 ? -1 : code >> 2;
+    const int i = code & 3;
     if (t < 0)
       return Status::failure(ErrorKind::InternalError,
         "Exterior removal: boundary triangle " + std::to_string(bc.parent[f]) + " is not a face of the mesh.",

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # make bench, section 3: boundary recovery and exterior removal, VolGrid vs TetGen -pY, on bunny00.off
 # (75k triangles) and the sphere-in-sphere far-field domain. TetGen's stage timings come from its -V
-# output ("Boundary recovery seconds", "Exterior tets removal seconds"); VolGrid's from its statistics.
+# output ("Boundary recovery seconds", "Exterior tets removal seconds"); VolGrid's from its statistics:
+# recovery = building the boundary constraints + recovery + boundary Steiner point removal (TetGen reports
+# building its subfaces and segments apart, as "Surface mesh seconds", and that is NOT added to its side),
+# exterior = exterior removal. Neither side's "Delaunay seconds" is counted.
 #   scripts/bench_mesher.sh [BUILD_DIR]
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
