@@ -598,6 +598,158 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   return InsertStatus::Inserted;
 }
 
+double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality,
+  bool commit, std::vector<int32_t>* created, int maxCavity)
+{
+  if (start < 0 || mesh.isFree(start))
+    return -3;
+  if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
+    vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
+  // Seed: start, or the shortest path of tets (across unconstrained faces, at most 4 steps) from start to
+  // mustReplace.
+  cavity_.assign(1, start);
+  if (mustReplace >= 0 && mustReplace != start)
+  {
+    const uint32_t seen = newStamp();
+    bfsTets_.assign(1, { start, -1 });
+    stamp_[start] = seen;
+    int32_t found = -1;
+    for (size_t k = 0, levelEnd = 1, depth = 0; k < bfsTets_.size() && found < 0; ++k)
+    {
+      if (k == levelEnd)
+      {
+        levelEnd = bfsTets_.size();
+        if (++depth == 4)
+          break;
+      }
+      const int32_t t = bfsTets_[k].first;
+      for (int i = 0; i < 4 && found < 0; ++i)
+      {
+        if (isConstrainedFace(t, i))
+          continue;
+        const int32_t u = mesh.neighbor(t, i);
+        if (stamp_[u] == seen)
+          continue;
+        stamp_[u] = seen;
+        bfsTets_.push_back({ u, static_cast<int32_t>(k) });
+        if (u == mustReplace)
+          found = static_cast<int32_t>(bfsTets_.size() - 1);
+      }
+    }
+    if (found < 0)
+      return -3;
+    cavity_.clear();
+    for (int32_t k = found; k >= 0; k = bfsTets_[k].second)
+      cavity_.push_back(bfsTets_[k].first);
+  }
+  const uint32_t s = newStamp();
+  for (int32_t t : cavity_)
+    stamp_[t] = s;
+  double bestQ = -3;
+  bestCavity_.clear();
+  for (int step = 0; step < maxCavity; ++step)
+  {
+    // The cone over the cavity's boundary faces: its worst tet, and whether it is valid.
+    double qMin = 2, qGrow = 3;
+    int32_t growT = -1;
+    int growI = -1;
+    bool valid = true;
+    for (int32_t t : cavity_)
+    {
+      const int32_t* w = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+      {
+        const bool constrained = isConstrainedFace(t, i);
+        if (!constrained && stamp_[mesh.neighbor(t, i)] == s)
+          continue;
+        std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+        q[i] = v;
+        double qc = -1;
+        if (predicates::orient3dInline(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3])) > 0)
+          qc = tetSineQuality(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3]));
+        else
+          valid = false;
+        for (int k = 0; k < 4; ++k)
+          if (k != i)
+            vstamp_[w[k]] = 1;
+        qMin = std::min(qMin, qc);
+        // Grow across the worst unconstrained face.
+        if (!constrained && qc < qGrow)
+        {
+          qGrow = qc;
+          growT = t;
+          growI = i;
+        }
+      }
+    }
+    for (int32_t t : cavity_)
+    {
+      const int32_t* w = mesh.vertices(t);
+      for (int k = 0; k < 4; ++k)
+        valid &= vstamp_[w[k]] == 1; // else the vertex would be swallowed
+    }
+    for (int32_t t : cavity_)
+    {
+      const int32_t* w = mesh.vertices(t);
+      for (int k = 0; k < 4; ++k)
+        vstamp_[w[k]] = 0;
+    }
+    if (valid && qMin > bestQ)
+    {
+      bestQ = qMin;
+      bestCavity_ = cavity_;
+    }
+    if (growT < 0)
+      break;
+    const int32_t u = mesh.neighbor(growT, growI);
+    stamp_[u] = s;
+    cavity_.push_back(u);
+  }
+  for (int32_t t : cavity_)
+    stamp_[t] = 0;
+  if (bestQ == -3)
+    return -3;
+  double qOld = 2;
+  bool replaces = mustReplace < 0;
+  for (int32_t t : bestCavity_)
+  {
+    const int32_t* w = mesh.vertices(t);
+    qOld = std::min(qOld, tetSineQuality(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3])));
+    replaces |= t == mustReplace;
+  }
+  if (!replaces)
+    return -3;
+  if (replacedQuality)
+    *replacedQuality = qOld;
+  if (commit)
+  {
+    // The cone's tets and their outer links, as insertPoint() builds them, then the common commit.
+    const uint32_t c = newStamp();
+    cavity_ = bestCavity_;
+    for (int32_t t : cavity_)
+      stamp_[t] = c;
+    newTets_.clear();
+    outerCode_.clear();
+    outerFace_.clear();
+    for (int32_t t : cavity_)
+    {
+      const int32_t* w = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+      {
+        if (!isConstrainedFace(t, i) && stamp_[mesh.neighbor(t, i)] == c)
+          continue;
+        std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+        q[i] = v;
+        newTets_.push_back(q);
+        outerCode_.push_back(mesh.neighborCode(t, i));
+        outerFace_.push_back(i);
+      }
+    }
+    commitInsertion(v, created);
+  }
+  return bestQ;
+}
+
 void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
 {
   // The cone from v over the cavity boundary: new tet k replaces v at position outerFace_[k] of a cavity
