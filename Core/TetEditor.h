@@ -161,6 +161,14 @@ private:
   std::vector<FaceEntry> faces_;
   std::vector<int32_t> cavity_, queue_, bfaces_, vstamp_, bestCavity_;
   std::vector<std::pair<int32_t, int32_t>> bfsTets_; // (tet, index of its parent)
+  struct ConeFace
+  {
+    int32_t tet;
+    int face;
+    bool constrained;
+    double quality; // of the tet from the new vertex over this face; -1 when not strictly positive
+  };
+  std::vector<ConeFace> cone_;
   std::vector<std::array<int32_t, 4>> newTets_;
   std::vector<int32_t> outerCode_, outerFace_;
   std::vector<std::pair<uint64_t, int32_t>> edgeSlots_;
