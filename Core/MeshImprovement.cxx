@@ -176,7 +176,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
       if (start < 0)
         return -3.0;
       double replaced = 2;
-      const double q = editor.qualityInsertion(nv, start, t, &replaced, false);
+      const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24);
       return q > replaced ? q : -3.0;
     };
     double best = -3;
@@ -194,7 +194,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     {
       static const double dirs[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
       double step = 0.2 * lmean;
-      for (int it = 0; it < 48 && step > 0.01 * lmean; ++it)
+      for (int it = 0; it < 12 && step > 0.01 * lmean; ++it)
       {
         bool moved = false;
         for (const auto& d : dirs)
@@ -226,6 +226,17 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     mesh.points.resize(mesh.points.size() - 3); // the last vertex, used by no tet
   }
   return inserted;
+}
+
+// The worst tet's min(theta_min, 180 - theta_max) in degrees.
+double worstSineDegrees(const TetMesh& mesh)
+{
+  double q = 2;
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    q = std::min(q, tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])));
+  });
+  return sineQualityToDegrees(q);
 }
 
 // A sizing field sampled on an adaptive octree over a box, with trilinear interpolation in the leaves.
@@ -559,6 +570,27 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       if (!s.ok())
         return s;
       if (stats.after.minDihedral < minBefore + 0.1)
+        break;
+    }
+    // Beyond the target the mesh's minimum is decided by its few worst tets: while it pays, aim a little
+    // above the current worst (flips, smoothing and splitting touch only the tets below the aim and accept
+    // strict improvements only), so a mesh already past the target still gets better where it is worst.
+    for (int round = 0; round < options.floorRounds; ++round)
+    {
+      if (progress && progress->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+      const double worst = worstSineDegrees(mesh);
+      if (!(worst > 0) || worst >= 60)
+        break;
+      one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+      s = optimise(2);
+      if (!s.ok())
+        return s;
+      stats.splitPoints += splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 64);
+      s = optimise(1);
+      if (!s.ok())
+        return s;
+      if (worstSineDegrees(mesh) < worst + 0.05)
         break;
     }
     stats.secondsOptimization = since(t0);

@@ -70,6 +70,9 @@ struct ImprovementOptions
   // Rounds of splitting the tets still below the target by a point at their circumcentre (or centroid),
   // each followed by optimisation (0 = no point added by the quality stage).
   int splitRounds = 3;
+  // Rounds aimed 2 degrees above the current worst tet once the target is met or no longer improves
+  // (0 = stop at the target).
+  int floorRounds = 4;
 };
 
 struct ImprovementStatistics
