@@ -239,6 +239,17 @@ double worstSineDegrees(const TetMesh& mesh)
   return sineQualityToDegrees(q);
 }
 
+int64_t countBelow(const TetMesh& mesh, double degrees)
+{
+  const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  int64_t n = 0;
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    n += tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < qT;
+  });
+  return n;
+}
+
 // A sizing field sampled on an adaptive octree over a box, with trilinear interpolation in the leaves.
 // Field points query the size at tet centroids in an order that jumps around the domain, and each query
 // of the background interpolant walks its mesh from the previous one; the octree is built with coherent
@@ -583,6 +594,9 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       if (!(worst > 0) || worst >= 60)
         break;
       one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+      // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
+      if (countBelow(mesh, one.targetDegrees) > std::max<int64_t>(64, mesh.numTets() / 200))
+        break;
       s = optimise(2);
       if (!s.ok())
         return s;
