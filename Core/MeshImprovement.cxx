@@ -168,6 +168,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     // Score a position: the worst new tet, when the cavity replaces t and beats what it replaces.
     const int32_t nv = mesh.addPoint(cand[0].data()); // coordinates overwritten below (p may move)
     double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
+    double best = -3; // best score so far: positions that cannot beat it are pruned
     auto score = [&](const double* y) {
       if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
         return -3.0;
@@ -176,10 +177,9 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
       if (start < 0)
         return -3.0;
       double replaced = 2;
-      const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24);
+      const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24, best);
       return q > replaced ? q : -3.0;
     };
-    double best = -3;
     std::array<double, 3> at{};
     for (const auto& c : cand)
     {

@@ -642,7 +642,7 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
 }
 
 double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality,
-  bool commit, std::vector<int32_t>* created, int maxCavity)
+  bool commit, std::vector<int32_t>* created, int maxCavity, double mustBeat)
 {
   if (start < 0 || mesh.isFree(start))
     return -3;
@@ -726,30 +726,38 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
         qGrow = f.quality;
         growK = static_cast<int>(k);
       }
-      const int32_t* w = mesh.vertices(f.tet);
-      for (int m = 0; m < 4; ++m)
-        if (m != f.face)
-          vstamp_[w[m]] = 1;
     }
-    for (int32_t t : cavity_)
+    const double bar = std::max(bestQ, mustBeat);
+    if (valid && qMin > bar)
     {
-      const int32_t* w = mesh.vertices(t);
-      for (int m = 0; m < 4; ++m)
-        valid &= vstamp_[w[m]] == 1;
-    }
-    for (int32_t t : cavity_)
-    {
-      const int32_t* w = mesh.vertices(t);
-      for (int m = 0; m < 4; ++m)
-        vstamp_[w[m]] = 0;
-    }
-    if (valid && qMin > bestQ)
-    {
-      bestQ = qMin;
-      bestCavity_ = cavity_;
+      // Every cavity vertex must be on the cone (else it would be swallowed).
+      for (const ConeFace& f : cone_)
+      {
+        const int32_t* w = mesh.vertices(f.tet);
+        for (int m = 0; m < 4; ++m)
+          if (m != f.face)
+            vstamp_[w[m]] = 1;
+      }
+      for (int32_t t : cavity_)
+      {
+        const int32_t* w = mesh.vertices(t);
+        for (int m = 0; m < 4; ++m)
+          valid &= vstamp_[w[m]] == 1;
+      }
+      for (int32_t t : cavity_)
+      {
+        const int32_t* w = mesh.vertices(t);
+        for (int m = 0; m < 4; ++m)
+          vstamp_[w[m]] = 0;
+      }
+      if (valid)
+      {
+        bestQ = qMin;
+        bestCavity_ = cavity_;
+      }
     }
     // Constrained faces stay on the boundary of every larger cavity: no growth can beat their worst tet.
-    if (growK < 0 || qConstrained <= bestQ)
+    if (growK < 0 || qConstrained <= std::max(bestQ, mustBeat))
       break;
     // Grow across the worst unconstrained face.
     const int32_t u = mesh.neighbor(cone_[growK].tet, cone_[growK].face);

@@ -139,8 +139,9 @@ public:
   // kept. Returns that worst new quality (tetSineQuality), or -3 when there is no valid cavity or when
   // mustReplace >= 0 is not in it; replacedQuality (optional) receives the worst replaced tet's quality.
   // commit = false leaves the mesh untouched (to compare positions); true inserts v with that cavity.
+  // mustBeat: only cavities whose worst new tet is above it count (-3 when none; prunes the search).
   double qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,
-    std::vector<int32_t>* created = nullptr, int maxCavity = 24);
+    std::vector<int32_t>* created = nullptr, int maxCavity = 24, double mustBeat = -3);
 
   uint64_t replacements = 0;
 
