@@ -88,8 +88,10 @@ bool circumcentre(const double* const p[4], double* out)
 // one. The point goes in only when its cavity holds the bad tet and its worst new tet beats both the bad
 // tet and the worst tet it replaces: every insertion is a strict local improvement. Constrained faces are
 // never crossed, so the boundary is untouched. Returns the number of points inserted.
+// speculative: the worst tet gets the best point found even when that does not improve it at once (the
+// caller optimises around it and keeps the result only if the mesh's worst tet got better).
 int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
-  double degrees, int64_t maxPoints)
+  double degrees, int64_t maxPoints, bool speculative = false, size_t skip = 0)
 {
   TetEditor editor(mesh, constraints, labels);
   editor.rebuildVertexMap();
@@ -105,6 +107,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
       bad.emplace_back(q, t);
   });
   std::sort(bad.begin(), bad.end());
+  bad.erase(bad.begin(), bad.begin() + static_cast<std::ptrdiff_t>(std::min(skip, bad.size())));
   int64_t inserted = 0;
   std::vector<std::array<double, 3>> cand;
   for (const auto& b : bad)
@@ -178,7 +181,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
         return -3.0;
       double replaced = 2;
       const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24, best);
-      return q > replaced ? q : -3.0;
+      return q > replaced || (speculative && q > 0) ? q : -3.0;
     };
     std::array<double, 3> at{};
     for (const auto& c : cand)
@@ -213,7 +216,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
           step *= 0.5;
       }
     }
-    if (best > qt && best > 0)
+    if (best > 0 && (best > qt || speculative))
     {
       std::copy(at.begin(), at.end(), x);
       const int32_t start = editor.locate(x, t);
@@ -605,6 +608,39 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       if (!s.ok())
         return s;
       if (worstSineDegrees(mesh) < worst + 0.05)
+        break;
+    }
+    // Small meshes (a few boundary triangles, few or no field points) often end as a tie with any
+    // Delaunay-based mesher: no single flip, move or improving insertion helps. Speculative rounds insert
+    // the best point found for the worst tet, optimise around it, and keep the result only when the
+    // mesh's worst tet got better (else the mesh is restored: a copy is cheap at this size, and the next
+    // bad tet is tried).
+    for (int round = 0, skip = 0; round < options.speculativeRounds && mesh.numTets() <= 5000; ++round)
+    {
+      const double worst = worstSineDegrees(mesh);
+      if (!(worst > 0) || worst >= 60)
+        break;
+      const TetMesh savedMesh = mesh;
+      const std::vector<int32_t> savedRegion = tetRegion;
+      const DihedralSummary savedAfter = stats.after;
+      one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+      const int64_t n = splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 1, true, static_cast<size_t>(skip));
+      if (n > 0)
+      {
+        s = optimise(3);
+        if (!s.ok())
+          return s;
+        if (worstSineDegrees(mesh) > worst + 0.01)
+        {
+          stats.splitPoints += n;
+          skip = 0;
+          continue;
+        }
+      }
+      mesh = savedMesh;
+      tetRegion = savedRegion;
+      stats.after = savedAfter;
+      if (countBelow(mesh, one.targetDegrees) <= ++skip)
         break;
     }
     stats.secondsOptimization = since(t0);

@@ -73,6 +73,9 @@ struct ImprovementOptions
   // Rounds aimed 2 degrees above the current worst tet once the target is met or no longer improves
   // (0 = stop at the target).
   int floorRounds = 4;
+  // Meshes of at most 5,000 tets: rounds that insert a point for the worst tet, optimise, and keep the
+  // result only if the worst tet got better (0 = none).
+  int speculativeRounds = 12;
 };
 
 struct ImprovementStatistics

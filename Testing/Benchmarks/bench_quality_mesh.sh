@@ -18,7 +18,8 @@
 #      and the verdict:
 #        better    VolGrid's minimum dihedral angle is larger than TetGen's (by 0.005 deg or more);
 #        bound     VolGrid reaches the surface bound (within 0.01 deg), which TetGen cannot exceed either;
-#        WORSE     VolGrid's minimum is not larger although the bound leaves room;
+#        tie       equal minima (within 0.005 deg) below the bound: not better, not shown optimal;
+#        WORSE     VolGrid's minimum is smaller;
 #        FAILED    an engine did not mesh the model (e.g. RecoveryFailed), with its message.
 # Figures: minimum and maximum dihedral angle, share of tets under 10 degrees, tets, meshing time
 # (VolGrid: meshSurface; TetGen: its total running time less its output time; Gmsh: its 3D meshing wall
@@ -384,6 +385,8 @@ def verdict(vg, tg, bound):
         return "better"
     if bound is not None and vg["min_dihedral"] >= bound - 0.01:
         return "bound"
+    if vg["min_dihedral"] >= tg["min_dihedral"] - 0.005:
+        return "tie"
     return "WORSE"
 
 if corpus:
@@ -392,8 +395,8 @@ if corpus:
         selection = [m for m in selection if match in m]
     print()
     print("Clean corpus: VolGrid defaults vs TetGen -pYq1.414 on the same `volgrid prep` output "
-          "(min/max dihedral in degrees, share of tets under 10 deg, seconds; bound = smallest interior "
-          "dihedral angle between adjacent input triangles)")
+          "(min/max dihedral in degrees, share of tets under 10 deg, seconds; bound: the surface's bound on "
+          "the minimum dihedral angle, e = edge, t = triangle, see the script's header)")
     hdr = "%-48s %7s %6s | %6s %7s %7s %8s | %6s %7s %7s %8s | %s" % (
         "model", "tris", "bound", "VG min", "VG max", "VG<10%", "VG s", "TG min", "TG max", "TG<10%", "TG s",
         "verdict")
