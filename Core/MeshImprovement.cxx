@@ -624,18 +624,26 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       const std::vector<int32_t> savedRegion = tetRegion;
       const DihedralSummary savedAfter = stats.after;
       one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
-      const int64_t n = splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 1, true, static_cast<size_t>(skip));
-      if (n > 0)
+      // Up to three points (each for the worst tet after the previous one), judged after each.
+      int64_t n = 0;
+      bool improved = false;
+      for (int depth = 0; depth < 3 && !improved; ++depth)
       {
+        const int64_t k = splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 1, true,
+          depth == 0 ? static_cast<size_t>(skip) : 0);
+        if (k == 0)
+          break;
+        n += k;
         s = optimise(3);
         if (!s.ok())
           return s;
-        if (worstSineDegrees(mesh) > worst + 0.01)
-        {
-          stats.splitPoints += n;
-          skip = 0;
-          continue;
-        }
+        improved = worstSineDegrees(mesh) > worst + 0.01;
+      }
+      if (improved)
+      {
+        stats.splitPoints += n;
+        skip = 0;
+        continue;
       }
       mesh = savedMesh;
       tetRegion = savedRegion;
