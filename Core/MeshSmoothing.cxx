@@ -60,7 +60,7 @@ double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, c
     if (q <= floor)
       break;
   }
-  if (q > 0 && !starPositive(m, star))
+  if (q > floor && q > 0 && !starPositive(m, star)) // the exact test only for a position that would count
     q = -2;
   p[0] = home[0];
   p[1] = home[1];

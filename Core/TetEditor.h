@@ -135,8 +135,8 @@ public:
   // Quality-driven insertion (after Klingner and Shewchuk's smart vertex insertion) of vertex v
   // (coordinates in mesh.points, used by no tet) lying in the closure of tet `start`: the cavity starts
   // from `start` (with mustReplace >= 0: the shortest path of at most 5 tets from `start` to mustReplace)
-  // and grows one tet at a time across the unconstrained face that makes the worst new tet, and the cavity (star-shaped from v, every cavity vertex on its boundary) whose worst new tet is best is
-  // kept. Returns that worst new quality (tetSineQuality), or -3 when there is no valid cavity or when
+  // and grows one tet at a time across the unconstrained face that makes the worst new tet; the cavity
+  // (star-shaped from v, every cavity vertex on its boundary) whose worst new tet is best is kept. Returns that worst new quality (tetSineQuality), or -3 when there is no valid cavity or when
   // mustReplace >= 0 is not in it; replacedQuality (optional) receives the worst replaced tet's quality.
   // commit = false leaves the mesh untouched (to compare positions); true inserts v with that cavity.
   // mustBeat: only cavities whose worst new tet is above it count (-3 when none; prunes the search).
