@@ -95,6 +95,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
 {
   TetEditor editor(mesh, constraints, labels);
   editor.rebuildVertexMap();
+  const std::vector<uint8_t> locked = editor.lockedVertices();
   const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
   auto quality = [&](int32_t t) {
     const int32_t* v = mesh.vertices(t);
@@ -168,6 +169,35 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
         cand.push_back(apex);
       }
     }
+    // A tet spanned by four boundary vertices (a cap or sliver against the boundary) also gets points off
+    // each edge midpoint along the normals of the edge's two faces, both ways, at half and at the full
+    // edge length: the point that opens a crease or an interior edge of the cap is often there.
+    if (locked[tv[0]] && locked[tv[1]] && locked[tv[2]] && locked[tv[3]])
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+          const double len = std::sqrt(sqDist(p[i], p[j]));
+          for (int k = 0; k < 4; ++k)
+          {
+            if (k == i || k == j)
+              continue;
+            double u[3], w[3], n[3];
+            for (int c = 0; c < 3; ++c)
+            {
+              u[c] = p[j][c] - p[i][c];
+              w[c] = p[k][c] - p[i][c];
+            }
+            n[0] = u[1] * w[2] - u[2] * w[1];
+            n[1] = u[2] * w[0] - u[0] * w[2];
+            n[2] = u[0] * w[1] - u[1] * w[0];
+            const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            if (!(nn > 0))
+              continue;
+            for (const double scale : { 0.5, -0.5, 1.0, -1.0 })
+              cand.push_back({ (p[i][0] + p[j][0]) / 2 + scale * len * n[0] / nn,
+                (p[i][1] + p[j][1]) / 2 + scale * len * n[1] / nn, (p[i][2] + p[j][2]) / 2 + scale * len * n[2] / nn });
+          }
+        }
     // Score a position: the worst new tet, when the cavity replaces t and beats what it replaces.
     const int32_t nv = mesh.addPoint(cand[0].data()); // coordinates overwritten below (p may move)
     double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
