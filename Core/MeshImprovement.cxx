@@ -1,5 +1,7 @@
 #include "MeshImprovement.h"
 
+#include "BadTetSplitting.h"
+
 #include "Predicates.h"
 
 #include <algorithm>
@@ -47,97 +49,26 @@ Status checkOptions(const ImprovementOptions& o)
     return Status::failure(ErrorKind::InvalidOption, "Optimisation needs 0 < targetDegrees < 90 and maxPasses >= 0.");
   return Status::success();
 }
-// Tets still below `degrees` after optimisation (typically slivers whose four vertices are on the boundary,
-// which no flip or move can fix): a point at the circumcentre, or at the centroid when the circumcentre is
-// outside the domain, removes them by constrained Bowyer-Watson insertion, as Delaunay refinement does.
-// Constrained faces are never crossed, so the boundary is untouched. Candidates closer than half the
-// tet's shortest edge to a vertex are refused. Returns the number of points inserted.
-int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
-  double degrees, int64_t maxPoints)
+// The worst tet's min(theta_min, 180 - theta_max) in degrees.
+double worstSineDegrees(const TetMesh& mesh)
 {
-  TetEditor editor(mesh, constraints, labels);
-  editor.rebuildVertexMap();
-  const std::vector<uint8_t> locked = editor.lockedVertices();
-  const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
-  auto quality = [&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    return tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
-  };
-  std::vector<std::pair<double, int32_t>> bad;
+  double q = 2;
   mesh.forEachTet([&](int32_t t) {
-    const double q = quality(t);
-    if (q < qT)
-      bad.emplace_back(q, t);
-  });
-  std::sort(bad.begin(), bad.end());
-  int64_t inserted = 0;
-  for (const auto& b : bad)
-  {
-    const int32_t t = b.second;
-    if (inserted >= maxPoints)
-      break;
-    if (mesh.isFree(t) || quality(t) >= qT) // replaced by an earlier insertion
-      continue;
     const int32_t* v = mesh.vertices(t);
-    const double* p[4] = { mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]) };
-    double len[4][4], lmin = std::numeric_limits<double>::infinity(), lmax = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-      {
-        double d2 = 0;
-        for (int k = 0; k < 3; ++k)
-          d2 += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
-        len[i][j] = std::sqrt(d2);
-        lmin = std::min(lmin, len[i][j]);
-        lmax = std::max(lmax, len[i][j]);
-      }
-    // A short edge between two boundary vertices (a needle boundary triangle) makes every tet around it
-    // bad whatever is inserted: leave those to the report.
-    bool boundaryNeedle = false;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        boundaryNeedle |= locked[v[i]] && locked[v[j]] && len[i][j] < 0.25 * lmax;
-    if (boundaryNeedle)
-      continue;
-    double e[3][3], n[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 3; ++k)
-        e[i][k] = p[i + 1][k] - p[0][k];
-    auto cross = [](const double* x, const double* y, double* out) {
-      out[0] = x[1] * y[2] - x[2] * y[1];
-      out[1] = x[2] * y[0] - x[0] * y[2];
-      out[2] = x[0] * y[1] - x[1] * y[0];
-    };
-    cross(e[1], e[2], n[0]);
-    cross(e[2], e[0], n[1]);
-    cross(e[0], e[1], n[2]);
-    const double den = 2 * (e[0][0] * n[0][0] + e[0][1] * n[0][1] + e[0][2] * n[0][2]);
-    double cand[2][3];
-    for (int k = 0; k < 3; ++k)
-    {
-      double num = 0;
-      for (int i = 0; i < 3; ++i)
-        num += (e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2]) * n[i][k];
-      cand[0][k] = p[0][k] + num / den;
-      cand[1][k] = (p[0][k] + p[1][k] + p[2][k] + p[3][k]) / 4;
-    }
-    for (const double* c : cand)
-    {
-      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
-        continue;
-      const int32_t start = editor.locate(c, t);
-      if (start < 0)
-        continue;
-      const int32_t nv = mesh.addPoint(c);
-      if (editor.insertPoint(nv, start, 0.5 * lmin) == TetEditor::InsertStatus::Inserted)
-      {
-        ++inserted;
-        break;
-      }
-      mesh.points.resize(mesh.points.size() - 3); // the last vertex, used by no tet
-    }
-  }
-  return inserted;
+    q = std::min(q, tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])));
+  });
+  return sineQualityToDegrees(q);
+}
+
+int64_t countBelow(const TetMesh& mesh, double degrees)
+{
+  const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  int64_t n = 0;
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    n += tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < qT;
+  });
+  return n;
 }
 
 // A sizing field sampled on an adaptive octree over a box, with trilinear interpolation in the leaves.
@@ -471,6 +402,71 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       if (!s.ok())
         return s;
       if (stats.after.minDihedral < minBefore + 0.1)
+        break;
+    }
+    // Beyond the target the mesh's minimum is decided by its few worst tets: while it pays, aim a little
+    // above the current worst (flips, smoothing and splitting touch only the tets below the aim and accept
+    // strict improvements only), so a mesh already past the target still gets better where it is worst.
+    for (int round = 0; round < options.floorRounds; ++round)
+    {
+      if (progress && progress->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+      const double worst = worstSineDegrees(mesh);
+      if (!(worst > 0) || worst >= 60)
+        break;
+      one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+      // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
+      if (countBelow(mesh, one.targetDegrees) > std::max<int64_t>(64, mesh.numTets() / 200))
+        break;
+      s = optimise(2);
+      if (!s.ok())
+        return s;
+      stats.splitPoints += splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 64);
+      s = optimise(1);
+      if (!s.ok())
+        return s;
+      if (worstSineDegrees(mesh) < worst + 0.05)
+        break;
+    }
+    // Small meshes (a few boundary triangles, few or no field points) often end as a tie with any
+    // Delaunay-based mesher: no single flip, move or improving insertion helps. Speculative rounds insert
+    // the best point found for the worst tet, optimise around it, and keep the result only when the
+    // mesh's worst tet got better (else the mesh is restored: a copy is cheap at this size, and the next
+    // bad tet is tried).
+    for (int round = 0, skip = 0; round < options.speculativeRounds && mesh.numTets() <= 5000; ++round)
+    {
+      const double worst = worstSineDegrees(mesh);
+      if (!(worst > 0) || worst >= 60)
+        break;
+      const TetMesh savedMesh = mesh;
+      const std::vector<int32_t> savedRegion = tetRegion;
+      const DihedralSummary savedAfter = stats.after;
+      one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+      // Up to three points (each for the worst tet after the previous one), judged after each.
+      int64_t n = 0;
+      bool improved = false;
+      for (int depth = 0; depth < 3 && !improved; ++depth)
+      {
+        const int64_t k = splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 1, true,
+          depth == 0 ? static_cast<size_t>(skip) : 0);
+        if (k == 0)
+          break;
+        n += k;
+        s = optimise(3);
+        if (!s.ok())
+          return s;
+        improved = worstSineDegrees(mesh) > worst + 0.01;
+      }
+      if (improved)
+      {
+        stats.splitPoints += n;
+        skip = 0;
+        continue;
+      }
+      mesh = savedMesh;
+      tetRegion = savedRegion;
+      stats.after = savedAfter;
+      if (countBelow(mesh, one.targetDegrees) <= ++skip)
         break;
     }
     stats.secondsOptimization = since(t0);

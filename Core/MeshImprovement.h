@@ -13,8 +13,11 @@
 //      insertion that never crosses a constrained face.
 //   4. Optimisation: flips, edge removal and smoothing towards a target minimum dihedral angle
 //      (MeshOptimization.h), which never changes a constrained face and never moves its vertices; the
-//      tets it cannot fix (slivers spanned by boundary vertices) are split by a point at their
-//      circumcentre or centroid (constrained insertion), then optimisation runs again.
+//      tets it cannot fix (slivers and caps spanned by boundary vertices) are split by a point placed by
+//      search and inserted with a quality-driven cavity (TetEditor::qualityInsertion, only when it
+//      strictly improves), then optimisation runs again. Then floor rounds aim 2 degrees above the
+//      worst tet while that pays, and on small meshes speculative rounds try a few points and keep them
+//      only when the worst tet improves.
 // The boundary is therefore the input boundary, exactly: same points, same triangles. New vertices are
 // marked VertexKind::SteinerInterior in `kinds` (field and cluster points are strictly interior), region
 // labels follow the tets, and the editor's vertex map is rebuilt for the output stage.
@@ -67,9 +70,15 @@ struct ImprovementOptions
   // Optimisation (flips, edge removal, smoothing) towards a target min(theta_min, 180 - theta_max).
   bool optimize = true;
   OptimizationOptions optimization;
-  // Rounds of splitting the tets still below the target by a point at their circumcentre (or centroid),
-  // each followed by optimisation (0 = no point added by the quality stage).
+  // Rounds of splitting the tets still below the target by a point placed by search and inserted with a
+  // quality-driven cavity, each followed by optimisation (0 = no point added by the quality stage).
   int splitRounds = 3;
+  // Rounds aimed 2 degrees above the current worst tet once the target is met or no longer improves
+  // (0 = stop at the target).
+  int floorRounds = 4;
+  // Meshes of at most 5,000 tets: rounds that insert a point for the worst tet, optimise, and keep the
+  // result only if the worst tet got better (0 = none).
+  int speculativeRounds = 12;
 };
 
 struct ImprovementStatistics

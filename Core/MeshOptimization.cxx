@@ -66,21 +66,85 @@ void emit(const std::vector<int32_t>& r, const std::vector<int>& K, int n, int i
 }
 } // namespace
 
+namespace
+{
+// The smallest and largest dihedral angles of a tet, as quality::tetDihedralAngles() gives them (same
+// normals, same atan2), with two atan2 instead of six: the six angles are ranked by their cosines. This
+// summary runs after every optimisation pass.
+void minMaxDihedral(const double* p0, const double* p1, const double* p2, const double* p3, double& lo, double& hi)
+{
+  auto sub = [](const double* x, const double* y, double* o) {
+    o[0] = x[0] - y[0];
+    o[1] = x[1] - y[1];
+    o[2] = x[2] - y[2];
+  };
+  auto cross = [](const double* x, const double* y, double* o) {
+    o[0] = x[1] * y[2] - x[2] * y[1];
+    o[1] = x[2] * y[0] - x[0] * y[2];
+    o[2] = x[0] * y[1] - x[1] * y[0];
+  };
+  auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  double e0[3], e1[3], e2[3], e3[3], e4[3], n[4][3];
+  sub(p1, p0, e0);
+  sub(p2, p0, e1);
+  sub(p3, p0, e2);
+  sub(p2, p1, e3);
+  sub(p3, p1, e4);
+  cross(e0, e1, n[3]);
+  cross(e2, e0, n[2]);
+  cross(e1, e2, n[1]);
+  cross(e4, e3, n[0]);
+  double len[4];
+  for (int k = 0; k < 4; ++k)
+    len[k] = std::sqrt(dot(n[k], n[k]));
+  if (len[0] == 0.0 || len[1] == 0.0 || len[2] == 0.0 || len[3] == 0.0)
+  {
+    lo = 0.0; // a degenerate face: min 0, max 180 as in Quality.h
+    hi = 180.0;
+    return;
+  }
+  static constexpr int kFaces[6][2] = { { 2, 3 }, { 1, 3 }, { 1, 2 }, { 0, 3 }, { 0, 2 }, { 0, 1 } };
+  int eLo = 0, eHi = 0;
+  double cLo = -2, cHi = 2;
+  for (int e = 0; e < 6; ++e)
+  {
+    const int k = kFaces[e][0], l = kFaces[e][1];
+    const double c = -dot(n[k], n[l]) / (len[k] * len[l]); // cosine of the angle: larger = smaller angle
+    if (c > cLo)
+    {
+      cLo = c;
+      eLo = e;
+    }
+    if (c < cHi)
+    {
+      cHi = c;
+      eHi = e;
+    }
+  }
+  auto angle = [&](int e) {
+    double x[3];
+    cross(n[kFaces[e][0]], n[kFaces[e][1]], x);
+    return std::atan2(std::sqrt(dot(x, x)), -dot(n[kFaces[e][0]], n[kFaces[e][1]])) * 57.29577951308232087680; // as Quality.cxx
+  };
+  lo = angle(eLo);
+  hi = angle(eHi);
+}
+} // namespace
+
 DihedralSummary summarizeDihedrals(const TetMesh& mesh)
 {
   DihedralSummary s;
   mesh.forEachFiniteTet([&](int32_t t) {
     const int32_t* w = mesh.vertices(t);
     const double *a = mesh.point(w[0]), *b = mesh.point(w[1]), *c = mesh.point(w[2]), *d = mesh.point(w[3]);
-    double ang[6];
-    quality::tetDihedralAngles(a, b, c, d, ang);
-    const double lo = *std::min_element(ang, ang + 6), hi = *std::max_element(ang, ang + 6);
+    double lo, hi;
+    minMaxDihedral(a, b, c, d, lo, hi);
     ++s.tets;
     s.minDihedral = std::min(s.minDihedral, lo);
     s.maxDihedral = std::max(s.maxDihedral, hi);
     s.below10 += lo < 10;
     s.above170 += hi > 170;
-    s.inverted += predicates::orient3d(a, b, c, d) <= 0;
+    s.inverted += predicates::orient3dInline(a, b, c, d) <= 0;
   });
   return s;
 }

@@ -44,15 +44,23 @@ bool starPositive(const TetMesh& m, const std::vector<int32_t>& star)
 }
 
 // Star minimum with v at x (written into the mesh, then restored to `home`); -2 when a tet is not
-// strictly positive (exact).
-double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, const std::vector<int32_t>& star)
+// strictly positive (exact). Only a result above `floor` is used: the scan stops at the first tet at or
+// below it (most trial positions fail there) and returns that tet's quality.
+double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, const std::vector<int32_t>& star,
+  double floor)
 {
   double* p = m.points.data() + 3 * static_cast<size_t>(v);
   p[0] = x[0];
   p[1] = x[1];
   p[2] = x[2];
-  double q = starMin(m, star);
-  if (q > 0 && !starPositive(m, star))
+  double q = 2.0;
+  for (int32_t t : star)
+  {
+    q = std::min(q, tetQ(m, t));
+    if (q <= floor)
+      break;
+  }
+  if (q > floor && q > 0 && !starPositive(m, star)) // the exact test only for a position that would count
     q = -2;
   p[0] = home[0];
   p[1] = home[1];
@@ -116,7 +124,7 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
   c[1] *= inv;
   c[2] *= inv;
   scale *= inv;
-  const double qL = tryPosition(m, v, c, home, s.star);
+  const double qL = tryPosition(m, v, c, home, s.star, q0);
   if (qL > q0)
   {
     setPoint(m, v, c);
@@ -171,7 +179,7 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
       for (int ls = 0; ls < 10; ++ls, h *= 0.5)
       {
         const double y[3] = { x[0] + h * d[0] / dn, x[1] + h * d[1] / dn, x[2] + h * d[2] / dn };
-        const double qy = tryPosition(m, v, y, x, s.star);
+        const double qy = tryPosition(m, v, y, x, s.star, qCur);
         if (qy > qCur)
         {
           x[0] = y[0];

@@ -38,7 +38,11 @@ void FaceConstraints::addTriangles(const int32_t* tris, size_t n)
 }
 
 // ---------------------------------------------------------------------------------------------------------
-double tetSineQuality(const double* a, const double* b, const double* c, const double* d)
+namespace
+{
+// The plain formula with one square root per edge and per face: the fallback of tetSineQuality() when the
+// squared products of the fast path would leave the normal double range (coordinates beyond ~1e+-38).
+double tetSineQualityPlain(const double* a, const double* b, const double* c, const double* d)
 {
   // Edge vectors from a, and the others.
   const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
@@ -79,6 +83,45 @@ double tetSineQuality(const double* a, const double* b, const double* c, const d
   }
   if (degenerate || !(det != 0))
     return det < 0 ? -1e-300 : 0.0;
+  return det < 0 ? -q : q;
+}
+} // namespace
+
+double tetSineQuality(const double* a, const double* b, const double* c, const double* d)
+{
+  // The hottest function of the quality stages: squared lengths and areas, the smallest squared sine
+  // det^2 |e|^2 / (|n_k|^2 |n_l|^2) over the edges by comparison, and a single square root.
+  const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double ad[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+  const double bc[3] = { c[0] - b[0], c[1] - b[1], c[2] - b[2] };
+  const double bd[3] = { d[0] - b[0], d[1] - b[1], d[2] - b[2] };
+  const double cd[3] = { d[0] - c[0], d[1] - c[1], d[2] - c[2] };
+  auto cross = [](const double* u, const double* v, double* w) {
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+  };
+  auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  double n[4][3];
+  cross(bc, bd, n[0]);
+  cross(ac, ad, n[1]);
+  cross(ab, ad, n[2]);
+  cross(ab, ac, n[3]);
+  const double det = dot(n[3], ad);
+  const double A2[4] = { dot(n[0], n[0]), dot(n[1], n[1]), dot(n[2], n[2]), dot(n[3], n[3]) };
+  const double L2[6] = { dot(ab, ab), dot(ac, ac), dot(ad, ad), dot(bc, bc), dot(bd, bd), dot(cd, cd) };
+  const double P2[6] = { A2[2] * A2[3], A2[1] * A2[3], A2[1] * A2[2], A2[0] * A2[3], A2[0] * A2[2], A2[0] * A2[1] };
+  double r = L2[0] / P2[0];
+  bool normal = P2[0] > 1e-280 && P2[0] < 1e280;
+  for (int e = 1; e < 6; ++e)
+  {
+    normal &= P2[e] > 1e-280 && P2[e] < 1e280;
+    r = std::min(r, L2[e] / P2[e]);
+  }
+  if (!normal || !(det != 0))
+    return tetSineQualityPlain(a, b, c, d);
+  const double q = std::min(1.0, std::fabs(det) * std::sqrt(r));
   return det < 0 ? -q : q;
 }
 
@@ -596,6 +639,180 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   }
   commitInsertion(v, created);
   return InsertStatus::Inserted;
+}
+
+double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality,
+  bool commit, std::vector<int32_t>* created, int maxCavity, double mustBeat)
+{
+  if (start < 0 || mesh.isFree(start))
+    return -3;
+  if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
+    vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
+  // Seed: start, or the shortest path of tets (across unconstrained faces, at most 4 steps) from start to
+  // mustReplace.
+  cavity_.assign(1, start);
+  if (mustReplace >= 0 && mustReplace != start)
+  {
+    const uint32_t seen = newStamp();
+    bfsTets_.assign(1, { start, -1 });
+    stamp_[start] = seen;
+    int32_t found = -1;
+    for (size_t k = 0, levelEnd = 1, depth = 0; k < bfsTets_.size() && found < 0; ++k)
+    {
+      if (k == levelEnd)
+      {
+        levelEnd = bfsTets_.size();
+        if (++depth == 4)
+          break;
+      }
+      const int32_t t = bfsTets_[k].first;
+      for (int i = 0; i < 4 && found < 0; ++i)
+      {
+        if (isConstrainedFace(t, i))
+          continue;
+        const int32_t u = mesh.neighbor(t, i);
+        if (stamp_[u] == seen)
+          continue;
+        stamp_[u] = seen;
+        bfsTets_.push_back({ u, static_cast<int32_t>(k) });
+        if (u == mustReplace)
+          found = static_cast<int32_t>(bfsTets_.size() - 1);
+      }
+    }
+    if (found < 0)
+      return -3;
+    cavity_.clear();
+    for (int32_t k = found; k >= 0; k = bfsTets_[k].second)
+      cavity_.push_back(bfsTets_[k].first);
+  }
+  const uint32_t s = newStamp();
+  for (int32_t t : cavity_)
+    stamp_[t] = s;
+  // The cone over the cavity's boundary faces, kept up to date as the cavity grows.
+  cone_.clear();
+  auto addFaces = [&](int32_t t) {
+    const int32_t* w = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+    {
+      const bool constrained = isConstrainedFace(t, i);
+      if (!constrained && stamp_[mesh.neighbor(t, i)] == s)
+        continue;
+      std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+      q[i] = v;
+      double qc = -1; // not strictly positive: the cavity is not star-shaped from v
+      if (predicates::orient3dInline(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3])) > 0)
+        qc = tetSineQuality(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3]));
+      cone_.push_back({ t, i, constrained, qc });
+    }
+  };
+  for (int32_t t : cavity_)
+    addFaces(t);
+  double bestQ = -3;
+  for (int step = 0; step < maxCavity; ++step)
+  {
+    // Its worst tet, and whether it is valid (star-shaped, no cavity vertex swallowed).
+    double qMin = 2, qGrow = 3, qConstrained = 2;
+    int growK = -1;
+    bool valid = true;
+    for (size_t k = 0; k < cone_.size(); ++k)
+    {
+      const ConeFace& f = cone_[k];
+      qMin = std::min(qMin, f.quality);
+      valid &= f.quality > -1;
+      if (f.constrained)
+        qConstrained = std::min(qConstrained, f.quality);
+      else if (f.quality < qGrow)
+      {
+        qGrow = f.quality;
+        growK = static_cast<int>(k);
+      }
+    }
+    const double bar = std::max(bestQ, mustBeat);
+    if (valid && qMin > bar)
+    {
+      // Every cavity vertex must be on the cone (else it would be swallowed).
+      for (const ConeFace& f : cone_)
+      {
+        const int32_t* w = mesh.vertices(f.tet);
+        for (int m = 0; m < 4; ++m)
+          if (m != f.face)
+            vstamp_[w[m]] = 1;
+      }
+      for (int32_t t : cavity_)
+      {
+        const int32_t* w = mesh.vertices(t);
+        for (int m = 0; m < 4; ++m)
+          valid &= vstamp_[w[m]] == 1;
+      }
+      for (int32_t t : cavity_)
+      {
+        const int32_t* w = mesh.vertices(t);
+        for (int m = 0; m < 4; ++m)
+          vstamp_[w[m]] = 0;
+      }
+      if (valid)
+      {
+        bestQ = qMin;
+        bestCavity_ = cavity_;
+      }
+    }
+    // Constrained faces stay on the boundary of every larger cavity: no growth can beat their worst tet.
+    if (growK < 0 || qConstrained <= std::max(bestQ, mustBeat))
+      break;
+    // Grow across the worst unconstrained face.
+    const int32_t u = mesh.neighbor(cone_[growK].tet, cone_[growK].face);
+    stamp_[u] = s;
+    cavity_.push_back(u);
+    size_t kept = 0;
+    for (size_t k = 0; k < cone_.size(); ++k)
+      if (cone_[k].constrained || stamp_[mesh.neighbor(cone_[k].tet, cone_[k].face)] != s)
+        cone_[kept++] = cone_[k];
+    cone_.resize(kept);
+    addFaces(u);
+  }
+  for (int32_t t : cavity_)
+    stamp_[t] = 0;
+  if (bestQ == -3)
+    return -3;
+  double qOld = 2;
+  bool replaces = mustReplace < 0;
+  for (int32_t t : bestCavity_)
+  {
+    const int32_t* w = mesh.vertices(t);
+    qOld = std::min(qOld, tetSineQuality(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3])));
+    replaces |= t == mustReplace;
+  }
+  if (!replaces)
+    return -3;
+  if (replacedQuality)
+    *replacedQuality = qOld;
+  if (commit)
+  {
+    // The cone's tets and their outer links, as insertPoint() builds them, then the common commit.
+    const uint32_t c = newStamp();
+    cavity_ = bestCavity_;
+    for (int32_t t : cavity_)
+      stamp_[t] = c;
+    newTets_.clear();
+    outerCode_.clear();
+    outerFace_.clear();
+    for (int32_t t : cavity_)
+    {
+      const int32_t* w = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+      {
+        if (!isConstrainedFace(t, i) && stamp_[mesh.neighbor(t, i)] == c)
+          continue;
+        std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+        q[i] = v;
+        newTets_.push_back(q);
+        outerCode_.push_back(mesh.neighborCode(t, i));
+        outerFace_.push_back(i);
+      }
+    }
+    commitInsertion(v, created);
+  }
+  return bestQ;
 }
 
 void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)

@@ -132,6 +132,17 @@ public:
   InsertStatus insertPoint(int32_t v, int32_t start, double minDistance = 0, double* nearest = nullptr,
     std::vector<int32_t>* created = nullptr);
 
+  // Quality-driven insertion (after Klingner and Shewchuk's smart vertex insertion) of vertex v
+  // (coordinates in mesh.points, used by no tet) lying in the closure of tet `start`: the cavity starts
+  // from `start` (with mustReplace >= 0: the shortest path of at most 5 tets from `start` to mustReplace)
+  // and grows one tet at a time across the unconstrained face that makes the worst new tet; the cavity
+  // (star-shaped from v, every cavity vertex on its boundary) whose worst new tet is best is kept. Returns that worst new quality (tetSineQuality), or -3 when there is no valid cavity or when
+  // mustReplace >= 0 is not in it; replacedQuality (optional) receives the worst replaced tet's quality.
+  // commit = false leaves the mesh untouched (to compare positions); true inserts v with that cavity.
+  // mustBeat: only cavities whose worst new tet is above it count (-3 when none; prunes the search).
+  double qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,
+    std::vector<int32_t>* created = nullptr, int maxCavity = 24, double mustBeat = -3);
+
   uint64_t replacements = 0;
 
 private:
@@ -149,7 +160,16 @@ private:
     int face;
   };
   std::vector<FaceEntry> faces_;
-  std::vector<int32_t> cavity_, queue_, bfaces_, vstamp_;
+  std::vector<int32_t> cavity_, queue_, bfaces_, vstamp_, bestCavity_;
+  std::vector<std::pair<int32_t, int32_t>> bfsTets_; // (tet, index of its parent)
+  struct ConeFace
+  {
+    int32_t tet;
+    int face;
+    bool constrained;
+    double quality; // of the tet from the new vertex over this face; -1 when not strictly positive
+  };
+  std::vector<ConeFace> cone_;
   std::vector<std::array<int32_t, 4>> newTets_;
   std::vector<int32_t> outerCode_, outerFace_;
   std::vector<std::pair<uint64_t, int32_t>> edgeSlots_;

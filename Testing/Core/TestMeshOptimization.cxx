@@ -4,15 +4,18 @@
 #include "Enclosures.h"
 #include "FieldPoints.h"
 #include "MeshChecker.h"
+#include "MeshImprovement.h"
 #include "MeshOptimization.h"
 #include "MeshSmoothing.h"
 #include "Predicates.h"
+#include "Quality.h"
 #include "SizingField.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -226,4 +229,30 @@ TEST(MeshOptimization, ThreeTwoAndTwoThreeFlips)
   ASSERT_GE(shared, 0);
   EXPECT_FALSE(tryFlip23(editor, t, shared, nullptr));
   EXPECT_EQ(m.numTets(), 2);
+}
+
+TEST(MeshOptimization, SummaryAgreesWithTheQualityModule)
+{
+  // summarizeDihedrals() ranks the six angles by cosine and converts two: it must report the extremes
+  // quality::tetDihedralAngles() gives, including for flat tets (caps, slivers, needles).
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 20000; ++k)
+  {
+    std::vector<double> p(12);
+    for (double& x : p)
+      x = u(rng);
+    if (k % 2) // a flattened copy: the fourth point close to the plane of the others
+      for (int i = 0; i < 3; ++i)
+        p[9 + i] = (p[i] + p[3 + i] + p[6 + i]) / 3 + 1e-3 * u(rng);
+    TetMesh m;
+    if (!tetMeshFromTets(p, { 0, 1, 2, 3 }, m).ok())
+      continue;
+    const int32_t* v = m.vertices(0);
+    double ang[6];
+    quality::tetDihedralAngles(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]), ang);
+    const DihedralSummary s = summarizeDihedrals(m);
+    EXPECT_NEAR(s.minDihedral, *std::min_element(ang, ang + 6), 1e-9);
+    EXPECT_NEAR(s.maxDihedral, *std::max_element(ang, ang + 6), 1e-9);
+  }
 }

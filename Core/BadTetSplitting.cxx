@@ -1,0 +1,218 @@
+#include "BadTetSplitting.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+namespace volgrid
+{
+
+namespace
+{
+double sqDist(const double* a, const double* b)
+{
+  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+// Circumcentre of tet p[0..3]; false when flat.
+bool circumcentre(const double* const p[4], double* out)
+{
+  double e[3][3], n[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      e[i][k] = p[i + 1][k] - p[0][k];
+  auto cross = [](const double* x, const double* y, double* o) {
+    o[0] = x[1] * y[2] - x[2] * y[1];
+    o[1] = x[2] * y[0] - x[0] * y[2];
+    o[2] = x[0] * y[1] - x[1] * y[0];
+  };
+  cross(e[1], e[2], n[0]);
+  cross(e[2], e[0], n[1]);
+  cross(e[0], e[1], n[2]);
+  const double den = 2 * (e[0][0] * n[0][0] + e[0][1] * n[0][1] + e[0][2] * n[0][2]);
+  if (!(den != 0))
+    return false;
+  for (int k = 0; k < 3; ++k)
+  {
+    double num = 0;
+    for (int i = 0; i < 3; ++i)
+      num += (e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2]) * n[i][k];
+    out[k] = p[0][k] + num / den;
+  }
+  return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(out[2]);
+}
+} // namespace
+
+int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
+  double degrees, int64_t maxPoints, bool speculative, size_t skip)
+{
+  TetEditor editor(mesh, constraints, labels);
+  editor.rebuildVertexMap();
+  const std::vector<uint8_t> locked = editor.lockedVertices();
+  const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  auto quality = [&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    return tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+  };
+  std::vector<std::pair<double, int32_t>> bad;
+  mesh.forEachTet([&](int32_t t) {
+    const double q = quality(t);
+    if (q < qT)
+      bad.emplace_back(q, t);
+  });
+  std::sort(bad.begin(), bad.end());
+  bad.erase(bad.begin(), bad.begin() + static_cast<std::ptrdiff_t>(std::min(skip, bad.size())));
+  int64_t inserted = 0;
+  std::vector<std::array<double, 3>> cand;
+  for (const auto& b : bad)
+  {
+    const int32_t t = b.second;
+    if (inserted >= maxPoints)
+      break;
+    if (mesh.isFree(t) || quality(t) >= qT) // replaced by an earlier insertion
+      continue;
+    const double qt = quality(t);
+    const int32_t* v = mesh.vertices(t);
+    const int32_t tv[4] = { v[0], v[1], v[2], v[3] };
+    const double* p[4] = { mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(tv[3]) };
+    double lsum = 0;
+    cand.clear();
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+      {
+        lsum += std::sqrt(sqDist(p[i], p[j]));
+        cand.push_back({ (p[i][0] + p[j][0]) / 2, (p[i][1] + p[j][1]) / 2, (p[i][2] + p[j][2]) / 2 });
+      }
+    const double lmean = lsum / 6;
+    cand.push_back({ (p[0][0] + p[1][0] + p[2][0] + p[3][0]) / 4, (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4,
+      (p[0][2] + p[1][2] + p[2][2] + p[3][2]) / 4 });
+    std::array<double, 3> cc;
+    if (circumcentre(p, cc.data()))
+      cand.push_back(cc);
+    for (int i = 0; i < 4; ++i)
+    {
+      // Face i (the three vertices other than i), its normal towards vertex i, apex at the regular height.
+      const double* f[3];
+      for (int k = 0, m = 0; k < 4; ++k)
+        if (k != i)
+          f[m++] = p[k];
+      double u[3], w[3], n[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        u[k] = f[1][k] - f[0][k];
+        w[k] = f[2][k] - f[0][k];
+      }
+      n[0] = u[1] * w[2] - u[2] * w[1];
+      n[1] = u[2] * w[0] - u[0] * w[2];
+      n[2] = u[0] * w[1] - u[1] * w[0];
+      const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (!(nn > 0))
+        continue;
+      const double side = (p[i][0] - f[0][0]) * n[0] + (p[i][1] - f[0][1]) * n[1] + (p[i][2] - f[0][2]) * n[2];
+      const double h = 0.8165 * (std::sqrt(sqDist(f[0], f[1])) + std::sqrt(sqDist(f[1], f[2])) +
+                                  std::sqrt(sqDist(f[2], f[0]))) / 3;
+      // Both sides (beyond an unconstrained face the point may replace t together with its neighbour),
+      // at the regular height and at half of it.
+      for (const double scale : { 1.0, -1.0, 0.5, -0.5 })
+      {
+        const double sgn = (side >= 0 ? h : -h) * scale / nn;
+        std::array<double, 3> apex;
+        for (int k = 0; k < 3; ++k)
+          apex[k] = (f[0][k] + f[1][k] + f[2][k]) / 3 + sgn * n[k];
+        cand.push_back(apex);
+      }
+    }
+    // A tet spanned by four boundary vertices (a cap or sliver against the boundary) also gets points off
+    // each edge midpoint along the normals of the edge's two faces, both ways, at half and at the full
+    // edge length: the point that opens a crease or an interior edge of the cap is often there.
+    if (locked[tv[0]] && locked[tv[1]] && locked[tv[2]] && locked[tv[3]])
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+          const double len = std::sqrt(sqDist(p[i], p[j]));
+          for (int k = 0; k < 4; ++k)
+          {
+            if (k == i || k == j)
+              continue;
+            double u[3], w[3], n[3];
+            for (int c = 0; c < 3; ++c)
+            {
+              u[c] = p[j][c] - p[i][c];
+              w[c] = p[k][c] - p[i][c];
+            }
+            n[0] = u[1] * w[2] - u[2] * w[1];
+            n[1] = u[2] * w[0] - u[0] * w[2];
+            n[2] = u[0] * w[1] - u[1] * w[0];
+            const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            if (!(nn > 0))
+              continue;
+            for (const double scale : { 0.5, -0.5, 1.0, -1.0 })
+              cand.push_back({ (p[i][0] + p[j][0]) / 2 + scale * len * n[0] / nn,
+                (p[i][1] + p[j][1]) / 2 + scale * len * n[1] / nn, (p[i][2] + p[j][2]) / 2 + scale * len * n[2] / nn });
+          }
+        }
+    // Score a position: the worst new tet, when the cavity replaces t and beats what it replaces.
+    const int32_t nv = mesh.addPoint(cand[0].data()); // coordinates overwritten below (p may move)
+    double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
+    double best = -3; // best score so far: positions that cannot beat it are pruned
+    auto score = [&](const double* y) {
+      if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
+        return -3.0;
+      std::copy(y, y + 3, x);
+      const int32_t start = editor.locate(y, t);
+      if (start < 0)
+        return -3.0;
+      double replaced = 2;
+      const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24, best);
+      return q > replaced || (speculative && q > 0) ? q : -3.0;
+    };
+    std::array<double, 3> at{};
+    for (const auto& c : cand)
+    {
+      const double q = score(c.data());
+      if (q > best)
+      {
+        best = q;
+        at = c;
+      }
+    }
+    if (best > -3)
+    {
+      static const double dirs[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+      double step = 0.2 * lmean;
+      for (int it = 0; it < 12 && step > 0.01 * lmean; ++it)
+      {
+        bool moved = false;
+        for (const auto& d : dirs)
+        {
+          const std::array<double, 3> y = { at[0] + step * d[0], at[1] + step * d[1], at[2] + step * d[2] };
+          const double q = score(y.data());
+          if (q > best)
+          {
+            best = q;
+            at = y;
+            moved = true;
+            break;
+          }
+        }
+        if (!moved)
+          step *= 0.5;
+      }
+    }
+    if (best > 0 && (best > qt || speculative))
+    {
+      std::copy(at.begin(), at.end(), x);
+      const int32_t start = editor.locate(x, t);
+      if (start >= 0 && editor.qualityInsertion(nv, start, t, nullptr, true) > -3) // inserted
+      {
+        ++inserted;
+        continue;
+      }
+    }
+    mesh.points.resize(mesh.points.size() - 3); // the last vertex, used by no tet
+  }
+  return inserted;
+}
+
+} // namespace volgrid

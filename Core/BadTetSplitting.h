@@ -1,0 +1,33 @@
+// Splitting of the tets the optimiser cannot fix (MeshImprovement.h, stage 4): slivers and caps spanned
+// by boundary vertices, which no flip or move can change without touching the boundary.
+//
+// Tets still below `degrees` after optimisation (typically slivers and caps spanned by boundary vertices,
+// which no flip or move can fix) are removed by a new interior point, inserted with the quality-driven
+// cavity of TetEditor::qualityInsertion at the position where the worst tet it creates is best:
+// candidates (edge midpoints, centroid, circumcentre, points over each face on both sides at the height of
+// a regular tet and at half of it; for a tet spanned by four boundary vertices also points off each edge
+// midpoint along its two faces' normals) scored without touching the mesh, then a pattern search from the
+// best one. The point goes in only when its cavity holds the bad tet and its worst new tet beats both the bad
+// tet and the worst tet it replaces: every insertion is a strict local improvement. Constrained faces are
+// never crossed, so the boundary is untouched. Returns the number of points inserted.
+//
+// speculative: the worst tet gets the best point found even when that does not improve it at once (the
+// caller optimises around it and keeps the result only if the mesh's worst tet got better).
+#pragma once
+
+#include "TetEditor.h"
+#include "TetMesh.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace volgrid
+{
+
+// Tets below `degrees` (of min(theta_min, 180 - theta_max)), worst first after skipping `skip` of them;
+// at most maxPoints points. labels (per tet slot, optional) follow the new tets.
+int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
+  double degrees, int64_t maxPoints, bool speculative = false, size_t skip = 0);
+
+} // namespace volgrid
