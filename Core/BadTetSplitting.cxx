@@ -126,7 +126,9 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     // A tet spanned by four boundary vertices (a cap or sliver against the boundary) also gets points off
     // each edge midpoint along the normals of the edge's two faces, both ways, at half and at the full
     // edge length: the point that opens a crease or an interior edge of the cap is often there.
-    if (locked[tv[0]] && locked[tv[1]] && locked[tv[2]] && locked[tv[3]])
+    // (Vertices inserted by this call are interior: past the end of `locked`, which predates them.)
+    auto isLocked = [&](int32_t x) { return static_cast<size_t>(x) < locked.size() && locked[x] != 0; };
+    if (isLocked(tv[0]) && isLocked(tv[1]) && isLocked(tv[2]) && isLocked(tv[3]))
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
         {
