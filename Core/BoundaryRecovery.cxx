@@ -1148,9 +1148,10 @@ private:
 // Stop adding Steiner points after this many consecutive rounds in which the number of missing edges grew.
 static constexpr int kMaxGrowingRounds = 3;
 // Work budget of the flip stages, in edge-removal attempts: kWorkPerMissingEdge per initially missing edge
-// plus kWorkBase. Cases that recover need far less (< 10 per missing edge on the corpus); cases that do
-// not would otherwise spend minutes before reporting RecoveryFailed.
-static constexpr uint64_t kWorkPerMissingEdge = 60, kWorkBase = 20000;
+// plus kWorkBase. Most cases need far less (< 10 per missing edge); CAD models with long thin triangles
+// need up to ~1000. Once it is spent, flips stop and what is missing gets Steiner points (bounded by the
+// Steiner budget and the growth guard), so hopeless cases still end in seconds.
+static constexpr uint64_t kWorkPerMissingEdge = 1000, kWorkBase = 100000;
 
 Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
@@ -1241,7 +1242,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     else
       growing = 0;
     prevMissing = missingEdges.size();
-    if (growing >= kMaxGrowingRounds || outOfWork)
+    if (growing >= kMaxGrowingRounds)
       break;
     if (!failedEdges.empty())
     {
@@ -1301,7 +1302,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
             if (pr->cancelled())
               return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
           }
-          if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats))
+          if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats) &&
+            !recoverFacetByPieces(ed, bc, par, subs, &cavityStats))
             fallback[static_cast<size_t>(par)] = 1;
         }
       }
@@ -1324,8 +1326,6 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       if (outOfWork || !rec.recoverFacetByFlips(s[0], s[1], s[2]))
         failedFaces.push_back(f);
     }
-    if (outOfWork)
-      break;
     if (failedFaces.empty() || edgesNeeded)
       continue; // re-check edges (flips never remove constraint edges, so this ends quickly)
     if (!options.allowSteiner || steinerUsed >= budget)

@@ -9,6 +9,8 @@
 //   2. Missing facets: once every segment (input edge, or piece of one between Steiner points) is
 //      present, each input triangle with missing subfaces is re-triangulated as a whole by cavity
 //      retetrahedralization (FacetRecovery.h): its inner subface edges need not be recovered first.
+//      When its pieces are not coplanar (rounded segment Steiner points), it is re-triangulated with
+//      diagonals the mesh has and each piece is recovered as its own triangle (recoverFacetByPieces).
 //      When that fails for a triangle, its subface edges and subfaces are recovered one by one as before:
 //      the edges crossing a subface are removed by edge removal or 2-3 flips.
 //   3. What flips cannot recover gets a Steiner point (paper: "points at the intersection of the missing
@@ -19,8 +21,9 @@
 // Flips and insertions never destroy a recovered subface or subsegment (they are constraints).
 // Whatever cannot be recovered is reported as ErrorKind::RecoveryFailed, with the counts, the first
 // input triangles concerned and why recovery stopped: the Steiner budget, the missing-edge count growing
-// for three rounds (Steiner points that do not converge), or the flip work budget (edge-removal attempts,
-// 60 per initially missing edge + 20000) that keeps hopeless cases to seconds.
+// for three rounds (Steiner points that do not converge); the flip work budget (edge-removal attempts,
+// 1000 per initially missing edge + 100000) keeps hopeless cases to seconds: once spent, only Steiner
+// points are added.
 #pragma once
 
 #include "Progress.h"

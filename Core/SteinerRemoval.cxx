@@ -406,6 +406,8 @@ public:
 private:
   static constexpr int kMaxLayers = 3;
   static constexpr int kMaxFillGrowth = 16;
+  // Cavity size limit: the growth checks are quadratic in it, and larger cavities do not succeed.
+  static constexpr size_t kMaxCavity = 400;
 
   // Add to side sd's cavity the tet beyond its face f (oriented with the cavity on its positive side):
   // never across a constraint, never a tet of the cavity, never swallowing a vertex.
@@ -416,6 +418,8 @@ private:
     int face = -1;
     int32_t x = ed_.findFace(f[0], f[1], f[2], &face);
     if (x < 0)
+      return false;
+    if (cav.size() >= kMaxCavity)
       return false;
     auto inCav = [&](int32_t t) { return std::find(cav.begin(), cav.end(), t) != cav.end(); };
     if (inCav(x))
@@ -540,6 +544,8 @@ private:
     bool any = false;
     for (int32_t u : layer)
     {
+      if (cav.size() >= kMaxCavity)
+        break;
       cav.push_back(u);
       cavSide.push_back(sd);
       if (!vertexOnBoundary(p, sd))
@@ -553,42 +559,54 @@ private:
     return any;
   }
 
-  // Every vertex of side sd's cavity tets (but p) is on a face of the cavity not containing p, or on p's
-  // subfaces (which keep their outer vertices on the new boundary triangles).
+  // After adding tet u to side sd's cavity (whose vertices were all on its boundary before): u's vertices
+  // other than p are still on a face of the cavity's boundary (only u's vertices can have lost one).
   bool vertexOnBoundary(int32_t p, int sd)
   {
-    const uint32_t s = ed_.newStamp();
+    const int32_t u = cav.back();
+    // Own marks: star() reuses the editor's stamps.
+    if (mark_.size() < static_cast<size_t>(m_.tetCapacity()))
+      mark_.resize(static_cast<size_t>(m_.tetCapacity()) + 1024, 0);
+    if (++markStamp_ == 0)
+    {
+      std::fill(mark_.begin(), mark_.end(), 0);
+      markStamp_ = 1;
+    }
+    const uint32_t s = markStamp_;
     for (size_t k = 0; k < cav.size(); ++k)
       if (cavSide[k] == sd)
-        ed_.tetStamp[cav[k]] = s;
-    verts_.clear();
-    onB_.clear();
-    int32_t f[3];
-    for (size_t k = 0; k < cav.size(); ++k)
+        mark_[cav[k]] = s;
+    for (int j = 0; j < 4; ++j)
     {
-      if (cavSide[k] != sd)
+      const int32_t w = m_.vertex(u, j);
+      if (w == p)
         continue;
-      const int32_t t = cav[k];
-      for (int i = 0; i < 4; ++i)
+      ed_.star(w, star_);
+      bool on = false;
+      for (size_t k = 0; k < star_.size() && !on; ++k)
       {
-        if (m_.vertex(t, i) != p)
-          verts_.push_back(m_.vertex(t, i));
-        const int32_t u = m_.neighbor(t, i);
-        if (u >= 0 && ed_.tetStamp[u] == s)
+        const int32_t t = star_[k];
+        if (mark_[t] != s)
           continue;
-        m_.faceVertices(t, i, f);
-        for (int j = 0; j < 3; ++j)
-          if (f[j] != p)
-            onB_.push_back(f[j]);
+        const int lw = m_.localIndex(t, w);
+        for (int i = 0; i < 4 && !on; ++i)
+        {
+          if (i == lw)
+            continue;
+          const int32_t n = m_.neighbor(t, i);
+          on = n < 0 || mark_[n] != s;
+        }
       }
-    }
-    std::sort(onB_.begin(), onB_.end());
-    for (int32_t v : verts_)
-      if (!std::binary_search(onB_.begin(), onB_.end(), v))
+      if (!on)
         return false;
+    }
     return true;
   }
-  std::vector<int32_t> verts_, onB_;
+  std::vector<int32_t> star_;
+  std::vector<uint32_t> mark_;
+  uint32_t markStamp_ = 0;
+
+  std::vector<int32_t> verts_;
 
   // A point strictly inside the cavity bounded by `faces` (each seen positively from inside), near p.
   // Candidates, best shape first among the valid ones: p pushed along the mean normal of the faces through

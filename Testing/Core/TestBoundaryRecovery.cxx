@@ -231,3 +231,52 @@ TEST(BoundaryRecovery, DelaunayCavityFill)
   EXPECT_FALSE(fillCavityDelaunay(m, other, tets, &missing));
   EXPECT_EQ(missing.size(), 2u);
 }
+
+// An input triangle ABC split by a segment Steiner point M that rounding put just off its plane: the
+// pieces AMC and MBC are not coplanar, so the whole-triangle cavity does not apply, but each piece is a
+// triangle of its own (recoverFacetByPieces / recoverSubfaceByCavity). AMC is crossed by edge PQ; MBC
+// is already a face (the two bipyramids are joined along MC by tets PMCR and QMCS).
+TEST(BoundaryRecovery, NonCoplanarPiecesRecovered)
+{
+  const double pts[8][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 1, 2, 0 }, { 1, 0, 1e-17 }, { 0.7, 0.5, 1 }, { 0.7, 0.5, -1 },
+    { 1.4, 0.6, 1 }, { 1.4, 0.6, -1 } };
+  enum { A, B, C, M, P, Q, R, S };
+  auto build = [&](TetMesh& m) {
+    for (auto& p : pts)
+      m.addPoint(p);
+    std::vector<std::array<int32_t, 4>> tets = { { P, Q, A, M }, { P, Q, M, C }, { P, Q, C, A }, { M, B, C, R },
+      { M, B, C, S }, { P, M, C, R }, { Q, M, C, S } };
+    for (auto& t : tets)
+      if (predicates::orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
+        std::swap(t[0], t[1]);
+    MeshEditor ed(m);
+    EXPECT_TRUE(ed.replace({}, tets, nullptr, true));
+  };
+  ASSERT_NE(predicates::orient3d(pts[A], pts[B], pts[C], pts[M]), 0);
+  auto constraints = [](BoundaryConstraints& bc, std::vector<int32_t>& subs) {
+    const int32_t tri[3] = { A, B, C };
+    bc.init(tri, 1);
+    bc.removeSubface(0);
+    subs = { bc.addSubface(A, M, C, 0), bc.addSubface(M, B, C, 0) };
+  };
+  {
+    TetMesh m;
+    build(m);
+    MeshEditor ed(m);
+    BoundaryConstraints bc;
+    std::vector<int32_t> subs;
+    constraints(bc, subs);
+    EXPECT_FALSE(recoverFacetByCavity(ed, bc, 0, subs)); // the plane of ABC does not split the cavity
+  }
+  TetMesh m;
+  build(m);
+  MeshEditor ed(m);
+  BoundaryConstraints bc;
+  std::vector<int32_t> subs;
+  constraints(bc, subs);
+  ASSERT_TRUE(recoverFacetByPieces(ed, bc, 0, subs));
+  EXPECT_GE(ed.findFace(A, M, C), 0);
+  EXPECT_GE(ed.findFace(M, B, C), 0);
+  EXPECT_LT(ed.findEdge(P, Q), 0);
+  EXPECT_TRUE(allPresent(ed, bc));
+}
