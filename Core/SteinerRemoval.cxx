@@ -307,8 +307,9 @@ public:
             sideRegion[sd] = (*region_)[S[k]];
         // The cavity of this side: p's star on this side, enlarged by layers of outer tets when no point
         // sees all of its faces (a reflex or flat neighbourhood of p).
-        bool found = false, facesValid = false;
-        for (int layer = 0; layer <= kMaxLayers && !found; ++layer)
+        bool found = false, facesValid = false, coned = false;
+        std::vector<std::array<int32_t, 4>> cone;
+        for (int layer = 0; layer <= kMaxLayers && !found && !coned; ++layer)
         {
           facesValid = false;
           if (layer > 0 && !enlarge(p, sd, newTris))
@@ -317,6 +318,19 @@ public:
             break;
           facesValid = true;
           found = findPoint(p, faces, sidePoint[sd].data());
+          // p's star may be flat (p rounded just outside a planar part of the boundary, between two
+          // triangulations of it): the cone from one of the cavity's own vertices then fills it.
+          coned = !found && coneFromVertex(faces, cone);
+        }
+        if (coned)
+        {
+          sideFilled[static_cast<size_t>(sd)] = 1;
+          for (auto& t : cone)
+          {
+            newTets.push_back(t);
+            newTetSide.push_back(sd);
+          }
+          continue;
         }
         if (!found)
         {
@@ -607,6 +621,50 @@ private:
   uint32_t markStamp_ = 0;
 
   std::vector<int32_t> verts_;
+
+  // The cavity bounded by `faces` (each seen positively from inside) is star-shaped from one of its
+  // vertices v: v sees every face not containing it strictly. The cone of those faces from v then fills
+  // it (p collapsed onto v; the faces through v are matched by the cone's sides). The vertex giving the
+  // best-shaped tets is chosen.
+  bool coneFromVertex(const std::vector<std::array<int32_t, 3>>& faces, std::vector<std::array<int32_t, 4>>& tets)
+  {
+    std::vector<int32_t> verts;
+    for (auto& fc : faces)
+      verts.insert(verts.end(), fc.begin(), fc.end());
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    int32_t best = -1;
+    double bestQ = 0;
+    for (int32_t v : verts)
+    {
+      const double* V = m_.point(v);
+      double q = 1e300;
+      for (auto& fc : faces)
+      {
+        if (fc[0] == v || fc[1] == v || fc[2] == v)
+          continue;
+        const double *A = m_.point(fc[0]), *B = m_.point(fc[1]), *C = m_.point(fc[2]);
+        if (orient3d(A, B, C, V) <= 0)
+        {
+          q = -1;
+          break;
+        }
+        q = std::min(q, quality::tetShapeMeasure(A, B, C, V));
+      }
+      if (q >= 0 && (best < 0 || q > bestQ))
+      {
+        bestQ = q;
+        best = v;
+      }
+    }
+    if (best < 0)
+      return false;
+    tets.clear();
+    for (auto& fc : faces)
+      if (fc[0] != best && fc[1] != best && fc[2] != best)
+        tets.push_back({ { fc[0], fc[1], fc[2], best } });
+    return !tets.empty();
+  }
 
   // A point strictly inside the cavity bounded by `faces` (each seen positively from inside), near p.
   // Candidates, best shape first among the valid ones: p pushed along the mean normal of the faces through
