@@ -18,7 +18,9 @@
 //      (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
 //      made star-shaped exactly. The boundary triangles are then split into subfaces (BoundaryConstraints)
 //      and the pieces are recovered in turn. SteinerRemoval.h later removes every such boundary point.
-// Flips and insertions never destroy a recovered subface or subsegment (they are constraints).
+// Flips and insertions never destroy a recovered subface or subsegment (they are constraints), and
+// never create an edge between two points of a split input segment other than its pieces
+// (BoundaryConstraints::forbiddenEdge; the same holds for facet cavities and Steiner removal).
 // Whatever cannot be recovered is reported as ErrorKind::RecoveryFailed, with the counts, the first
 // input triangles concerned and why recovery stopped: the Steiner budget, the missing-edge count growing
 // for three rounds (Steiner points that do not converge); the flip work budget (edge-removal attempts,
@@ -99,12 +101,21 @@ public:
   // Edges used by more than two subfaces seen by init() (the input was not manifold).
   int64_t nonManifoldEdges() const { return nonManifold_; }
 
+  // Segment Steiner points: v was put on input edge (a, b) (segment `original`, split before or not).
+  void addSegmentPoint(int32_t v, int32_t a, int32_t b);
+  // An edge uv that must not be created: both ends on one split input segment without being one of its
+  // pieces. Rounded segment points lie just off the segment, so such an edge would run alongside the
+  // pieces and fold the boundary (flat tets that Steiner removal cannot undo).
+  bool forbiddenEdge(int32_t u, int32_t v) const;
+
   std::vector<int32_t> verts;  // 3 per subface
   std::vector<int32_t> parent; // input triangle id, -1 = removed
 
 private:
   std::unordered_map<TriKey, int32_t, TriKeyHash> faces_;
   std::unordered_map<uint64_t, std::array<int32_t, 2>> edges_;
+  std::unordered_map<int32_t, uint64_t> segmentOf_; // segment Steiner point -> its input segment
+  std::unordered_set<uint64_t> splitSegments_;
   int32_t numAlive_ = 0;
   int32_t numInput_ = 0;
   int64_t nonManifold_ = 0;

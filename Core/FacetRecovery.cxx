@@ -154,7 +154,7 @@ public:
     }
     if (borderSeen != border_.size())
       return false;
-    if (!interiorConstraintsFree())
+    if (!interiorConstraintsFree() || createsForbiddenEdge(newTets))
       return false;
     std::vector<int32_t> old;
     old.reserve(tetSide_.size());
@@ -453,6 +453,23 @@ private:
       newTets.push_back({ { global(v[0]), global(v[1]), global(v[2]), global(v[3]) } });
     }
     return 0;
+  }
+
+  // A new edge (not on the cavity's boundary) running along a split segment
+  // (BoundaryConstraints::forbiddenEdge).
+  bool createsForbiddenEdge(const std::vector<std::array<int32_t, 4>>& newTets)
+  {
+    std::unordered_set<uint64_t> kept;
+    for (int s = 0; s < 2; ++s)
+      for (auto& [k, bf] : faces_[s])
+        for (int i = 0; i < 3; ++i)
+          kept.insert(edgeKey(bf.v[i], bf.v[(i + 1) % 3]));
+    static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+    for (auto& q : newTets)
+      for (auto& e : kEdge)
+        if (!kept.count(edgeKey(q[e[0]], q[e[1]])) && bc_.forbiddenEdge(q[e[0]], q[e[1]]))
+          return true;
+    return false;
   }
 
   // The removed tets' interior faces and edges must not be constraints of another triangle.

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <unordered_map>
+#include <unordered_set>
 #include <string>
 
 namespace volgrid
@@ -23,8 +25,10 @@ namespace
 
 // Ear clipping of a polygon (point ids, counter-clockwise in the parent's orientation) in the projection
 // that drops `axis`; `o` is the sign of a counter-clockwise turn in that projection.
+// `allowed(a, c)` says whether diagonal ac may be created (not along a split segment).
+template <class Allowed>
 bool triangulatePolygon3(const TetMesh& m, std::vector<int32_t> poly, int axis, int o,
-  std::vector<std::array<int32_t, 3>>& out)
+  std::vector<std::array<int32_t, 3>>& out, const Allowed& allowed)
 {
   while (poly.size() > 3)
   {
@@ -35,7 +39,7 @@ bool triangulatePolygon3(const TetMesh& m, std::vector<int32_t> poly, int axis, 
     {
       const int32_t a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
       const double *A = m.point(a), *B = m.point(b), *C = m.point(c);
-      if (predicates::orient2dProjected(A, B, C, axis) != o)
+      if (predicates::orient2dProjected(A, B, C, axis) != o || (n > 3 && !allowed(a, c)))
         continue;
       bool empty = true;
       for (size_t k = 0; k < n && empty; ++k)
@@ -131,6 +135,7 @@ public:
       std::vector<int32_t> v;
       int axis, o;
       int32_t parent;
+      bool closed;
     };
     std::vector<Poly> polys;
     std::vector<std::array<int32_t, 3>> newTris;
@@ -194,7 +199,7 @@ public:
           axis = k;
       // Sign of a counter-clockwise turn when dropping `axis` (right-handed cyclic order).
       const int o = nrm[axis] > 0 ? 1 : -1;
-      polys.push_back({ poly, axis, o, par });
+      polys.push_back({ poly, axis, o, par, closed });
     }
     // Sides: components of S across faces containing p that are not subfaces.
     const uint32_t s0 = ed_.newStamp();
@@ -276,17 +281,28 @@ public:
       good = true;
       for (auto& pl : polys)
       {
+        // New edges may not run along a split segment, except the piece that replaces p's two pieces
+        // (the ends of an open polygon).
+        auto allowed = [&](int32_t a, int32_t c) {
+          if (!pl.closed && edgeKey(a, c) == edgeKey(pl.v.front(), pl.v.back()))
+            return true;
+          return !bc_.forbiddenEdge(a, c);
+        };
         std::vector<std::array<int32_t, 3>> tris;
         if (variant == 0 || pl.v.size() == 3)
         {
-          if (!triangulatePolygon3(m_, pl.v, pl.axis, pl.o, tris))
+          if (!triangulatePolygon3(m_, pl.v, pl.axis, pl.o, tris, allowed))
             good = false;
         }
         else
         {
           const size_t n = pl.v.size(), r = (variant - 1) % n;
           for (size_t k = 1; k + 1 < n; ++k)
+          {
             tris.push_back({ { pl.v[r], pl.v[(r + k) % n], pl.v[(r + k + 1) % n] } });
+            if (k + 2 < n && !allowed(pl.v[r], pl.v[(r + k + 1) % n]))
+              good = false;
+          }
         }
         for (auto& tr : tris)
         {
@@ -320,7 +336,7 @@ public:
           found = findPoint(p, faces, sidePoint[sd].data());
           // p's star may be flat (p rounded just outside a planar part of the boundary, between two
           // triangulations of it): the cone from one of the cavity's own vertices then fills it.
-          coned = !found && coneFromVertex(faces, cone);
+          coned = !found && coneFromVertex(faces, cone) && !foldsSegment(faces, cone);
         }
         if (coned)
         {
@@ -342,6 +358,8 @@ public:
           {
             if (fillCavityDelaunay(m_, faces, fill, &missing))
             {
+              if (foldsSegment(faces, fill))
+                break;
               filled = true;
               break;
             }
@@ -622,6 +640,22 @@ private:
 
   std::vector<int32_t> verts_;
 
+  // A tet of `tets` has an edge, not on the cavity's boundary `faces`, that runs along a split input
+  // segment (BoundaryConstraints::forbiddenEdge).
+  bool foldsSegment(const std::vector<std::array<int32_t, 3>>& faces, const std::vector<std::array<int32_t, 4>>& tets)
+  {
+    std::unordered_set<uint64_t> kept;
+    for (auto& fc : faces)
+      for (int i = 0; i < 3; ++i)
+        kept.insert(edgeKey(fc[i], fc[(i + 1) % 3]));
+    static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+    for (auto& q : tets)
+      for (auto& e : kEdge)
+        if (!kept.count(edgeKey(q[e[0]], q[e[1]])) && bc_.forbiddenEdge(q[e[0]], q[e[1]]))
+          return true;
+    return false;
+  }
+
   // The cavity bounded by `faces` (each seen positively from inside) is star-shaped from one of its
   // vertices v: v sees every face not containing it strictly. The cone of those faces from v then fills
   // it (p collapsed onto v; the faces through v are matched by the cone's sides). The vertex giving the
@@ -633,6 +667,31 @@ private:
       verts.insert(verts.end(), fc.begin(), fc.end());
     std::sort(verts.begin(), verts.end());
     verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    // The cone must close up: each cavity face once, every other face of its tets twice (a cavity whose
+    // boundary is not a simple surface, e.g. with zero-volume parts, fails this).
+    auto closes = [&](int32_t v) {
+      std::unordered_map<TriKey, int, TriKeyHash> count;
+      for (auto& fc : faces)
+      {
+        if (fc[0] == v || fc[1] == v || fc[2] == v)
+          continue;
+        ++count[TriKey(fc[0], fc[1], fc[2])];
+        ++count[TriKey(fc[0], fc[1], v)];
+        ++count[TriKey(fc[1], fc[2], v)];
+        ++count[TriKey(fc[2], fc[0], v)];
+      }
+      for (auto& fc : faces)
+      {
+        auto it = count.find(TriKey(fc[0], fc[1], fc[2]));
+        if (it == count.end() || it->second != 1)
+          return false;
+        it->second = 2;
+      }
+      for (auto& [k, n] : count)
+        if (n != 2)
+          return false;
+      return true;
+    };
     int32_t best = -1;
     double bestQ = 0;
     for (int32_t v : verts)
@@ -651,7 +710,7 @@ private:
         }
         q = std::min(q, quality::tetShapeMeasure(A, B, C, V));
       }
-      if (q >= 0 && (best < 0 || q > bestQ))
+      if (q >= 0 && (best < 0 || q > bestQ) && closes(v))
       {
         bestQ = q;
         best = v;
