@@ -41,6 +41,8 @@ void BoundaryConstraints::init(const int32_t* triangles, int32_t numTriangles)
   edges_.clear();
   numAlive_ = 0;
   nonManifold_ = 0;
+  segmentOf_.clear();
+  splitSegments_.clear();
   numInput_ = numTriangles;
   // A closed surface has 3/2 edges per triangle (Steiner splits grow the maps when needed).
   faces_.reserve(static_cast<size_t>(numTriangles));
@@ -96,6 +98,29 @@ void BoundaryConstraints::removeSubface(int32_t f)
   }
   parent[f] = -1;
   --numAlive_;
+}
+
+void BoundaryConstraints::addSegmentPoint(int32_t v, int32_t a, int32_t b)
+{
+  auto ia = segmentOf_.find(a), ib = segmentOf_.find(b);
+  const uint64_t seg = ia != segmentOf_.end() ? ia->second : ib != segmentOf_.end() ? ib->second : edgeKey(a, b);
+  segmentOf_[v] = seg;
+  splitSegments_.insert(seg);
+}
+
+bool BoundaryConstraints::forbiddenEdge(int32_t u, int32_t v) const
+{
+  if (splitSegments_.empty() || isEdge(u, v))
+    return false;
+  if (splitSegments_.count(edgeKey(u, v)))
+    return true;
+  auto iu = segmentOf_.find(u), iv = segmentOf_.find(v);
+  auto onSeg = [](uint64_t seg, int32_t w) {
+    return static_cast<int32_t>(seg >> 32) == w || static_cast<int32_t>(seg & 0xffffffffu) == w;
+  };
+  if (iu != segmentOf_.end() && (onSeg(iu->second, v) || (iv != segmentOf_.end() && iv->second == iu->second)))
+    return true;
+  return iv != segmentOf_.end() && onSeg(iv->second, u);
 }
 
 int32_t BoundaryConstraints::findSubface(int32_t a, int32_t b, int32_t c) const
@@ -383,6 +408,8 @@ bool MeshEditor::flip23(int32_t t, int face, const BoundaryConstraints* bc, std:
     return false;
   const int32_t p = mesh.vertex(t, face);
   const int32_t q = mesh.vertex(u, mesh.mirrorFace(t, face));
+  if (bc && bc->forbiddenEdge(p, q))
+    return false;
   const double *P = mesh.point(p), *Q = mesh.point(q), *A = mesh.point(f[0]), *B = mesh.point(f[1]),
                *C = mesh.point(f[2]);
   if (orient3d(Q, B, C, P) <= 0 || orient3d(A, Q, C, P) <= 0 || orient3d(A, B, Q, P) <= 0)
@@ -420,7 +447,10 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
   const double kInvalid = -std::numeric_limits<double>::infinity();
   std::vector<double> best(static_cast<size_t>(n * n), kInvalid);
   std::vector<int> choice(static_cast<size_t>(n * n), -1);
+  auto chordOk = [&](int i, int j) { return j == i + 1 || (i == 0 && j == n - 1) || !bc->forbiddenEdge(ring[i], ring[j]); };
   auto triQ = [&](int i, int k, int j) -> double {
+    if (bc && (!chordOk(i, k) || !chordOk(k, j) || !chordOk(i, j)))
+      return kInvalid;
     const double *A = mesh.point(ring[i]), *B = mesh.point(ring[k]), *C = mesh.point(ring[j]);
     if (orient3d(A, B, C, Y) <= 0 || orient3d(A, C, B, X) <= 0)
       return kInvalid;
@@ -1091,6 +1121,8 @@ public:
       kinds_.pop_back();
       return false;
     }
+    if (!sameParent)
+      bc_.addSegmentPoint(v, a, b);
     for (int32_t fid : fs)
     {
       if (fid < 0)
@@ -1152,9 +1184,10 @@ private:
 // Stop adding Steiner points after this many consecutive rounds in which the number of missing edges grew.
 static constexpr int kMaxGrowingRounds = 3;
 // Work budget of the flip stages, in edge-removal attempts: kWorkPerMissingEdge per initially missing edge
-// plus kWorkBase. Cases that recover need far less (< 10 per missing edge on the corpus); cases that do
-// not would otherwise spend minutes before reporting RecoveryFailed.
-static constexpr uint64_t kWorkPerMissingEdge = 60, kWorkBase = 20000;
+// plus kWorkBase. Most cases need far less (< 10 per missing edge); CAD models with long thin triangles
+// need up to ~1000. Once it is spent, flips stop and what is missing gets Steiner points (bounded by the
+// Steiner budget and the growth guard), so hopeless cases still end in seconds.
+static constexpr uint64_t kWorkPerMissingEdge = 1000, kWorkBase = 100000;
 
 Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
@@ -1251,7 +1284,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     else
       growing = 0;
     prevMissing = missingEdges.size();
-    if (growing >= kMaxGrowingRounds || outOfWork)
+    if (growing >= kMaxGrowingRounds)
       break;
     if (!failedEdges.empty())
     {
@@ -1308,7 +1341,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
             if (pr->cancelled())
               return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
           }
-          if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats))
+          if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats) &&
+            !recoverFacetByPieces(ed, bc, par, subs, &cavityStats))
             fallback[static_cast<size_t>(par)] = 1;
         }
       }
@@ -1331,8 +1365,6 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       if (outOfWork || !rec.recoverFacetByFlips(s[0], s[1], s[2]))
         failedFaces.push_back(f);
     }
-    if (outOfWork)
-      break;
     if (failedFaces.empty() || edgesNeeded)
       continue; // re-check edges (flips never remove constraint edges, so this ends quickly)
     if (!options.allowSteiner || steinerUsed >= budget)

@@ -9,6 +9,8 @@
 //   2. Missing facets: once every segment (input edge, or piece of one between Steiner points) is
 //      present, each input triangle with missing subfaces is re-triangulated as a whole by cavity
 //      retetrahedralization (FacetRecovery.h): its inner subface edges need not be recovered first.
+//      When its pieces are not coplanar (rounded segment Steiner points), it is re-triangulated with
+//      diagonals the mesh has and each piece is recovered as its own triangle (recoverFacetByPieces).
 //      When that fails for a triangle, its subface edges and subfaces are recovered one by one as before:
 //      the edges crossing a subface are removed by edge removal or 2-3 flips.
 //   3. What flips cannot recover gets a Steiner point (paper: "points at the intersection of the missing
@@ -16,11 +18,14 @@
 //      (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
 //      made star-shaped exactly. The boundary triangles are then split into subfaces (BoundaryConstraints)
 //      and the pieces are recovered in turn. SteinerRemoval.h later removes every such boundary point.
-// Flips and insertions never destroy a recovered subface or subsegment (they are constraints).
+// Flips and insertions never destroy a recovered subface or subsegment (they are constraints), and
+// never create an edge between two points of a split input segment other than its pieces
+// (BoundaryConstraints::forbiddenEdge; the same holds for facet cavities and Steiner removal).
 // Whatever cannot be recovered is reported as ErrorKind::RecoveryFailed, with the counts, the first
 // input triangles concerned and why recovery stopped: the Steiner budget, the missing-edge count growing
-// for three rounds (Steiner points that do not converge), or the flip work budget (edge-removal attempts,
-// 60 per initially missing edge + 20000) that keeps hopeless cases to seconds.
+// for three rounds (Steiner points that do not converge); the flip work budget (edge-removal attempts,
+// 1000 per initially missing edge + 100000) keeps hopeless cases to seconds: once spent, only Steiner
+// points are added.
 #pragma once
 
 #include "FlatHashMap.h"
@@ -97,6 +102,13 @@ public:
   // Edges used by more than two subfaces seen by init() (the input was not manifold).
   int64_t nonManifoldEdges() const { return nonManifold_; }
 
+  // Segment Steiner points: v was put on input edge (a, b) (segment `original`, split before or not).
+  void addSegmentPoint(int32_t v, int32_t a, int32_t b);
+  // An edge uv that must not be created: both ends on one split input segment without being one of its
+  // pieces. Rounded segment points lie just off the segment, so such an edge would run alongside the
+  // pieces and fold the boundary (flat tets that Steiner removal cannot undo).
+  bool forbiddenEdge(int32_t u, int32_t v) const;
+
   std::vector<int32_t> verts;  // 3 per subface
   std::vector<int32_t> parent; // input triangle id, -1 = removed
 
@@ -107,6 +119,8 @@ private:
   };
   FlatHashMap<TriKey, int32_t, TriKeyHash> faces_;
   FlatHashMap<uint64_t, std::array<int32_t, 2>, EdgeKeyHash> edges_;
+  std::unordered_map<int32_t, uint64_t> segmentOf_; // segment Steiner point -> its input segment
+  std::unordered_set<uint64_t> splitSegments_;
   int32_t numAlive_ = 0;
   int32_t numInput_ = 0;
   int64_t nonManifold_ = 0;

@@ -59,15 +59,19 @@ using FaceMap = std::unordered_map<TriKey, BFace, TriKeyHash>;
 class FacetCavity
 {
 public:
-  FacetCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, const std::vector<int32_t>& subfaces)
+  // corners: the plane and extent of R (the input triangle, or the single subface when `single`). A
+  // single-subface region keeps every other constraint, its siblings included.
+  FacetCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, const std::vector<int32_t>& subfaces,
+    const int32_t* corners, bool single)
     : ed_(ed)
     , m_(ed.mesh)
     , bc_(bc)
     , parent_(parent)
     , subfaces_(subfaces)
+    , single_(single)
   {
     for (int k = 0; k < 3; ++k)
-      abc_[k] = bc.verts[3 * static_cast<size_t>(parent) + k];
+      abc_[k] = corners[k];
     A_ = m_.point(abc_[0]);
     B_ = m_.point(abc_[1]);
     C_ = m_.point(abc_[2]);
@@ -150,7 +154,7 @@ public:
     }
     if (borderSeen != border_.size())
       return false;
-    if (!interiorConstraintsFree())
+    if (!interiorConstraintsFree() || createsForbiddenEdge(newTets))
       return false;
     std::vector<int32_t> old;
     old.reserve(tetSide_.size());
@@ -451,6 +455,23 @@ private:
     return 0;
   }
 
+  // A new edge (not on the cavity's boundary) running along a split segment
+  // (BoundaryConstraints::forbiddenEdge).
+  bool createsForbiddenEdge(const std::vector<std::array<int32_t, 4>>& newTets)
+  {
+    std::unordered_set<uint64_t> kept;
+    for (int s = 0; s < 2; ++s)
+      for (auto& [k, bf] : faces_[s])
+        for (int i = 0; i < 3; ++i)
+          kept.insert(edgeKey(bf.v[i], bf.v[(i + 1) % 3]));
+    static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+    for (auto& q : newTets)
+      for (auto& e : kEdge)
+        if (!kept.count(edgeKey(q[e[0]], q[e[1]])) && bc_.forbiddenEdge(q[e[0]], q[e[1]]))
+          return true;
+    return false;
+  }
+
   // The removed tets' interior faces and edges must not be constraints of another triangle.
   bool interiorConstraintsFree()
   {
@@ -472,7 +493,7 @@ private:
         if (!ef)
           continue;
         for (int32_t sf : *ef)
-          if (sf >= 0 && bc_.parent[sf] != parent_)
+          if (sf >= 0 && (single_ || bc_.parent[sf] != parent_))
             return false;
       }
       for (int i = 0; i < 4; ++i)
@@ -482,7 +503,7 @@ private:
         if (faces_[0].count(k) || faces_[1].count(k))
           continue;
         const int32_t sf = bc_.findSubface(f[0], f[1], f[2]);
-        if (sf >= 0 && bc_.parent[sf] != parent_)
+        if (sf >= 0 && (single_ || bc_.parent[sf] != parent_))
           return false;
       }
     }
@@ -494,6 +515,7 @@ private:
   BoundaryConstraints& bc_;
   const int32_t parent_;
   const std::vector<int32_t>& subfaces_;
+  const bool single_;
   int32_t abc_[3];
   const double *A_, *B_, *C_;
   std::unordered_set<uint64_t> border_;
@@ -614,7 +636,7 @@ bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t paren
     return false;
   std::vector<std::array<int32_t, 3>> tri;
   {
-    FacetCavity fc(ed, bc, parent, subfaces);
+    FacetCavity fc(ed, bc, parent, subfaces, bc.verts.data() + 3 * static_cast<size_t>(parent), false);
     if (!fc.run(tri, stats))
       return false;
   }
@@ -623,6 +645,26 @@ bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t paren
   subfaces.clear();
   for (auto& t : tri)
     subfaces.push_back(bc.addSubface(t[0], t[1], t[2], parent));
+  if (stats)
+    ++stats->successes;
+  return true;
+}
+
+bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t subface, FacetCavityStats* stats)
+{
+  if (stats)
+    ++stats->attempts;
+  if (!bc.alive(subface))
+    return false;
+  const int32_t* s = bc.subface(subface);
+  if (ed.findFace(s[0], s[1], s[2]) >= 0)
+    return true;
+  const int32_t corners[3] = { s[0], s[1], s[2] };
+  const std::vector<int32_t> one = { subface };
+  std::vector<std::array<int32_t, 3>> tri;
+  FacetCavity fc(ed, bc, bc.parent[subface], one, corners, true);
+  if (!fc.run(tri, stats) || tri.size() != 1)
+    return false;
   if (stats)
     ++stats->successes;
   return true;

@@ -38,6 +38,20 @@ struct FacetCavityStats
 bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
   FacetCavityStats* stats = nullptr);
 
+// Recover one subface (its three edges present) as its own triangle R = the subface: the same cavity
+// method, independent of whether its sibling subfaces are coplanar with it (segment Steiner points are
+// rounded, so the pieces of a split input triangle generally are not). Every other constraint is kept.
+bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t subface, FacetCavityStats* stats = nullptr);
+
+// Recover input triangle `parent` piece by piece (FacetPieces.cxx), when recoverFacetByCavity fails: its
+// region (the polygon bounded by its subsegments) is re-triangulated, preferring diagonals that are
+// already mesh edges (dynamic programming over the polygon; no triangle spans three points of one side),
+// the listed subfaces are replaced by that triangulation in `bc`, and each missing piece whose edges
+// are present is recovered by recoverSubfaceByCavity. Regions with inner vertices keep their subfaces.
+// True when every piece is a mesh face; the new subfaces are written back to `subfaces` in any case.
+bool recoverFacetByPieces(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
+  FacetCavityStats* stats = nullptr);
+
 // Tetrahedralize a closed cavity given by its boundary faces, each oriented with the cavity on its
 // positive side (orient3d(f0,f1,f2,x) > 0 for x inside), every cavity vertex being a vertex of some
 // face: the Delaunay tetrahedralization of the face vertices must contain every face, and the tets

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <unordered_map>
+#include <unordered_set>
 #include <string>
 
 namespace volgrid
@@ -23,8 +25,10 @@ namespace
 
 // Ear clipping of a polygon (point ids, counter-clockwise in the parent's orientation) in the projection
 // that drops `axis`; `o` is the sign of a counter-clockwise turn in that projection.
+// `allowed(a, c)` says whether diagonal ac may be created (not along a split segment).
+template <class Allowed>
 bool triangulatePolygon3(const TetMesh& m, std::vector<int32_t> poly, int axis, int o,
-  std::vector<std::array<int32_t, 3>>& out)
+  std::vector<std::array<int32_t, 3>>& out, const Allowed& allowed)
 {
   while (poly.size() > 3)
   {
@@ -35,7 +39,7 @@ bool triangulatePolygon3(const TetMesh& m, std::vector<int32_t> poly, int axis, 
     {
       const int32_t a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
       const double *A = m.point(a), *B = m.point(b), *C = m.point(c);
-      if (predicates::orient2dProjected(A, B, C, axis) != o)
+      if (predicates::orient2dProjected(A, B, C, axis) != o || (n > 3 && !allowed(a, c)))
         continue;
       bool empty = true;
       for (size_t k = 0; k < n && empty; ++k)
@@ -131,6 +135,7 @@ public:
       std::vector<int32_t> v;
       int axis, o;
       int32_t parent;
+      bool closed;
     };
     std::vector<Poly> polys;
     std::vector<std::array<int32_t, 3>> newTris;
@@ -194,7 +199,7 @@ public:
           axis = k;
       // Sign of a counter-clockwise turn when dropping `axis` (right-handed cyclic order).
       const int o = nrm[axis] > 0 ? 1 : -1;
-      polys.push_back({ poly, axis, o, par });
+      polys.push_back({ poly, axis, o, par, closed });
     }
     // Sides: components of S across faces containing p that are not subfaces.
     const uint32_t s0 = ed_.newStamp();
@@ -276,17 +281,28 @@ public:
       good = true;
       for (auto& pl : polys)
       {
+        // New edges may not run along a split segment, except the piece that replaces p's two pieces
+        // (the ends of an open polygon).
+        auto allowed = [&](int32_t a, int32_t c) {
+          if (!pl.closed && edgeKey(a, c) == edgeKey(pl.v.front(), pl.v.back()))
+            return true;
+          return !bc_.forbiddenEdge(a, c);
+        };
         std::vector<std::array<int32_t, 3>> tris;
         if (variant == 0 || pl.v.size() == 3)
         {
-          if (!triangulatePolygon3(m_, pl.v, pl.axis, pl.o, tris))
+          if (!triangulatePolygon3(m_, pl.v, pl.axis, pl.o, tris, allowed))
             good = false;
         }
         else
         {
           const size_t n = pl.v.size(), r = (variant - 1) % n;
           for (size_t k = 1; k + 1 < n; ++k)
+          {
             tris.push_back({ { pl.v[r], pl.v[(r + k) % n], pl.v[(r + k + 1) % n] } });
+            if (k + 2 < n && !allowed(pl.v[r], pl.v[(r + k + 1) % n]))
+              good = false;
+          }
         }
         for (auto& tr : tris)
         {
@@ -307,8 +323,9 @@ public:
             sideRegion[sd] = (*region_)[S[k]];
         // The cavity of this side: p's star on this side, enlarged by layers of outer tets when no point
         // sees all of its faces (a reflex or flat neighbourhood of p).
-        bool found = false, facesValid = false;
-        for (int layer = 0; layer <= kMaxLayers && !found; ++layer)
+        bool found = false, facesValid = false, coned = false;
+        std::vector<std::array<int32_t, 4>> cone;
+        for (int layer = 0; layer <= kMaxLayers && !found && !coned; ++layer)
         {
           facesValid = false;
           if (layer > 0 && !enlarge(p, sd, newTris))
@@ -317,6 +334,19 @@ public:
             break;
           facesValid = true;
           found = findPoint(p, faces, sidePoint[sd].data());
+          // p's star may be flat (p rounded just outside a planar part of the boundary, between two
+          // triangulations of it): the cone from one of the cavity's own vertices then fills it.
+          coned = !found && coneFromVertex(faces, cone) && !foldsSegment(faces, cone);
+        }
+        if (coned)
+        {
+          sideFilled[static_cast<size_t>(sd)] = 1;
+          for (auto& t : cone)
+          {
+            newTets.push_back(t);
+            newTetSide.push_back(sd);
+          }
+          continue;
         }
         if (!found)
         {
@@ -328,6 +358,8 @@ public:
           {
             if (fillCavityDelaunay(m_, faces, fill, &missing))
             {
+              if (foldsSegment(faces, fill))
+                break;
               filled = true;
               break;
             }
@@ -406,6 +438,8 @@ public:
 private:
   static constexpr int kMaxLayers = 3;
   static constexpr int kMaxFillGrowth = 16;
+  // Cavity size limit: the growth checks are quadratic in it, and larger cavities do not succeed.
+  static constexpr size_t kMaxCavity = 400;
 
   // Add to side sd's cavity the tet beyond its face f (oriented with the cavity on its positive side):
   // never across a constraint, never a tet of the cavity, never swallowing a vertex.
@@ -416,6 +450,8 @@ private:
     int face = -1;
     int32_t x = ed_.findFace(f[0], f[1], f[2], &face);
     if (x < 0)
+      return false;
+    if (cav.size() >= kMaxCavity)
       return false;
     auto inCav = [&](int32_t t) { return std::find(cav.begin(), cav.end(), t) != cav.end(); };
     if (inCav(x))
@@ -540,6 +576,8 @@ private:
     bool any = false;
     for (int32_t u : layer)
     {
+      if (cav.size() >= kMaxCavity)
+        break;
       cav.push_back(u);
       cavSide.push_back(sd);
       if (!vertexOnBoundary(p, sd))
@@ -553,42 +591,139 @@ private:
     return any;
   }
 
-  // Every vertex of side sd's cavity tets (but p) is on a face of the cavity not containing p, or on p's
-  // subfaces (which keep their outer vertices on the new boundary triangles).
+  // After adding tet u to side sd's cavity (whose vertices were all on its boundary before): u's vertices
+  // other than p are still on a face of the cavity's boundary (only u's vertices can have lost one).
   bool vertexOnBoundary(int32_t p, int sd)
   {
-    const uint32_t s = ed_.newStamp();
+    const int32_t u = cav.back();
+    // Own marks: star() reuses the editor's stamps.
+    if (mark_.size() < static_cast<size_t>(m_.tetCapacity()))
+      mark_.resize(static_cast<size_t>(m_.tetCapacity()) + 1024, 0);
+    if (++markStamp_ == 0)
+    {
+      std::fill(mark_.begin(), mark_.end(), 0);
+      markStamp_ = 1;
+    }
+    const uint32_t s = markStamp_;
     for (size_t k = 0; k < cav.size(); ++k)
       if (cavSide[k] == sd)
-        ed_.tetStamp[cav[k]] = s;
-    verts_.clear();
-    onB_.clear();
-    int32_t f[3];
-    for (size_t k = 0; k < cav.size(); ++k)
+        mark_[cav[k]] = s;
+    for (int j = 0; j < 4; ++j)
     {
-      if (cavSide[k] != sd)
+      const int32_t w = m_.vertex(u, j);
+      if (w == p)
         continue;
-      const int32_t t = cav[k];
-      for (int i = 0; i < 4; ++i)
+      ed_.star(w, star_);
+      bool on = false;
+      for (size_t k = 0; k < star_.size() && !on; ++k)
       {
-        if (m_.vertex(t, i) != p)
-          verts_.push_back(m_.vertex(t, i));
-        const int32_t u = m_.neighbor(t, i);
-        if (u >= 0 && ed_.tetStamp[u] == s)
+        const int32_t t = star_[k];
+        if (mark_[t] != s)
           continue;
-        m_.faceVertices(t, i, f);
-        for (int j = 0; j < 3; ++j)
-          if (f[j] != p)
-            onB_.push_back(f[j]);
+        const int lw = m_.localIndex(t, w);
+        for (int i = 0; i < 4 && !on; ++i)
+        {
+          if (i == lw)
+            continue;
+          const int32_t n = m_.neighbor(t, i);
+          on = n < 0 || mark_[n] != s;
+        }
       }
-    }
-    std::sort(onB_.begin(), onB_.end());
-    for (int32_t v : verts_)
-      if (!std::binary_search(onB_.begin(), onB_.end(), v))
+      if (!on)
         return false;
+    }
     return true;
   }
-  std::vector<int32_t> verts_, onB_;
+  std::vector<int32_t> star_;
+  std::vector<uint32_t> mark_;
+  uint32_t markStamp_ = 0;
+
+  std::vector<int32_t> verts_;
+
+  // A tet of `tets` has an edge, not on the cavity's boundary `faces`, that runs along a split input
+  // segment (BoundaryConstraints::forbiddenEdge).
+  bool foldsSegment(const std::vector<std::array<int32_t, 3>>& faces, const std::vector<std::array<int32_t, 4>>& tets)
+  {
+    std::unordered_set<uint64_t> kept;
+    for (auto& fc : faces)
+      for (int i = 0; i < 3; ++i)
+        kept.insert(edgeKey(fc[i], fc[(i + 1) % 3]));
+    static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+    for (auto& q : tets)
+      for (auto& e : kEdge)
+        if (!kept.count(edgeKey(q[e[0]], q[e[1]])) && bc_.forbiddenEdge(q[e[0]], q[e[1]]))
+          return true;
+    return false;
+  }
+
+  // The cavity bounded by `faces` (each seen positively from inside) is star-shaped from one of its
+  // vertices v: v sees every face not containing it strictly. The cone of those faces from v then fills
+  // it (p collapsed onto v; the faces through v are matched by the cone's sides). The vertex giving the
+  // best-shaped tets is chosen.
+  bool coneFromVertex(const std::vector<std::array<int32_t, 3>>& faces, std::vector<std::array<int32_t, 4>>& tets)
+  {
+    std::vector<int32_t> verts;
+    for (auto& fc : faces)
+      verts.insert(verts.end(), fc.begin(), fc.end());
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    // The cone must close up: each cavity face once, every other face of its tets twice (a cavity whose
+    // boundary is not a simple surface, e.g. with zero-volume parts, fails this).
+    auto closes = [&](int32_t v) {
+      std::unordered_map<TriKey, int, TriKeyHash> count;
+      for (auto& fc : faces)
+      {
+        if (fc[0] == v || fc[1] == v || fc[2] == v)
+          continue;
+        ++count[TriKey(fc[0], fc[1], fc[2])];
+        ++count[TriKey(fc[0], fc[1], v)];
+        ++count[TriKey(fc[1], fc[2], v)];
+        ++count[TriKey(fc[2], fc[0], v)];
+      }
+      for (auto& fc : faces)
+      {
+        auto it = count.find(TriKey(fc[0], fc[1], fc[2]));
+        if (it == count.end() || it->second != 1)
+          return false;
+        it->second = 2;
+      }
+      for (auto& [k, n] : count)
+        if (n != 2)
+          return false;
+      return true;
+    };
+    int32_t best = -1;
+    double bestQ = 0;
+    for (int32_t v : verts)
+    {
+      const double* V = m_.point(v);
+      double q = 1e300;
+      for (auto& fc : faces)
+      {
+        if (fc[0] == v || fc[1] == v || fc[2] == v)
+          continue;
+        const double *A = m_.point(fc[0]), *B = m_.point(fc[1]), *C = m_.point(fc[2]);
+        if (orient3d(A, B, C, V) <= 0)
+        {
+          q = -1;
+          break;
+        }
+        q = std::min(q, quality::tetShapeMeasure(A, B, C, V));
+      }
+      if (q >= 0 && (best < 0 || q > bestQ) && closes(v))
+      {
+        bestQ = q;
+        best = v;
+      }
+    }
+    if (best < 0)
+      return false;
+    tets.clear();
+    for (auto& fc : faces)
+      if (fc[0] != best && fc[1] != best && fc[2] != best)
+        tets.push_back({ { fc[0], fc[1], fc[2], best } });
+    return !tets.empty();
+  }
 
   // A point strictly inside the cavity bounded by `faces` (each seen positively from inside), near p.
   // Candidates, best shape first among the valid ones: p pushed along the mean normal of the faces through

@@ -14,8 +14,10 @@
 //      programme: the point deepest inside every face plane) with points between it and p. When the
 //      kernel is empty (p in a reflex or flat corner), the cavity is enlarged by up to three layers of
 //      outer tets (never across a constraint, never swallowing a vertex) and the search repeated.
-//      Relocated points are new interior Steiner points (allowed, counted). When no point sees the
-//      whole cavity, the cavity is tetrahedralized without a point (FacetRecovery.h fillCavityDelaunay:
+//      Relocated points are new interior Steiner points (allowed, counted). When no point sees a layer's
+//      cavity but one of its vertices sees every face not through it (p's star flat, between two
+//      triangulations of a planar part of the boundary), the cone from that vertex fills it. Otherwise
+//      the cavity is tetrahedralized without a point (FacetRecovery.h fillCavityDelaunay:
 //      Delaunay tetrahedralization of its vertices, grown across the faces it lacks, never across a
 //      constraint nor swallowing a vertex).
 // Points that cannot be removed stay and are reported (the caller turns them into RecoveryFailed).

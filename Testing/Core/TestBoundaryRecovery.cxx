@@ -231,3 +231,94 @@ TEST(BoundaryRecovery, DelaunayCavityFill)
   EXPECT_FALSE(fillCavityDelaunay(m, other, tets, &missing));
   EXPECT_EQ(missing.size(), 2u);
 }
+
+// An input triangle ABC split by a segment Steiner point M that rounding put just off its plane: the
+// pieces AMC and MBC are not coplanar, so the whole-triangle cavity does not apply, but each piece is a
+// triangle of its own (recoverFacetByPieces / recoverSubfaceByCavity). AMC is crossed by edge PQ; MBC
+// is already a face (the two bipyramids are joined along MC by tets PMCR and QMCS).
+TEST(BoundaryRecovery, NonCoplanarPiecesRecovered)
+{
+  const double pts[8][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 1, 2, 0 }, { 1, 0, 1e-17 }, { 0.7, 0.5, 1 }, { 0.7, 0.5, -1 },
+    { 1.4, 0.6, 1 }, { 1.4, 0.6, -1 } };
+  enum { A, B, C, M, P, Q, R, S };
+  auto build = [&](TetMesh& m) {
+    for (auto& p : pts)
+      m.addPoint(p);
+    std::vector<std::array<int32_t, 4>> tets = { { P, Q, A, M }, { P, Q, M, C }, { P, Q, C, A }, { M, B, C, R },
+      { M, B, C, S }, { P, M, C, R }, { Q, M, C, S } };
+    for (auto& t : tets)
+      if (predicates::orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
+        std::swap(t[0], t[1]);
+    MeshEditor ed(m);
+    EXPECT_TRUE(ed.replace({}, tets, nullptr, true));
+  };
+  ASSERT_NE(predicates::orient3d(pts[A], pts[B], pts[C], pts[M]), 0);
+  auto constraints = [](BoundaryConstraints& bc, std::vector<int32_t>& subs) {
+    const int32_t tri[3] = { A, B, C };
+    bc.init(tri, 1);
+    bc.removeSubface(0);
+    subs = { bc.addSubface(A, M, C, 0), bc.addSubface(M, B, C, 0) };
+  };
+  {
+    TetMesh m;
+    build(m);
+    MeshEditor ed(m);
+    BoundaryConstraints bc;
+    std::vector<int32_t> subs;
+    constraints(bc, subs);
+    EXPECT_FALSE(recoverFacetByCavity(ed, bc, 0, subs)); // the plane of ABC does not split the cavity
+  }
+  TetMesh m;
+  build(m);
+  MeshEditor ed(m);
+  BoundaryConstraints bc;
+  std::vector<int32_t> subs;
+  constraints(bc, subs);
+  ASSERT_TRUE(recoverFacetByPieces(ed, bc, 0, subs));
+  EXPECT_GE(ed.findFace(A, M, C), 0);
+  EXPECT_GE(ed.findFace(M, B, C), 0);
+  EXPECT_LT(ed.findEdge(P, Q), 0);
+  EXPECT_TRUE(allPresent(ed, bc));
+}
+
+// Once input edge AB is split by a segment Steiner point M (rounded, so just off AB), no flip may
+// create edge AB again: it would run alongside the pieces AM, MB and fold the boundary into flat tets
+// that Steiner removal cannot undo. A 2-3 flip whose new edge is AB is refused; the constraints' pieces
+// and other edges stay allowed.
+TEST(BoundaryRecovery, NoEdgeAlongSplitSegment)
+{
+  // Face xyz with apexes A above and B below: the 2-3 flip of xyz creates edge AB.
+  const double pts[7][3] = { { 0, 0, 1 }, { 0, 0, -1 }, { 1, 0, 0 }, { -1, 1, 0 }, { -1, -1, 0 }, { 0, 1e-17, 0 },
+    { 3, 3, 3 } };
+  enum { A, B, X, Y, Z, M, W };
+  auto run = [&](bool split) {
+    TetMesh m;
+    for (auto& p : pts)
+      m.addPoint(p);
+    std::vector<std::array<int32_t, 4>> tets = { { X, Y, Z, A }, { X, Z, Y, B } };
+    for (auto& t : tets)
+      if (predicates::orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
+        std::swap(t[0], t[1]);
+    MeshEditor ed(m);
+    EXPECT_TRUE(ed.replace({}, tets, nullptr, true));
+    BoundaryConstraints bc;
+    const int32_t tri[3] = { A, B, W };
+    bc.init(tri, 1);
+    if (split)
+    {
+      bc.removeSubface(0);
+      bc.addSubface(A, M, W, 0);
+      bc.addSubface(M, B, W, 0);
+      bc.addSegmentPoint(M, A, B);
+      EXPECT_TRUE(bc.forbiddenEdge(A, B));
+      EXPECT_FALSE(bc.forbiddenEdge(A, M)); // a piece of the segment
+      EXPECT_FALSE(bc.forbiddenEdge(A, X));
+    }
+    int face = -1;
+    const int32_t t = ed.findFace(X, Y, Z, &face);
+    EXPECT_GE(t, 0);
+    return ed.flip23(t, face, &bc);
+  };
+  EXPECT_TRUE(run(false)); // the flip itself is valid
+  EXPECT_FALSE(run(true));
+}
