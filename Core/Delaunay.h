@@ -61,9 +61,9 @@ struct DelaunayOptions
   int threads = 0;
   // Tet numbering. The same input and options give the same mesh arrays, whatever the thread count and
   // from run to run: inputs large enough for the parallel construction (the conditions above, whatever
-  // `threads` says) are renumbered canonically (DelaunayCanonical.cxx: smallest vertex id first in each
-  // tet by an even rotation, tets grouped by their last inserted vertex, then by vertex list, no free
-  // slots); smaller ones are always built sequentially and keep the construction's numbering.
+  // `threads` says) are renumbered canonically (DelaunayCanonical.cxx: earliest inserted vertex first in
+  // each tet by an even rotation, tets grouped by their last inserted vertex, then by vertex list, no
+  // free slots); smaller ones are always built sequentially and keep the construction's numbering.
   // true: canonical numbering for every input. Cost of the renumbering: ~5-10% of the construction,
   // and the peak stays within 60 bytes per tet (1M random points: ~56 one thread, ~58 two threads).
   bool canonicalNumbering = false;

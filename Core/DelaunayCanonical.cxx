@@ -3,10 +3,13 @@
 // The tets of the (SoS-)Delaunay triangulation are unique, but the slots they end up in depend on the
 // history of the construction, and with two threads on the interleaving of the threads. The product's
 // rule is that the same input and options give the same mesh arrays whatever the thread count, so
-// buildDelaunay renumbers the tets canonically, from their vertices only:
+// buildDelaunay renumbers the tets canonically, from their vertices and the insertion order only (both
+// fixed by the input and the options: the spatial sort and its seed):
 //   * each tet's vertex list is rotated by an even permutation (orientation kept) so that it starts with
-//     its smallest output vertex id, followed by the smallest of the other three (the vertex at infinity
-//     counts as the largest); faces move with their opposite vertices;
+//     its earliest inserted vertex, followed by the earliest of the other three (the vertex at infinity
+//     counts as the last); faces move with their opposite vertices. Without spatial sorting, insertion
+//     order is input order: the smallest vertex id comes first. (Insertion ranks rather than output ids:
+//     an output id costs a random lookup per vertex, which made this pass several times slower.)
 //   * tets are ordered by their last inserted vertex (counting sort; insertion follows the Hilbert
 //     curve in BRIO rounds, and most tets have a vertex of the last round, so the tet order is
 //     spatially coherent), then by the rotated list (insertion sort within a vertex's few tets);
@@ -33,7 +36,7 @@ inline uint32_t rank(int32_t v)
   return static_cast<uint32_t>(v);
 }
 
-// New order of tet w's positions (ord[j] = old position of new position j); w in output ids.
+// New order of tet w's positions (ord[j] = old position of new position j); w in insertion ranks.
 inline void canonicalOrder(const int32_t* w, int8_t ord[4])
 {
   int i0 = 0;
@@ -78,74 +81,8 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
   // last BRIO round, so the groups follow that round's Hilbert order: neighbouring tets get nearby
   // numbers, which keeps the passes below cache-friendly.
   auto lastInserted = [](const int32_t* w) { return std::max(std::max(w[0], w[1]), std::max(w[2], w[3])); };
-  // Rotated list of tet t in output ids, and the rotation.
-  auto rotated = [&](int32_t t, int32_t row[4], int8_t ord[4]) {
-    const int32_t* w = V + 4 * static_cast<size_t>(t);
-    int32_t out[4];
-    for (int i = 0; i < 4; ++i)
-      out[i] = toOutput(w[i]);
-    canonicalOrder(out, ord);
-    for (int j = 0; j < 4; ++j)
-      row[j] = out[ord[j]];
-  };
-
-  // Pass 1: counts per last inserted vertex. From here on the flag byte of a slot holds the tet's
-  // rotation (newPos below, never 0 for a live tet) and 0 for a free slot: no separate array.
-  std::vector<int32_t> start(static_cast<size_t>(nv) + 1, 0);
-  for (int32_t t = 0; t < cap; ++t)
-  {
-    const bool live = !(F[t] & TetMesh::kFree);
-    F[t] = live ? 0xff : 0; // 0xff: live, rotation not yet known
-    if (live)
-      ++start[lastInserted(V + 4 * static_cast<size_t>(t)) + 1];
-  }
-  for (int32_t v = 0; v < nv; ++v)
-    start[v + 1] += start[v];
-  const int32_t live = start[nv];
-
-  // Pass 2: newToOld by groups (counting sort), then each group sorted by the rotated lists; the
-  // rotation of every live tet (newPos: new position of old position f in bits 2f..2f+1).
-  uint8_t* newPos = F;
-  std::vector<int32_t> newToOld(static_cast<size_t>(live));
-  {
-    std::vector<int32_t> fill(start.begin(), start.end() - 1);
-    for (int32_t t = 0; t < cap; ++t)
-      if (F[t] != 0)
-        newToOld[fill[lastInserted(V + 4 * static_cast<size_t>(t))]++] = t;
-  }
-  {
-    struct Keyed
-    {
-      int32_t row[4];
-      int32_t tet;
-    };
-    std::vector<Keyed> group;
-    for (int32_t v = 0; v < nv; ++v)
-    {
-      const int32_t a = start[v], b = start[v + 1];
-      group.resize(static_cast<size_t>(b - a));
-      for (int32_t i = a; i < b; ++i)
-      {
-        Keyed& k = group[static_cast<size_t>(i - a)];
-        int8_t ord[4];
-        k.tet = newToOld[i];
-        rotated(k.tet, k.row, ord);
-        newPos[k.tet] = static_cast<uint8_t>((1 << (2 * ord[1])) | (2 << (2 * ord[2])) | (3 << (2 * ord[3])));
-      }
-      if (b - a > 1)
-        std::sort(group.begin(), group.end(), [](const Keyed& x, const Keyed& y) { return rowLess(x.row, y.row); });
-      for (int32_t i = a; i < b; ++i)
-        newToOld[i] = group[static_cast<size_t>(i - a)].tet;
-    }
-  }
-  std::vector<int32_t>().swap(start);
-  // New number of every live slot.
-  std::vector<int32_t> newId(static_cast<size_t>(cap), -1);
-  for (int32_t i = 0; i < live; ++i)
-    newId[newToOld[i]] = i;
-
   auto inHalves = [threads](int32_t n, const auto& work) {
-    if (threads > 1 && n >= (1 << 20))
+    if (threads > 1 && n >= (1 << 16))
     {
       std::thread helper(work, n / 2, n);
       work(0, n / 2);
@@ -154,11 +91,102 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
     else
       work(0, n);
   };
+
+  // Pass 1, in slot order: every live tet's vertex row rotated in place; from here on the flag byte of
+  // a slot holds the rotation of its tet (newPos: new position of old position f in bits 2f..2f+1,
+  // never 0 for a live tet) and 0 for a free slot (no separate array).
+  // Each half also counts its tets per last inserted vertex (for the counting sort of pass 2).
+  uint8_t* newPos = F;
+  std::vector<int32_t> count[2];
+  inHalves(cap, [&](int32_t from, int32_t to) {
+    std::vector<int32_t>& c = count[from == 0 ? 0 : 1];
+    c.assign(static_cast<size_t>(nv), 0);
+    for (int32_t t = from; t < to; ++t)
+    {
+      if (F[t] & TetMesh::kFree)
+      {
+        F[t] = 0;
+        continue;
+      }
+      int32_t* w = V + 4 * static_cast<size_t>(t);
+      ++c[lastInserted(w)];
+      int8_t ord[4];
+      canonicalOrder(w, ord);
+      const int32_t row[4] = { w[ord[0]], w[ord[1]], w[ord[2]], w[ord[3]] };
+      std::memcpy(w, row, sizeof row);
+      newPos[t] = static_cast<uint8_t>((1 << (2 * ord[1])) | (2 << (2 * ord[2])) | (3 << (2 * ord[3])));
+    }
+  });
+
+  // Pass 2: newToOld by groups of the last inserted vertex (counting sort), then each group sorted by
+  // the rotated rows.
+  // The halves' counts become their fill positions: half 0 fills the front of each group, half 1 the
+  // rest (the order inside a group does not matter, it is sorted next).
+  std::vector<int32_t> start(static_cast<size_t>(nv) + 1, 0);
+  const bool twoHalves = !count[1].empty();
+  for (int32_t v = 0; v < nv; ++v)
+  {
+    const int32_t c0 = count[0][v], c1 = twoHalves ? count[1][v] : 0;
+    start[v + 1] = start[v] + c0 + c1;
+    count[0][v] = start[v];
+    if (twoHalves)
+      count[1][v] = start[v] + c0;
+  }
+  const int32_t live = start[nv];
+  std::vector<int32_t> newToOld(static_cast<size_t>(live));
+  inHalves(cap, [&](int32_t from, int32_t to) {
+    std::vector<int32_t>& fill = count[from == 0 ? 0 : 1];
+    for (int32_t t = from; t < to; ++t)
+      if (F[t] != 0)
+        newToOld[fill[lastInserted(V + 4 * static_cast<size_t>(t))]++] = t;
+  });
+  std::vector<int32_t>().swap(count[0]);
+  std::vector<int32_t>().swap(count[1]);
+  // Groups are independent (disjoint ranges of newToOld): two halves of the vertex range may run at
+  // once. A group's tets sit in scattered slots: their rows are prefetched a few tets ahead.
+  inHalves(nv, [&](int32_t vFrom, int32_t vTo) {
+    constexpr int32_t kAhead = 16;
+    const int32_t end = start[vTo];
+    for (int32_t i = start[vFrom]; i < std::min(end, start[vFrom] + kAhead); ++i)
+      __builtin_prefetch(V + 4 * static_cast<size_t>(newToOld[i]));
+    for (int32_t v = vFrom; v < vTo; ++v)
+    {
+      const int32_t a = start[v], b = start[v + 1];
+      for (int32_t i = a; i < b; ++i)
+        if (i + kAhead < end)
+          __builtin_prefetch(V + 4 * static_cast<size_t>(newToOld[i + kAhead]));
+      // Insertion sort of the group's few tets by their rows.
+      for (int32_t i = a + 1; i < b; ++i)
+      {
+        const int32_t t = newToOld[i];
+        const int32_t* row = V + 4 * static_cast<size_t>(t);
+        int32_t j = i - 1;
+        for (; j >= a && rowLess(row, V + 4 * static_cast<size_t>(newToOld[j])); --j)
+          newToOld[j + 1] = newToOld[j];
+        newToOld[j + 1] = t;
+      }
+    }
+  });
+  std::vector<int32_t>().swap(start);
+  // New number of every live slot.
+  std::vector<int32_t> newId(static_cast<size_t>(cap), -1);
+  inHalves(live, [&](int32_t from, int32_t to) {
+    for (int32_t i = from; i < to; ++i)
+      newId[newToOld[i]] = i;
+  });
+
   // Pass 3: neighbour codes rewritten in place for the new numbers and face positions (a row's
   // rewrite reads only newId/newPos of its neighbours).
   inHalves(cap, [&](int32_t from, int32_t to) {
     for (int32_t t = from; t < to; ++t)
     {
+      if (t + 8 < to)
+        for (int f = 0; f < 4; ++f)
+        {
+          const int32_t c = N[4 * static_cast<size_t>(t + 8) + f];
+          if (c >= 0)
+            __builtin_prefetch(newId.data() + (c >> 2));
+        }
       if (F[t] == 0)
         continue; // free slot
       int32_t* n = N + 4 * static_cast<size_t>(t);
@@ -172,7 +200,8 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
   });
   std::vector<int32_t>().swap(newId);
 
-  // Pass 4: the rows gathered in the new order and rotated, one array at a time (the old one is freed
+  // Pass 4: the rows gathered in the new order (neighbour rows rotated like the vertex rows were, vertex
+  // rows mapped to output ids), one array at a time (the old one is freed
   // before the next is allocated: the transient memory stays at one 16-byte row per tet). Writes are
   // sequential; the reads follow the construction's slot order, which is spatially coherent too.
   auto gather = [&](std::vector<int32_t>& rows, bool vertices) {
@@ -181,12 +210,17 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
     inHalves(live, [&](int32_t from, int32_t to) {
       for (int32_t i = from; i < to; ++i)
       {
+        if (i + 16 < to)
+          __builtin_prefetch(in + 4 * static_cast<size_t>(newToOld[i + 16]));
         const int32_t t = newToOld[i];
-        const uint8_t np = newPos[t];
         const int32_t* r = in + 4 * static_cast<size_t>(t);
         int32_t* o = out.data() + 4 * static_cast<size_t>(i);
-        for (int f = 0; f < 4; ++f)
-          o[(np >> (2 * f)) & 3] = vertices ? toOutput(r[f]) : r[f];
+        if (vertices)
+          for (int f = 0; f < 4; ++f)
+            o[f] = toOutput(r[f]);
+        else
+          for (int f = 0; f < 4; ++f)
+            o[(newPos[t] >> (2 * f)) & 3] = r[f];
       }
     });
     rows.swap(out);
