@@ -433,11 +433,18 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     // the best point found for the worst tet, optimise around it, and keep the result only when the
     // mesh's worst tet got better (else the mesh is restored: a copy is cheap at this size, and the next
     // bad tet is tried).
-    for (int round = 0, skip = 0; round < options.speculativeRounds && mesh.numTets() <= 5000; ++round)
+    // With many tets below the aim (a surface whose own triangles force bad tets, e.g. falcon1.stl: 10%
+    // under 10 deg) a round costs a full optimisation of all of them: fewer rounds then.
+    constexpr int64_t kSpeculativeMaxBad = 32;
+    constexpr int kSpeculativeRoundsManyBad = 4;
+    int speculativeRounds = options.speculativeRounds;
+    for (int round = 0, skip = 0; round < speculativeRounds && mesh.numTets() <= 5000; ++round)
     {
       const double worst = worstSineDegrees(mesh);
       if (!(worst > 0) || worst >= 60)
         break;
+      if (countBelow(mesh, std::max(worst + 2.0, options.optimization.targetDegrees)) > kSpeculativeMaxBad)
+        speculativeRounds = std::min(speculativeRounds, kSpeculativeRoundsManyBad);
       const TetMesh savedMesh = mesh;
       const std::vector<int32_t> savedRegion = tetRegion;
       const DihedralSummary savedAfter = stats.after;
