@@ -1342,7 +1342,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
               return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
           }
           if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats) &&
-            !recoverFacetByPieces(ed, bc, par, subs, &cavityStats))
+            !recoverFacetByPieces(ed, bc, par, subs, &cavityStats) &&
+            !recoverFacetBySlab(ed, bc, par, subs, &cavityStats))
             fallback[static_cast<size_t>(par)] = 1;
         }
       }

@@ -20,6 +20,10 @@ using predicates::orient3d;
 constexpr size_t kMaxCavityTets = 20000;
 // Enlargement rounds per side before giving up.
 constexpr int kMaxEnlargeRounds = 40;
+// Slab mode's flip repair of a side's local tetrahedralization: size limit and number of flips.
+constexpr int32_t kMaxRepairTets = 300;
+constexpr int kMaxRepairFlips = 16;
+constexpr int32_t kMaxRepairPairTets = 40;
 
 // A triangle with its orientation: rotated so that the smallest id comes first.
 struct OKey
@@ -62,13 +66,14 @@ public:
   // corners: the plane and extent of R (the input triangle, or the single subface when `single`). A
   // single-subface region keeps every other constraint, its siblings included.
   FacetCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, const std::vector<int32_t>& subfaces,
-    const int32_t* corners, bool single)
+    const int32_t* corners, bool single, bool slab = false)
     : ed_(ed)
     , m_(ed.mesh)
     , bc_(bc)
     , parent_(parent)
     , subfaces_(subfaces)
     , single_(single)
+    , slab_(slab)
   {
     for (int k = 0; k < 3; ++k)
       abc_[k] = corners[k];
@@ -97,6 +102,8 @@ public:
       }
     std::sort(borderVerts.begin(), borderVerts.end());
     borderVerts.erase(std::unique(borderVerts.begin(), borderVerts.end()), borderVerts.end());
+    if (slab_)
+      borderSet_.insert(borderVerts.begin(), borderVerts.end());
     if (!collect(borderVerts))
       return false;
     if (!boundaryFaces())
@@ -116,11 +123,15 @@ public:
           return false;
         if (r == 0)
           break;
+        if (slab_ && coneSide(s, newTets, tri[s]))
+          break;
         newTets.resize(before);
         if (round >= kMaxEnlargeRounds)
           return false;
         for (const TriKey& k : missing)
         {
+          if (!faces_[s].count(k))
+            continue; // inside a tet added for an earlier missing face
           if (!enlarge(s, k))
             return false;
           if (st)
@@ -128,32 +139,41 @@ public:
         }
       }
     }
-    // Both sides triangulate R the same way, with opposite orientations.
-    if (tri[0].size() != tri[1].size() || tri[0].empty())
-      return false;
-    std::unordered_map<uint64_t, int> tuses;
-    for (auto& [k, f] : tri[0])
+    if (slab_)
     {
-      auto it = tri[1].find(k);
-      if (it == tri[1].end() || orientedKey(f.data()) == orientedKey(it->second.data()))
+      // Each side's triangulation of R is a disk on R's border; the slab between them is filled.
+      if (!isDisk(tri[0]) || !isDisk(tri[1]) || !fillSlab(tri, newTets))
         return false;
-      for (int i = 0; i < 3; ++i)
-        ++tuses[edgeKey(f[i], f[(i + 1) % 3])];
     }
-    size_t borderSeen = 0;
-    for (auto& [k, n] : tuses)
+    else
     {
-      if (n == 1)
+      // Both sides triangulate R the same way, with opposite orientations.
+      if (tri[0].size() != tri[1].size() || tri[0].empty())
+        return false;
+      std::unordered_map<uint64_t, int> tuses;
+      for (auto& [k, f] : tri[0])
       {
-        if (!border_.count(k))
+        auto it = tri[1].find(k);
+        if (it == tri[1].end() || orientedKey(f.data()) == orientedKey(it->second.data()))
           return false;
-        ++borderSeen;
+        for (int i = 0; i < 3; ++i)
+          ++tuses[edgeKey(f[i], f[(i + 1) % 3])];
       }
-      else if (n != 2)
+      size_t borderSeen = 0;
+      for (auto& [k, n] : tuses)
+      {
+        if (n == 1)
+        {
+          if (!border_.count(k))
+            return false;
+          ++borderSeen;
+        }
+        else if (n != 2)
+          return false;
+      }
+      if (borderSeen != border_.size())
         return false;
     }
-    if (borderSeen != border_.size())
-      return false;
     if (!interiorConstraintsFree() || createsForbiddenEdge(newTets))
       return false;
     std::vector<int32_t> old;
@@ -171,6 +191,8 @@ public:
 private:
   int side(int32_t v)
   {
+    if (slab_ && borderSet_.count(v))
+      return 0; // R's polygon: its rounded segment points count as on R
     auto it = sideCache_.find(v);
     if (it != sideCache_.end())
       return it->second;
@@ -198,6 +220,8 @@ private:
 
   bool onR(int32_t v)
   {
+    if (slab_ && borderSet_.count(v))
+      return true;
     auto it = onRCache_.find(v);
     if (it != onRCache_.end())
       return it->second;
@@ -220,7 +244,7 @@ private:
       if (s[i] == 0)
       {
         ++zeros;
-        if (inTriangle(m_.point(v[i]), true))
+        if (!(slab_ && borderSet_.count(v[i])) && inTriangle(m_.point(v[i]), true))
           return -1;
       }
     }
@@ -380,6 +404,8 @@ private:
     for (size_t i = 0; i < map.size(); ++i)
       if (map[i] != static_cast<int32_t>(i))
         return -1;
+    if (slab_)
+      repairByFlips(lm, verts, fm);
     auto global = [&](int32_t l) { return verts[static_cast<size_t>(l)]; };
     std::unordered_map<OKey, std::pair<int32_t, int>, OKeyHash> dtFaces;
     int32_t f[3];
@@ -435,6 +461,7 @@ private:
           if (side(global(lm.vertex(t, i))) != want)
             return -1;
           tri.emplace(k, std::array<int32_t, 3>{ { f[0], f[1], f[2] } });
+          apex_[s][k] = global(lm.vertex(t, i));
           continue;
         }
         const int32_t n = lm.neighbor(t, i);
@@ -510,12 +537,218 @@ private:
     return true;
   }
 
+  // Slab mode: at a rounded border point the side may be reflex (a neighbour's constraint face meets R
+  // there), so its Delaunay tetrahedralization lacks boundary faces that the cavity cannot grow across.
+  // Flips of the local tetrahedralization (2-3, edge removal) are kept while they reduce the missing
+  // boundary faces and their missing edges; small ones also try pairs of flips.
+  void repairByFlips(TetMesh& lm, const std::vector<int32_t>& verts, const FaceMap& fm) const
+  {
+    if (lm.tetCapacity() > kMaxRepairTets)
+      return;
+    auto local = [&](int32_t g) {
+      return static_cast<int32_t>(std::lower_bound(verts.begin(), verts.end(), g) - verts.begin());
+    };
+    std::vector<std::array<int32_t, 3>> want;
+    for (auto& [k, bf] : fm)
+      want.push_back({ { local(bf.v[0]), local(bf.v[1]), local(bf.v[2]) } });
+    auto score = [&](TetMesh& mesh) {
+      MeshEditor e(mesh);
+      int sc = 0;
+      for (auto& f : want)
+      {
+        if (e.findFace(f[0], f[1], f[2]) >= 0)
+          continue;
+        sc += 4;
+        for (int i = 0; i < 3; ++i)
+          sc += e.findEdge(f[i], f[(i + 1) % 3]) < 0 ? 1 : 0;
+      }
+      return sc;
+    };
+    // Every mesh one flip away from `from`.
+    auto neighbours = [](const TetMesh& from, std::vector<TetMesh>& out) {
+      static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+      out.clear();
+      for (int32_t t = 0; t < from.tetCapacity(); ++t)
+      {
+        if (from.isFree(t))
+          continue;
+        for (int op = 0; op < 10; ++op)
+        {
+          TetMesh trial = from;
+          MeshEditor e(trial);
+          bool ok;
+          if (op < 4)
+            ok = trial.neighbor(t, op) >= 0 && e.flip23(t, op, nullptr);
+          else
+          {
+            const int32_t* v = trial.vertices(t);
+            ok = e.removeEdge(t, v[kEdge[op - 4][0]], v[kEdge[op - 4][1]], nullptr);
+          }
+          if (ok)
+            out.push_back(std::move(trial));
+        }
+      }
+    };
+    int best = score(lm);
+    std::vector<TetMesh> one, two;
+    for (int pass = 0; pass < kMaxRepairFlips && best > 0; ++pass)
+    {
+      bool improved = false;
+      neighbours(lm, one);
+      for (TetMesh& n : one)
+      {
+        const int sc = score(n);
+        if (sc < best)
+        {
+          best = sc;
+          lm = std::move(n);
+          improved = true;
+          break;
+        }
+      }
+      if (!improved && lm.numTets() <= kMaxRepairPairTets)
+        for (size_t i = 0; i < one.size() && !improved; ++i)
+        {
+          neighbours(one[i], two);
+          for (TetMesh& n : two)
+          {
+            const int sc = score(n);
+            if (sc < best)
+            {
+              best = sc;
+              lm = std::move(n);
+              improved = true;
+              break;
+            }
+          }
+        }
+      if (!improved)
+        break;
+    }
+  }
+
+  // Slab mode, when side s's Delaunay tetrahedralization lacks boundary faces (the side is reflex at a
+  // rounded border point): if some vertex off R sees every other face of the side strictly (its boundary
+  // faces and R's current subfaces), the side is the cone of those faces from it.
+  bool coneSide(int s, std::vector<std::array<int32_t, 4>>& newTets,
+    std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash>& tri)
+  {
+    std::vector<std::array<int32_t, 3>> faces;
+    std::vector<int32_t> cand;
+    for (auto& [k, bf] : faces_[s])
+    {
+      faces.push_back({ { bf.v[0], bf.v[1], bf.v[2] } });
+      for (int32_t v : bf.v)
+        if (side(v) != 0)
+          cand.push_back(v);
+    }
+    // R's subfaces, oriented with side s on their positive side (side 0 is where ABC turns positively).
+    int axis = -1, o = 0;
+    for (int k = 0; k < 3 && o == 0; ++k)
+      if ((o = predicates::orient2dProjected(A_, B_, C_, k)) != 0)
+        axis = k;
+    if (axis < 0)
+      return false;
+    const size_t nBoundary = faces.size();
+    for (int32_t f : subfaces_)
+    {
+      std::array<int32_t, 3> g = { { bc_.subface(f)[0], bc_.subface(f)[1], bc_.subface(f)[2] } };
+      const int po = predicates::orient2dProjected(m_.point(g[0]), m_.point(g[1]), m_.point(g[2]), axis);
+      if (po == 0)
+        return false;
+      if ((po == o) != (s == 0))
+        std::swap(g[1], g[2]);
+      faces.push_back(g);
+    }
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+    for (int32_t w : cand)
+    {
+      bool sees = true;
+      for (auto& f : faces)
+        if (f[0] != w && f[1] != w && f[2] != w &&
+          orient3d(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(w)) <= 0)
+        {
+          sees = false;
+          break;
+        }
+      if (!sees)
+        continue;
+      for (auto& f : faces)
+        if (f[0] != w && f[1] != w && f[2] != w)
+          newTets.push_back({ { f[0], f[1], f[2], w } });
+      tri.clear();
+      for (size_t i = nBoundary; i < faces.size(); ++i)
+      {
+        const TriKey k(faces[i][0], faces[i][1], faces[i][2]);
+        tri.emplace(k, faces[i]);
+        apex_[s][k] = w;
+      }
+      return true;
+    }
+    return false;
+  }
+
+  // T (one side's triangulation of R) is a disk whose border is R's border.
+  bool isDisk(const std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash>& t) const
+  {
+    if (t.empty())
+      return false;
+    std::unordered_map<uint64_t, int> uses;
+    for (auto& [k, f] : t)
+      for (int i = 0; i < 3; ++i)
+        ++uses[edgeKey(f[i], f[(i + 1) % 3])];
+    size_t seen = 0;
+    for (auto& [k, n] : uses)
+    {
+      if (n == 1)
+      {
+        if (!border_.count(k))
+          return false;
+        ++seen;
+      }
+      else if (n != 2)
+        return false;
+    }
+    return seen == border_.size();
+  }
+
+  // The rounded polygon of R is not planar, so the two sides may triangulate it differently: the thin
+  // slab between the two triangulations (all its vertices on R's border) is filled by the Delaunay
+  // tetrahedralization of its faces, and the upper triangulation becomes R's subfaces.
+  bool fillSlab(const std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash> (&tri)[2],
+    std::vector<std::array<int32_t, 4>>& newTets)
+  {
+    std::vector<std::array<int32_t, 3>> faces;
+    for (int s = 0; s < 2; ++s)
+      for (auto& [k, f] : tri[s])
+      {
+        if (tri[1 - s].count(k))
+          continue;
+        std::array<int32_t, 3> g = f;
+        // The side's apex is outside the slab: orient the face away from it.
+        if (orient3d(m_.point(g[0]), m_.point(g[1]), m_.point(g[2]), m_.point(apex_[s].at(k))) > 0)
+          std::swap(g[1], g[2]);
+        faces.push_back(g);
+      }
+    if (faces.empty())
+      return true;
+    std::vector<std::array<int32_t, 4>> tets;
+    if (!fillCavityDelaunay(m_, faces, tets))
+      return false;
+    newTets.insert(newTets.end(), tets.begin(), tets.end());
+    return true;
+  }
+
   MeshEditor& ed_;
   TetMesh& m_;
   BoundaryConstraints& bc_;
   const int32_t parent_;
   const std::vector<int32_t>& subfaces_;
   const bool single_;
+  const bool slab_;
+  std::unordered_set<int32_t> borderSet_;
+  std::unordered_map<TriKey, int32_t, TriKeyHash> apex_[2]; // side's tet apex over each face of T
   int32_t abc_[3];
   const double *A_, *B_, *C_;
   std::unordered_set<uint64_t> border_;
@@ -637,6 +870,29 @@ bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t paren
   std::vector<std::array<int32_t, 3>> tri;
   {
     FacetCavity fc(ed, bc, parent, subfaces, bc.verts.data() + 3 * static_cast<size_t>(parent), false);
+    if (!fc.run(tri, stats))
+      return false;
+  }
+  for (int32_t f : subfaces)
+    bc.removeSubface(f);
+  subfaces.clear();
+  for (auto& t : tri)
+    subfaces.push_back(bc.addSubface(t[0], t[1], t[2], parent));
+  if (stats)
+    ++stats->successes;
+  return true;
+}
+
+bool recoverFacetBySlab(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
+  FacetCavityStats* stats)
+{
+  if (stats)
+    ++stats->attempts;
+  if (subfaces.empty())
+    return false;
+  std::vector<std::array<int32_t, 3>> tri;
+  {
+    FacetCavity fc(ed, bc, parent, subfaces, bc.verts.data() + 3 * static_cast<size_t>(parent), false, true);
     if (!fc.run(tri, stats))
       return false;
   }

@@ -52,6 +52,16 @@ bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t sub
 bool recoverFacetByPieces(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
   FacetCavityStats* stats = nullptr);
 
+// Recover input triangle `parent` whose split polygon is not planar (rounded segment Steiner points) when
+// neither the whole-triangle cavity nor the pieces work: the cavity method with R's border vertices counted
+// as on R. Each side then triangulates R on its own; the thin slab between the two triangulations (all its
+// vertices on R's border) is filled by fillCavityDelaunay and the upper triangulation becomes the subfaces.
+// A side that is reflex at a rounded point (its Delaunay tetrahedralization lacks a boundary face) is
+// repaired by flips of that local tetrahedralization, or filled as the cone of its faces and R's current
+// subfaces from a vertex that sees them all, before its cavity is grown.
+bool recoverFacetBySlab(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
+  FacetCavityStats* stats = nullptr);
+
 // Tetrahedralize a closed cavity given by its boundary faces, each oriented with the cavity on its
 // positive side (orient3d(f0,f1,f2,x) > 0 for x inside), every cavity vertex being a vertex of some
 // face: the Delaunay tetrahedralization of the face vertices must contain every face, and the tets

@@ -322,3 +322,45 @@ TEST(BoundaryRecovery, NoEdgeAlongSplitSegment)
   EXPECT_TRUE(run(false)); // the flip itself is valid
   EXPECT_FALSE(run(true));
 }
+
+// Input triangle ABC split by a rounded segment Steiner point M (just above AB), pierced by edge PQ:
+// the piece diagonal MC is not a mesh edge and no flip of the pieces makes it, and the whole-triangle
+// cavity fails because M is off ABC's plane. The slab method counts M as on the triangle: each side of
+// the cavity is re-tetrahedralized, the thin slab between their two triangulations is filled, and the
+// pieces become mesh faces with the rest of the mesh valid.
+TEST(BoundaryRecovery, NonPlanarSplitTriangleBySlab)
+{
+  const double pts[6][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 1, 2, 0 }, { 1, 0, 1e-17 }, { 1, 0.6, 0.1 }, { 1, 0.6, -0.1 } };
+  enum { A, B, C, M, P, Q };
+  SurfaceMesh s;
+  for (auto& p : pts)
+    s.points.insert(s.points.end(), p, p + 3);
+  auto setup = [&](RecoverySetup& r, std::vector<int32_t>& subs) {
+    const int32_t tri[3] = { A, B, C };
+    r.bc.init(tri, 1);
+    r.bc.removeSubface(0);
+    subs = { r.bc.addSubface(A, M, C, 0), r.bc.addSubface(M, B, C, 0) };
+    r.bc.addSegmentPoint(M, A, B);
+  };
+  ASSERT_GT(predicates::orient3d(pts[A], pts[B], pts[C], pts[M]), 0);
+  {
+    RecoverySetup r(s);
+    MeshEditor ed(r.mesh);
+    std::vector<int32_t> subs;
+    setup(r, subs);
+    ASSERT_GE(ed.findEdge(P, Q), 0);
+    ASSERT_LT(ed.findEdge(M, C), 0);
+    ASSERT_GE(ed.findEdge(A, M), 0);
+    ASSERT_GE(ed.findEdge(M, B), 0);
+    EXPECT_FALSE(recoverFacetByCavity(ed, r.bc, 0, subs));
+    EXPECT_FALSE(recoverFacetByPieces(ed, r.bc, 0, subs));
+  }
+  RecoverySetup r(s);
+  MeshEditor ed(r.mesh);
+  std::vector<int32_t> subs;
+  setup(r, subs);
+  ASSERT_TRUE(recoverFacetBySlab(ed, r.bc, 0, subs));
+  EXPECT_TRUE(allPresent(ed, r.bc));
+  EXPECT_LT(ed.findEdge(P, Q), 0);
+  EXPECT_TRUE(checkMesh(r.mesh, structural()).valid);
+}
