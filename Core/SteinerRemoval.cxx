@@ -5,6 +5,7 @@
 #include "FacetRecovery.h"
 
 #include "Predicates.h"
+#include "StarFlips.h"
 
 #include <algorithm>
 #include <cmath>
@@ -950,6 +951,9 @@ private:
 
 } // namespace
 
+// Edge removals tried around one point that could not be removed.
+constexpr size_t kMaxStarFlips = 200;
+
 Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   std::vector<int32_t>* tetRegion, Progress* progress, SteinerRemovalReport* report)
 {
@@ -989,6 +993,31 @@ Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std:
       break;
     }
     todo = failed;
+  }
+  // What is left: reshape each point's neighbourhood by interior edge removals (StarFlips.h), retrying
+  // the removal after each flip; a removal may unlock another point, hence the rounds.
+  for (int round = 0; round < 3 && !todo.empty(); ++round)
+  {
+    std::vector<int32_t> failed;
+    std::vector<std::pair<int32_t, int32_t>> edges;
+    for (int32_t v : todo)
+    {
+      if (pr->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Steiner point removal was cancelled.");
+      bool removed = rem.remove(v);
+      starFlipCandidates(ed, bc, v, edges);
+      for (size_t k = 0; k < edges.size() && k < kMaxStarFlips && !removed; ++k)
+        if (removeEdgeKeepingRegion(ed, bc, edges[k].first, edges[k].second, tetRegion))
+          removed = rem.remove(v);
+      if (removed)
+        ++rep.removed;
+      else
+        failed.push_back(v);
+    }
+    const bool progress = failed.size() < todo.size();
+    todo = failed;
+    if (!progress)
+      break;
   }
   rep.remaining = static_cast<int64_t>(todo.size());
   for (size_t i = 0; i < todo.size() && i < 8; ++i)
