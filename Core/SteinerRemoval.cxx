@@ -2,6 +2,7 @@
 
 #include "Quality.h"
 
+#include "CavityCarving.h"
 #include "FacetRecovery.h"
 
 #include "Predicates.h"
@@ -336,8 +337,9 @@ public:
           facesValid = true;
           found = findPoint(p, faces, sidePoint[sd].data());
           // p's star may be flat (p rounded just outside a planar part of the boundary, between two
-          // triangulations of it): the cone from one of the cavity's own vertices then fills it.
-          coned = !found && coneFromVertex(faces, cone) && !foldsSegment(faces, cone);
+          // triangulations of it): the cone from one of the cavity's own vertices then fills it, or else a
+          // search for a tetrahedralization of a small cavity without a new point.
+          coned = !found && ((coneFromVertex(faces, cone) && !foldsSegment(faces, cone)) || carve(faces, cone));
         }
         if (coned)
         {
@@ -439,6 +441,8 @@ public:
 private:
   static constexpr int kMaxLayers = 3;
   static constexpr int kMaxFillGrowth = 16;
+  static constexpr size_t kMaxCarveFaces = 32;
+  static constexpr int64_t kMaxCarveSteps = 200;
   // Cavity size limit: the growth checks are quadratic in it, and larger cavities do not succeed.
   static constexpr size_t kMaxCavity = 400;
 
@@ -726,6 +730,14 @@ private:
     return !tets.empty();
   }
 
+  // The cavity tetrahedralized by a bounded search (CavityCarving.h), for small cavities only.
+  bool carve(const std::vector<std::array<int32_t, 3>>& faces, std::vector<std::array<int32_t, 4>>& tets)
+  {
+    if (faces.size() > kMaxCarveFaces)
+      return false;
+    return carveCavity(m_, faces, [&](int32_t u, int32_t v) { return !bc_.forbiddenEdge(u, v); }, kMaxCarveSteps, tets);
+  }
+
   // A point strictly inside the cavity bounded by `faces` (each seen positively from inside), near p.
   // Candidates, best shape first among the valid ones: p pushed along the mean normal of the faces through
   // p (the new boundary triangles), points between p and the cavity's centroid or the old tets'
@@ -1005,10 +1017,20 @@ Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std:
       if (pr->cancelled())
         return Status::failure(ErrorKind::Cancelled, "Steiner point removal was cancelled.");
       bool removed = rem.remove(v);
-      starFlipCandidates(ed, bc, v, edges);
-      for (size_t k = 0; k < edges.size() && k < kMaxStarFlips && !removed; ++k)
-        if (removeEdgeKeepingRegion(ed, bc, edges[k].first, edges[k].second, tetRegion))
-          removed = rem.remove(v);
+      // The candidates are listed again after a round of flips (the star has changed).
+      for (int attempt = 0; attempt < 4 && !removed; ++attempt)
+      {
+        starFlipCandidates(ed, bc, v, edges);
+        int flipped = 0;
+        for (size_t k = 0; k < edges.size() && k < kMaxStarFlips && !removed; ++k)
+          if (removeEdgeKeepingRegion(ed, bc, edges[k].first, edges[k].second, tetRegion))
+          {
+            ++flipped;
+            removed = rem.remove(v);
+          }
+        if (!flipped)
+          break;
+      }
       if (removed)
         ++rep.removed;
       else
