@@ -2,9 +2,11 @@
 
 #include "Quality.h"
 
+#include "CavityCarving.h"
 #include "FacetRecovery.h"
 
 #include "Predicates.h"
+#include "StarFlips.h"
 
 #include <algorithm>
 #include <cmath>
@@ -335,8 +337,9 @@ public:
           facesValid = true;
           found = findPoint(p, faces, sidePoint[sd].data());
           // p's star may be flat (p rounded just outside a planar part of the boundary, between two
-          // triangulations of it): the cone from one of the cavity's own vertices then fills it.
-          coned = !found && coneFromVertex(faces, cone) && !foldsSegment(faces, cone);
+          // triangulations of it): the cone from one of the cavity's own vertices then fills it, or else a
+          // search for a tetrahedralization of a small cavity without a new point.
+          coned = !found && ((coneFromVertex(faces, cone) && !foldsSegment(faces, cone)) || carve(faces, cone));
         }
         if (coned)
         {
@@ -438,6 +441,8 @@ public:
 private:
   static constexpr int kMaxLayers = 3;
   static constexpr int kMaxFillGrowth = 16;
+  static constexpr size_t kMaxCarveFaces = 32;
+  static constexpr int64_t kMaxCarveSteps = 200;
   // Cavity size limit: the growth checks are quadratic in it, and larger cavities do not succeed.
   static constexpr size_t kMaxCavity = 400;
 
@@ -725,6 +730,14 @@ private:
     return !tets.empty();
   }
 
+  // The cavity tetrahedralized by a bounded search (CavityCarving.h), for small cavities only.
+  bool carve(const std::vector<std::array<int32_t, 3>>& faces, std::vector<std::array<int32_t, 4>>& tets)
+  {
+    if (faces.size() > kMaxCarveFaces)
+      return false;
+    return carveCavity(m_, faces, [&](int32_t u, int32_t v) { return !bc_.forbiddenEdge(u, v); }, kMaxCarveSteps, tets);
+  }
+
   // A point strictly inside the cavity bounded by `faces` (each seen positively from inside), near p.
   // Candidates, best shape first among the valid ones: p pushed along the mean normal of the faces through
   // p (the new boundary triangles), points between p and the cavity's centroid or the old tets'
@@ -950,6 +963,9 @@ private:
 
 } // namespace
 
+// Edge removals tried around one point that could not be removed.
+constexpr size_t kMaxStarFlips = 200;
+
 Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   std::vector<int32_t>* tetRegion, Progress* progress, SteinerRemovalReport* report)
 {
@@ -989,6 +1005,41 @@ Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std:
       break;
     }
     todo = failed;
+  }
+  // What is left: reshape each point's neighbourhood by interior edge removals (StarFlips.h), retrying
+  // the removal after each flip; a removal may unlock another point, hence the rounds.
+  for (int round = 0; round < 3 && !todo.empty(); ++round)
+  {
+    std::vector<int32_t> failed;
+    std::vector<std::pair<int32_t, int32_t>> edges;
+    for (int32_t v : todo)
+    {
+      if (pr->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Steiner point removal was cancelled.");
+      bool removed = rem.remove(v);
+      // The candidates are listed again after a round of flips (the star has changed).
+      for (int attempt = 0; attempt < 4 && !removed; ++attempt)
+      {
+        starFlipCandidates(ed, bc, v, edges);
+        int flipped = 0;
+        for (size_t k = 0; k < edges.size() && k < kMaxStarFlips && !removed; ++k)
+          if (removeEdgeKeepingRegion(ed, bc, edges[k].first, edges[k].second, tetRegion))
+          {
+            ++flipped;
+            removed = rem.remove(v);
+          }
+        if (!flipped)
+          break;
+      }
+      if (removed)
+        ++rep.removed;
+      else
+        failed.push_back(v);
+    }
+    const bool progress = failed.size() < todo.size();
+    todo = failed;
+    if (!progress)
+      break;
   }
   rep.remaining = static_cast<int64_t>(todo.size());
   for (size_t i = 0; i < todo.size() && i < 8; ++i)
