@@ -42,6 +42,21 @@ bool circumcentre(const double* const p[4], double* out)
   }
   return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(out[2]);
 }
+
+// n = (b - a) x (c - a); returns its length.
+double triangleNormal(const double* a, const double* b, const double* c, double n[3])
+{
+  double u[3], w[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] = b[k] - a[k];
+    w[k] = c[k] - a[k];
+  }
+  n[0] = u[1] * w[2] - u[2] * w[1];
+  n[1] = u[2] * w[0] - u[0] * w[2];
+  n[2] = u[0] * w[1] - u[1] * w[0];
+  return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
 } // namespace
 
 int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
@@ -97,16 +112,8 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
       for (int k = 0, m = 0; k < 4; ++k)
         if (k != i)
           f[m++] = p[k];
-      double u[3], w[3], n[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        u[k] = f[1][k] - f[0][k];
-        w[k] = f[2][k] - f[0][k];
-      }
-      n[0] = u[1] * w[2] - u[2] * w[1];
-      n[1] = u[2] * w[0] - u[0] * w[2];
-      n[2] = u[0] * w[1] - u[1] * w[0];
-      const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      double n[3];
+      const double nn = triangleNormal(f[0], f[1], f[2], n);
       if (!(nn > 0))
         continue;
       const double side = (p[i][0] - f[0][0]) * n[0] + (p[i][1] - f[0][1]) * n[1] + (p[i][2] - f[0][2]) * n[2];
@@ -137,16 +144,8 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
           {
             if (k == i || k == j)
               continue;
-            double u[3], w[3], n[3];
-            for (int c = 0; c < 3; ++c)
-            {
-              u[c] = p[j][c] - p[i][c];
-              w[c] = p[k][c] - p[i][c];
-            }
-            n[0] = u[1] * w[2] - u[2] * w[1];
-            n[1] = u[2] * w[0] - u[0] * w[2];
-            n[2] = u[0] * w[1] - u[1] * w[0];
-            const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            double n[3];
+            const double nn = triangleNormal(p[i], p[j], p[k], n);
             if (!(nn > 0))
               continue;
             for (const double scale : { 0.5, -0.5, 1.0, -1.0 })
