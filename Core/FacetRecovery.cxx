@@ -150,28 +150,13 @@ public:
       // Both sides triangulate R the same way, with opposite orientations.
       if (tri[0].size() != tri[1].size() || tri[0].empty())
         return false;
-      std::unordered_map<uint64_t, int> tuses;
       for (auto& [k, f] : tri[0])
       {
         auto it = tri[1].find(k);
         if (it == tri[1].end() || orientedKey(f.data()) == orientedKey(it->second.data()))
           return false;
-        for (int i = 0; i < 3; ++i)
-          ++tuses[edgeKey(f[i], f[(i + 1) % 3])];
       }
-      size_t borderSeen = 0;
-      for (auto& [k, n] : tuses)
-      {
-        if (n == 1)
-        {
-          if (!border_.count(k))
-            return false;
-          ++borderSeen;
-        }
-        else if (n != 2)
-          return false;
-      }
-      if (borderSeen != border_.size())
+      if (!isDisk(tri[0]))
         return false;
     }
     if (!interiorConstraintsFree() || createsForbiddenEdge(newTets))
