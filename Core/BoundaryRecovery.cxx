@@ -1030,7 +1030,47 @@ public:
         undo(created);
       }
       if (!progress)
+        progress = removeCrossingFaceEdge(a, b, m0, sideways);
+      if (!progress)
         return false;
+    }
+    return false;
+  }
+
+  // The 2-3 flip of a face the segment crosses is invalid when one of the face's edges is reflex; then
+  // that edge has to go first (TetGen's removefacebyflips does the same). Tries each edge of each crossing
+  // face; keeps a removal that lowers the crossing count (or keeps it, a bounded number of times).
+  bool removeCrossingFaceEdge(int32_t a, int32_t b, size_t m0, int& sideways)
+  {
+    std::vector<Crossing> faces, edges, f2, e2;
+    std::vector<int32_t> created;
+    if (!traceSegment(a, b, faces, edges))
+      return false;
+    std::unordered_set<uint64_t> tried;
+    int32_t fv[3];
+    for (const Crossing& c : faces)
+    {
+      if (m_.isFree(c.tet))
+        continue;
+      m_.faceVertices(c.tet, c.a, fv);
+      for (int k = 0; k < 3; ++k)
+      {
+        const int32_t x = fv[k], y = fv[(k + 1) % 3];
+        if (!tried.insert(edgeKey(x, y)).second)
+          continue;
+        const int32_t t = ed_.findEdge(x, y);
+        if (t < 0 || !ed_.removeEdgeDeep(t, x, y, &bc_, &created, 1))
+          continue;
+        if (ed_.findEdge(a, b) >= 0)
+          return true;
+        if (traceSegment(a, b, f2, e2) && (f2.size() + e2.size() < m0 || (f2.size() + e2.size() == m0 && sideways < 64)))
+        {
+          if (f2.size() + e2.size() == m0)
+            ++sideways;
+          return true;
+        }
+        undo(created);
+      }
     }
     return false;
   }
