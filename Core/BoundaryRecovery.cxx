@@ -123,6 +123,15 @@ bool BoundaryConstraints::forbiddenEdge(int32_t u, int32_t v) const
   return iv != segmentOf_.end() && onSeg(iv->second, u);
 }
 
+uint64_t BoundaryConstraints::segmentOf(int32_t a, int32_t b) const
+{
+  auto ia = segmentOf_.find(a);
+  if (ia != segmentOf_.end())
+    return ia->second;
+  auto ib = segmentOf_.find(b);
+  return ib != segmentOf_.end() ? ib->second : edgeKey(a, b);
+}
+
 int32_t BoundaryConstraints::findSubface(int32_t a, int32_t b, int32_t c) const
 {
   const int32_t* f = faces_.find(TriKey(a, b, c));
@@ -1143,8 +1152,78 @@ public:
     return false;
   }
 
-  // Steiner point at the midpoint of subsegment ab.
-  bool splitEdge(int32_t a, int32_t b)
+  // Where the presplit stage splits missing subsegment ab (the mesh is Delaunay, nothing flipped yet):
+  // at the foot of the vertex that encroaches most on it (largest angle a-q-b among the vertices of the
+  // faces it crosses), which then no longer encroaches on either piece; when that foot is near an end,
+  // at a power-of-two distance from the piece's input end point (concentric shells: pieces of segments
+  // meeting at a small angle do not keep encroaching on each other), else at the midpoint.
+  void presplitPoint(int32_t a, int32_t b, double* p)
+  {
+    const double *A = m_.point(a), *B = m_.point(b);
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = B[k] - A[k];
+      p[k] = 0.5 * (A[k] + B[k]);
+    }
+    const double len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    std::vector<Crossing> faces, edges;
+    if (traceSegment(a, b, faces, edges))
+    {
+      double bestCos = 2, bestT = 0.5;
+      auto consider = [&](int32_t q) {
+        if (q == a || q == b)
+          return;
+        const double* Q = m_.point(q);
+        double u[3], w[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          u[k] = A[k] - Q[k];
+          w[k] = B[k] - Q[k];
+        }
+        const double nu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        const double nw = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        const double c = (u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) / (nu * nw);
+        if (c < bestCos)
+        {
+          bestCos = c;
+          bestT = -(u[0] * d[0] + u[1] * d[1] + u[2] * d[2]) / len2;
+        }
+      };
+      int32_t fv[3];
+      for (const Crossing& c : faces)
+      {
+        m_.faceVertices(c.tet, c.a, fv);
+        for (int32_t q : fv)
+          consider(q);
+      }
+      for (const Crossing& c : edges)
+      {
+        consider(c.a);
+        consider(c.b);
+      }
+      if (bestCos < 2 && bestT > 0.2 && bestT < 0.8)
+      {
+        for (int k = 0; k < 3; ++k)
+          p[k] = A[k] + bestT * d[k];
+        return;
+      }
+    }
+    const bool inputA = kinds_[a] == VertexKind::Boundary, inputB = kinds_[b] == VertexKind::Boundary;
+    if (inputA != inputB)
+    {
+      const double* O = inputA ? A : B;
+      const double* E = inputA ? B : A;
+      const double len = std::sqrt(len2);
+      const double t = std::exp2(std::round(std::log2(0.5 * len))) / len;
+      for (int k = 0; k < 3; ++k)
+        p[k] = O[k] + t * (E[k] - O[k]);
+    }
+  }
+
+  // Steiner point on subsegment ab: at its midpoint, or (presplit stage) at presplitPoint() inserted
+  // by plain Delaunay insertion.
+  bool splitEdge(int32_t a, int32_t b, bool presplit = false)
   {
     const std::array<int32_t, 2>* ef = bc_.edgeFaces(a, b);
     if (!ef)
@@ -1152,10 +1231,12 @@ public:
     const std::array<int32_t, 2> fs = *ef;
     const double *A = m_.point(a), *B = m_.point(b);
     double p[3] = { 0.5 * (A[0] + B[0]), 0.5 * (A[1] + B[1]), 0.5 * (A[2] + B[2]) };
+    if (presplit)
+      presplitPoint(a, b, p);
     const int32_t v = m_.addPoint(p);
     bool sameParent = fs[0] >= 0 && fs[1] >= 0 && bc_.parent[fs[0]] == bc_.parent[fs[1]];
     kinds_.push_back(sameParent ? VertexKind::SteinerFacet : VertexKind::SteinerSegment);
-    if (!ed_.insertVertex(v, ed_.tetOf(a), &bc_))
+    if (!ed_.insertVertex(v, ed_.tetOf(a), presplit ? nullptr : &bc_))
     {
       m_.points.resize(m_.points.size() - 3);
       kinds_.pop_back();
@@ -1265,6 +1346,47 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   };
   FacetCavityStats cavityStats;
   BoundaryCensus census;
+  if (options.presplitSegments && !options.presplitSegments->empty() && options.allowSteiner)
+  {
+    // Presplit stage (see RecoveryOptions::presplitSegments); insertVertex without constraints is the
+    // Bowyer-Watson insertion, so the mesh stays Delaunay.
+    for (int round = 0; round < 64 && steinerUsed < budget; ++round)
+    {
+      census.take(ed, bc);
+      missingEdges.clear();
+      std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
+      for (int32_t f = 0; f < bc.capacity(); ++f)
+      {
+        if (!bc.alive(f))
+          continue;
+        const int32_t* s = bc.subface(f);
+        for (int i = 0; i < 3; ++i)
+        {
+          const int32_t a = s[i], b = s[(i + 1) % 3];
+          const int32_t id = census.edgeId(a, b);
+          if (id >= 0 && seen[static_cast<size_t>(id)])
+            continue;
+          if (id >= 0)
+            seen[static_cast<size_t>(id)] = 1;
+          if ((id < 0 || !census.edgePresent(id)) && requiredEdge(a, b) &&
+            options.presplitSegments->count(bc.segmentOf(a, b)))
+            missingEdges.push_back({ a, b });
+        }
+      }
+      if (missingEdges.empty())
+        break;
+      bool split = false;
+      for (auto [a, b] : missingEdges)
+        if (bc.isEdge(a, b) && ed.findEdge(a, b) < 0 && steinerUsed < budget && rec.splitEdge(a, b, true))
+        {
+          ++steinerUsed;
+          ++rep.presplitPoints;
+          split = true;
+        }
+      if (!split)
+        break;
+    }
+  }
   for (int round = 0; round < 100000; ++round)
   {
     if (pr->cancelled())
@@ -1466,6 +1588,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   rep.facetCavities = static_cast<int64_t>(cavityStats.successes);
   rep.facetCavityEnlargements = static_cast<int64_t>(cavityStats.enlargements);
   rep.steinerSegment = rec.steinerSegment;
+  rep.splitSegments = bc.splitSegments();
   rep.steinerFacet = rec.steinerFacet;
   rep.flips23 = ed.flips23 - f23;
   rep.flips32 = ed.flips32 - f32;

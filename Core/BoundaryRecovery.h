@@ -108,6 +108,10 @@ public:
   // pieces. Rounded segment points lie just off the segment, so such an edge would run alongside the
   // pieces and fold the boundary (flat tets that Steiner removal cannot undo).
   bool forbiddenEdge(int32_t u, int32_t v) const;
+  // The input segment (edgeKey of its input end points) that subsegment ab lies on.
+  uint64_t segmentOf(int32_t a, int32_t b) const;
+  // Input segments that received Steiner points.
+  const std::unordered_set<uint64_t>& splitSegments() const { return splitSegments_; }
 
   std::vector<int32_t> verts;  // 3 per subface
   std::vector<int32_t> parent; // input triangle id, -1 = removed
@@ -215,6 +219,11 @@ struct RecoveryOptions
 {
   bool allowSteiner = true;   // false: flips only (what flips cannot do is reported)
   int64_t maxSteinerPoints = -1; // budget; -1 = automatic (4 x triangles + 1000)
+  // Input segments (edgeKey of their end points) to split first, while the mesh is still Delaunay:
+  // before any flip, their missing pieces are split by plain Delaunay insertion until every piece is an
+  // edge. That converges (a piece short enough is a Delaunay edge), where splitting after flips may
+  // not; the mesher retries a failed recovery with the segments the first attempt had to split.
+  const std::unordered_set<uint64_t>* presplitSegments = nullptr;
 };
 
 struct RecoveryReport
@@ -227,6 +236,8 @@ struct RecoveryReport
   int64_t facetCavities = 0;          // input triangles recovered by cavity retetrahedralization
   int64_t facetCavityEnlargements = 0; // tets added to those cavities for missing boundary faces
   int64_t unrecoveredEdges = 0, unrecoveredFacets = 0;
+  int64_t presplitPoints = 0;          // Steiner points of the presplit stage (part of steinerSegment)
+  std::unordered_set<uint64_t> splitSegments; // input segments that received Steiner points
   double seconds = 0;
 };
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <unordered_set>
 #include <numeric>
 
 namespace volgrid
@@ -169,49 +170,70 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   if (pr->cancelled())
     return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
 
-  // 3. Recovery.
-  t0 = std::chrono::steady_clock::now();
+  // 3-5. Recovery, exterior removal, removal of the boundary Steiner points. When recovery or that removal
+  // fails, both are retried once from the Delaunay mesh, first splitting the input segments the first
+  // attempt had to split while the mesh is still Delaunay (RecoveryOptions::presplitSegments).
   std::vector<VertexKind> kinds(static_cast<size_t>(N + 8), VertexKind::Unused);
   for (int32_t v = 0; v < N; ++v)
     if (used[v])
       kinds[v] = VertexKind::Boundary;
   for (int c = 0; c < 8; ++c)
     kinds[N + c] = VertexKind::Box;
+  const bool mayRetry = options.allowSteinerPoints && options.removeBoundarySteiner;
+  const TetMesh delaunayMesh = mayRetry ? mesh : TetMesh();
+  const std::vector<VertexKind> delaunayKinds = kinds;
   BoundaryConstraints bc;
-  bc.init(surf.triangles.data(), NT);
   MeshEditor ed(mesh);
-  RecoveryOptions ro;
-  ro.allowSteiner = options.allowSteinerPoints;
-  ro.maxSteinerPoints = options.maxSteinerPoints;
-  RecoveryReport rr;
-  s = recoverBoundary(ed, bc, kinds, ro, pr, &rr);
-  st.missingEdges = rr.missingEdgesInitially;
-  st.missingFacets = rr.missingFacetsInitially;
-  st.flips = static_cast<int64_t>(rr.flips23 + rr.flips32 + rr.flipsEdgeRemoval);
-  st.steinerInserted = rr.steinerSegment + rr.steinerFacet;
-  st.secondsRecovery = since(t0);
-  if (!s.ok())
-    return s;
-
-  // 4. Exterior removal.
-  t0 = std::chrono::steady_clock::now();
   RegionResult regions;
-  s = removeExterior(ed, bc, options.regionRule, regions, pr);
+  std::unordered_set<uint64_t> presplit;
+  for (int attempt = 0; attempt < 2; ++attempt)
+  {
+    if (attempt > 0)
+    {
+      mesh = delaunayMesh;
+      kinds = delaunayKinds;
+      ed.rebuildVertexMap();
+      regions = RegionResult();
+    }
+    t0 = std::chrono::steady_clock::now();
+    bc = BoundaryConstraints();
+    bc.init(surf.triangles.data(), NT);
+    RecoveryOptions ro;
+    ro.allowSteiner = options.allowSteinerPoints;
+    ro.maxSteinerPoints = options.maxSteinerPoints;
+    ro.presplitSegments = attempt > 0 ? &presplit : nullptr;
+    RecoveryReport rr;
+    s = recoverBoundary(ed, bc, kinds, ro, pr, &rr);
+    st.missingEdges = rr.missingEdgesInitially;
+    st.missingFacets = rr.missingFacetsInitially;
+    st.flips = static_cast<int64_t>(rr.flips23 + rr.flips32 + rr.flipsEdgeRemoval);
+    st.steinerInserted = rr.steinerSegment + rr.steinerFacet;
+    st.recoveryAttempts = attempt + 1;
+    st.secondsRecovery += since(t0);
+    // 4. Exterior removal.
+    if (s.ok())
+    {
+      t0 = std::chrono::steady_clock::now();
+      s = removeExterior(ed, bc, options.regionRule, regions, pr);
+      if (!s.ok())
+        return s;
+      st.regions = regions.numRegions;
+      st.secondsExterior += since(t0);
+      // 5. Boundary Steiner points.
+      t0 = std::chrono::steady_clock::now();
+      if (options.removeBoundarySteiner)
+      {
+        SteinerRemovalReport sr;
+        s = removeBoundarySteinerPoints(ed, bc, kinds, &regions.tetRegion, pr, &sr);
+      }
+      st.secondsSteiner += since(t0);
+    }
+    if (s.ok() || s.kind != ErrorKind::RecoveryFailed || !mayRetry || attempt > 0 || rr.splitSegments.empty())
+      break;
+    presplit = rr.splitSegments;
+  }
   if (!s.ok())
     return s;
-  st.regions = regions.numRegions;
-  st.secondsExterior = since(t0);
-
-  // 5. Boundary Steiner points.
-  t0 = std::chrono::steady_clock::now();
-  if (options.removeBoundarySteiner)
-  {
-    SteinerRemovalReport sr;
-    s = removeBoundarySteinerPoints(ed, bc, kinds, &regions.tetRegion, pr, &sr);
-    if (!s.ok())
-      return s;
-  }
-  st.secondsSteiner = since(t0);
 
   // 5b. Grid control and quality (MeshImprovement.h).
   t0 = std::chrono::steady_clock::now();

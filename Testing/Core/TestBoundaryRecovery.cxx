@@ -5,11 +5,14 @@
 #include "MeshChecker.h"
 #include "MesherTestShapes.h"
 #include "Predicates.h"
+#include "SurfaceReader.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <string>
+#include <unordered_set>
 
 using namespace volgrid;
 
@@ -363,4 +366,37 @@ TEST(BoundaryRecovery, NonPlanarSplitTriangleBySlab)
   EXPECT_TRUE(allPresent(ed, r.bc));
   EXPECT_LT(ed.findEdge(P, Q), 0);
   EXPECT_TRUE(checkMesh(r.mesh, structural()).valid);
+}
+
+// The presplit stage (RecoveryOptions::presplitSegments) on a CAD part whose flat faces are fans of
+// long thin triangles (120 input edges missing from the Delaunay tetrahedralization): with every input
+// segment listed, their pieces are all mesh edges before the first flip, and the rest of recovery then
+// only has facets to do.
+TEST(BoundaryRecovery, PresplitSegmentsArePresentBeforeAnyFlip)
+{
+  SurfaceMesh s;
+  ASSERT_TRUE(readSurface(std::string(VOLGRID_SHARED_DATA_DIR) + "/tetgen-tests/cgal/part.off", s).ok());
+  std::unordered_set<uint64_t> all;
+  for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
+    for (int i = 0; i < 3; ++i)
+      all.insert(edgeKey(s.triangle(t)[i], s.triangle(t)[(i + 1) % 3]));
+  {
+    RecoverySetup su(s);
+    MeshEditor ed(su.mesh);
+    RecoveryReport rep;
+    recoverBoundary(ed, su.bc, su.kinds, RecoveryOptions(), nullptr, &rep);
+    EXPECT_GT(rep.missingEdgesInitially, 100); // without the presplit stage
+  }
+  RecoverySetup su(s);
+  MeshEditor ed(su.mesh);
+  RecoveryOptions ro;
+  ro.presplitSegments = &all;
+  RecoveryReport rep;
+  Status st = recoverBoundary(ed, su.bc, su.kinds, ro, nullptr, &rep);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_GT(rep.presplitPoints, 0);
+  EXPECT_EQ(rep.missingEdgesInitially, 0);
+  EXPECT_FALSE(rep.splitSegments.empty());
+  EXPECT_TRUE(allPresent(ed, su.bc));
+  EXPECT_TRUE(checkMesh(su.mesh, structural()).valid);
 }
