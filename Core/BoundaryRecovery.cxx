@@ -439,7 +439,8 @@ bool MeshEditor::flip23(int32_t t, int face, const BoundaryConstraints* bc, std:
 }
 
 
-bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created)
+bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
+  std::array<int32_t, 2> chord)
 {
   if (bc && bc->isEdge(x, y))
     return false;
@@ -457,8 +458,29 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
   std::vector<double> best(static_cast<size_t>(n * n), kInvalid);
   std::vector<int> choice(static_cast<size_t>(n * n), -1);
   auto chordOk = [&](int i, int j) { return j == i + 1 || (i == 0 && j == n - 1) || !bc->forbiddenEdge(ring[i], ring[j]); };
+  // A required chord (positions ci < cj in the ring): no chord of the triangulation may cross it.
+  int ci = -1, cj = -1;
+  if (chord[0] >= 0)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      if (ring[i] == chord[0] || ring[i] == chord[1])
+        (ci < 0 ? ci : cj) = i;
+    }
+    if (cj < 0)
+      return false;
+  }
+  auto crossesChord = [&](int i, int j) { // i < j
+    if (ci < 0)
+      return false;
+    const bool inI = i < ci && ci < j, inJ = i < cj && cj < j;
+    const bool atI = i == ci || j == ci, atJ = i == cj || j == cj;
+    return !atI && !atJ && inI != inJ;
+  };
   auto triQ = [&](int i, int k, int j) -> double {
     if (bc && (!chordOk(i, k) || !chordOk(k, j) || !chordOk(i, j)))
+      return kInvalid;
+    if (crossesChord(i, k) || crossesChord(k, j) || crossesChord(i, j))
       return kInvalid;
     const double *A = mesh.point(ring[i]), *B = mesh.point(ring[k]), *C = mesh.point(ring[j]);
     if (orient3d(A, B, C, Y) <= 0 || orient3d(A, C, B, X) <= 0)
@@ -521,9 +543,9 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
 }
 
 bool MeshEditor::removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
-  std::vector<int32_t>* created, int depth)
+  std::vector<int32_t>* created, int depth, std::array<int32_t, 2> chord)
 {
-  if (removeEdge(t, x, y, bc, created))
+  if (removeEdge(t, x, y, bc, created, chord))
     return true;
   if (depth <= 0 || (bc && bc->isEdge(x, y)))
     return false;
@@ -546,7 +568,7 @@ bool MeshEditor::removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryC
       std::vector<int32_t> current = sub;
       const int32_t t2 = findEdge(x, y);
       std::vector<int32_t> fin;
-      if (t2 >= 0 && removeEdge(t2, x, y, bc, &fin))
+      if (t2 >= 0 && removeEdge(t2, x, y, bc, &fin, chord))
       {
         // Compose: what the two flips removed from the original mesh, and what now covers it.
         for (size_t k = 0; k < lastRemovedIds.size(); ++k)
@@ -987,7 +1009,41 @@ public:
   void undo(const std::vector<int32_t>& created)
   {
     std::vector<std::array<int32_t, 4>> old = ed_.lastRemoved;
+    // A point the undone edit added (flipInPlane's interior point) is used by no tet afterwards.
+    std::vector<int32_t> added;
+    for (int32_t t : created)
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t v = m_.vertex(t, i);
+        bool inOld = false;
+        for (const auto& o : old)
+          inOld = inOld || o[0] == v || o[1] == v || o[2] == v || o[3] == v;
+        if (!inOld)
+          added.push_back(v);
+      }
     ed_.replace(created, old, nullptr);
+    for (int32_t v : added)
+      kinds_[static_cast<size_t>(v)] = VertexKind::Unused;
+  }
+
+  // For edge c crossing segment ab in a common plane: the two vertices of c's ring in that plane (the
+  // diagonal a 2D flip would create), or {-1, -1}.
+  std::array<int32_t, 2> inPlaneChord(int32_t a, int32_t b, const Crossing& c)
+  {
+    std::array<int32_t, 2> chord = { -1, -1 };
+    std::vector<int32_t> ring, tets;
+    if (!ed_.edgeRing(c.tet, c.a, c.b, ring, tets))
+      return chord;
+    const double *A = m_.point(a), *B = m_.point(b), *X = m_.point(c.a);
+    int found = 0;
+    for (int32_t r : ring)
+      if (orient3d(A, B, X, m_.point(r)) == 0)
+      {
+        if (found < 2)
+          chord[found] = r;
+        ++found;
+      }
+    return found == 2 ? chord : std::array<int32_t, 2>{ -1, -1 };
   }
 
   bool recoverEdgeByFlips(int32_t a, int32_t b)
@@ -1022,7 +1078,15 @@ public:
         continue;
       for (const Crossing& c : edges)
       {
-        if (m_.isFree(c.tet) || !ed_.removeEdgeDeep(c.tet, c.a, c.b, &bc_, &created, 2))
+        // First as a 2D flip in the plane of the segment and the crossing edge (the chord between the
+        // two ring vertices in that plane), then any valid removal.
+        if (m_.isFree(c.tet))
+          continue;
+        const std::array<int32_t, 2> chord = inPlaneChord(a, b, c);
+        if (!ed_.removeEdgeDeep(c.tet, c.a, c.b, &bc_, &created, 2, chord) &&
+          (chord[0] < 0 || m_.isFree(c.tet) ||
+            !ed_.flipInPlane(c.tet, c.a, c.b, chord[0], chord[1], &bc_, &created, &kinds_)) &&
+          (m_.isFree(c.tet) || !ed_.removeEdgeDeep(c.tet, c.a, c.b, &bc_, &created, 2)))
           continue;
         if (ed_.findEdge(a, b) >= 0)
           return true;
@@ -1308,7 +1372,7 @@ static constexpr int kMaxGrowingRounds = 3;
 // plus kWorkBase. Most cases need far less (< 10 per missing edge); CAD models with long thin triangles
 // need up to ~1000. Once it is spent, flips stop and what is missing gets Steiner points (bounded by the
 // Steiner budget and the growth guard), so hopeless cases still end in seconds.
-static constexpr uint64_t kWorkPerMissingEdge = 1000, kWorkBase = 100000;
+static constexpr uint64_t kWorkPerMissingEdge = 4000, kWorkBase = 100000;
 
 Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   const RecoveryOptions& options, Progress* progress, RecoveryReport* report)

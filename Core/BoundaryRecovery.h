@@ -163,8 +163,9 @@ public:
   // would remove a constraint (a boundary subface / subface edge).
   bool flip23(int32_t t, int face, const BoundaryConstraints* bc, std::vector<int32_t>* created = nullptr);
   // Removes edge xy (contained in tet t): n-to-(2n-4) with the best valid ring triangulation.
+  // chord: two ring vertices the ring triangulation must join (no other chord crosses theirs), or -1s.
   bool removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
-    std::vector<int32_t>* created = nullptr);
+    std::vector<int32_t>* created = nullptr, std::array<int32_t, 2> chord = { -1, -1 });
 
   // Inserts a new vertex v (coordinates already in mesh.points) with a Bowyer-Watson cavity grown from
   // the tets whose closure contains it, not crossing constraint faces (nor hull faces), made star-shaped
@@ -182,7 +183,13 @@ public:
   // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to
   // the ring vertices (recursively, `depth` levels) when the edge cannot be removed directly.
   bool removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
-    int depth);
+    int depth, std::array<int32_t, 2> chord = { -1, -1 });
+
+  // Replaces edge xy (in tet t) by pq, where p and q are ring vertices coplanar with x and y (a 2D flip
+  // inside a flat face); each side of the plane is re-filled on its own (PlanarFlip.cxx). With `kinds`,
+  // a side no cone or Delaunay fill can do gets an interior Steiner point (appended to kinds).
+  bool flipInPlane(int32_t t, int32_t x, int32_t y, int32_t p, int32_t q, const BoundaryConstraints* bc,
+    std::vector<int32_t>* created = nullptr, std::vector<VertexKind>* kinds = nullptr);
 
   // The tets the last successful flip removed (for undo: replace(created, lastRemoved)) and their ids
   // before the flip.

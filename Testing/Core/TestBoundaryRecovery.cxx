@@ -5,6 +5,7 @@
 #include "MeshChecker.h"
 #include "MesherTestShapes.h"
 #include "Predicates.h"
+#include "Quality.h"
 #include "SurfaceReader.h"
 
 #include <gtest/gtest.h>
@@ -399,4 +400,59 @@ TEST(BoundaryRecovery, PresplitSegmentsArePresentBeforeAnyFlip)
   EXPECT_FALSE(rep.splitSegments.empty());
   EXPECT_TRUE(allPresent(ed, su.bc));
   EXPECT_TRUE(checkMesh(su.mesh, structural()).valid);
+}
+
+// flipInPlane: edge xy in the plane z = 0 with ring p, u1, [u2] (above), q, w (below), p and q in the
+// plane. Replacing xy by pq keeps the region (same volume, valid adjacency); when the quad x-p-y-q is not
+// convex the flip is refused and the mesh left as it was (the two floor triangles would overlap).
+TEST(BoundaryRecovery, PlanarFlipReplacesTheDiagonalOfAFlatQuad)
+{
+  auto run = [](double px, bool twoAbove) {
+    const double pts[7][3] = { { -1, 0, 0 }, { 1, 0, 0 }, { px, -1, 0 }, { px, 1, 0 }, { 0.3, -0.5, 1 },
+      { -0.3, 0.5, 1 }, { 0, 0, -1 } };
+    enum { X, Y, P, Q, U1, U2, W };
+    TetMesh m;
+    for (auto& p : pts)
+      m.addPoint(p);
+    const std::vector<int32_t> ring =
+      twoAbove ? std::vector<int32_t>{ P, U1, U2, Q, W } : std::vector<int32_t>{ P, U1, Q, W };
+    const size_t n = ring.size();
+    std::vector<std::array<int32_t, 4>> tets;
+    for (size_t i = 0; i < n; ++i)
+    {
+      std::array<int32_t, 4> t = { { X, Y, ring[i], ring[(i + 1) % n] } };
+      if (predicates::orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
+        std::swap(t[0], t[1]);
+      tets.push_back(t);
+    }
+    MeshEditor ed(m);
+    EXPECT_TRUE(ed.replace({}, tets, nullptr, true));
+    auto volume = [&]() {
+      double v = 0;
+      m.forEachTet([&](int32_t t) { v += quality::tetVolume(m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)),
+                                      m.point(m.vertex(t, 2)), m.point(m.vertex(t, 3))); });
+      return v;
+    };
+    const double v0 = volume();
+    const int32_t t0 = m.numTets();
+    std::vector<VertexKind> kinds(7, VertexKind::Boundary);
+    const bool flipped = ed.flipInPlane(ed.findEdge(X, Y), X, Y, P, Q, nullptr, nullptr, &kinds);
+    EXPECT_TRUE(checkMesh(m, structural()).valid);
+    EXPECT_NEAR(volume(), v0, 1e-12);
+    if (flipped)
+    {
+      EXPECT_LT(ed.findEdge(X, Y), 0);
+      EXPECT_GE(ed.findEdge(P, Q), 0);
+    }
+    else
+    {
+      EXPECT_GE(ed.findEdge(X, Y), 0);
+      EXPECT_EQ(m.numTets(), t0);
+    }
+    return flipped;
+  };
+  EXPECT_TRUE(run(0.0, true));
+  EXPECT_TRUE(run(0.0, false));
+  EXPECT_FALSE(run(-2.0, true));
+  EXPECT_FALSE(run(-2.0, false)); // each side's cone alone would be valid here
 }
