@@ -264,7 +264,7 @@ int runMeshCommand(int argc, char** argv)
   {
     std::printf("{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
                 "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
-                "\"missing_facets\": %lld, \"flips\": %lld, \"steiner_interior\": %lld, "
+                "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
                 "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %.17g, "
                 "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"field_points\": %lld, "
                 "\"cluster_points\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, "
@@ -275,7 +275,7 @@ int runMeshCommand(int argc, char** argv)
       static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
       static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
       static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets),
-      static_cast<long long>(s.flips), static_cast<long long>(s.steinerInterior),
+      static_cast<long long>(s.flips), s.recoveryAttempts, static_cast<long long>(s.steinerInterior),
       static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", boundary.tetVolume,
       s.enclosedVolume, boundary.relativeVolumeError, static_cast<long long>(s.improvement.fieldPoints),
       static_cast<long long>(s.improvement.clusterPoints), dihedral.minDihedral, dihedral.maxDihedral,
