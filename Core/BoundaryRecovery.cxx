@@ -1080,13 +1080,15 @@ public:
       {
         // First as a 2D flip in the plane of the segment and the crossing edge (the chord between the
         // two ring vertices in that plane), then any valid removal.
-        if (m_.isFree(c.tet))
+        // (a failed attempt restores the tets under new ids: look the edge up again before each)
+        int32_t t = ed_.findEdge(c.a, c.b);
+        if (t < 0)
           continue;
-        const std::array<int32_t, 2> chord = inPlaneChord(a, b, c);
-        if (!ed_.removeEdgeDeep(c.tet, c.a, c.b, &bc_, &created, 2, chord) &&
-          (chord[0] < 0 || m_.isFree(c.tet) ||
-            !ed_.flipInPlane(c.tet, c.a, c.b, chord[0], chord[1], &bc_, &created, &kinds_)) &&
-          (m_.isFree(c.tet) || !ed_.removeEdgeDeep(c.tet, c.a, c.b, &bc_, &created, 2)))
+        const std::array<int32_t, 2> chord = inPlaneChord(a, b, { t, c.a, c.b });
+        if (!ed_.removeEdgeDeep(t, c.a, c.b, &bc_, &created, 2, chord) &&
+          (chord[0] < 0 || (t = ed_.findEdge(c.a, c.b)) < 0 ||
+            !ed_.flipInPlane(t, c.a, c.b, chord[0], chord[1], &bc_, &created, &kinds_)) &&
+          ((t = ed_.findEdge(c.a, c.b)) < 0 || !ed_.removeEdgeDeep(t, c.a, c.b, &bc_, &created, 2)))
           continue;
         if (ed_.findEdge(a, b) >= 0)
           return true;
@@ -1372,7 +1374,7 @@ static constexpr int kMaxGrowingRounds = 3;
 // plus kWorkBase. Most cases need far less (< 10 per missing edge); CAD models with long thin triangles
 // need up to ~1000. Once it is spent, flips stop and what is missing gets Steiner points (bounded by the
 // Steiner budget and the growth guard), so hopeless cases still end in seconds.
-static constexpr uint64_t kWorkPerMissingEdge = 4000, kWorkBase = 100000;
+static constexpr uint64_t kWorkPerMissingEdge = 1000, kWorkBase = 100000;
 
 Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
   const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
@@ -1414,7 +1416,12 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   {
     // Presplit stage (see RecoveryOptions::presplitSegments); insertVertex without constraints is the
     // Bowyer-Watson insertion, so the mesh stays Delaunay.
-    for (int round = 0; round < 64 && steinerUsed < budget; ++round)
+    // At most one presplit point per input triangle: beyond that (segments of needle triangles, whose
+    // pieces would have to be as short as the needles are thin) the retry would only end in a slow
+    // Steiner removal of thousands of points.
+    const int64_t presplitBudget = std::min<int64_t>(budget, bc.numInputTriangles());
+    bool converged = false;
+    for (int round = 0; round < 64 && steinerUsed < presplitBudget; ++round)
     {
       census.take(ed, bc);
       missingEdges.clear();
@@ -1438,10 +1445,13 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
         }
       }
       if (missingEdges.empty())
+      {
+        converged = true;
         break;
+      }
       bool split = false;
       for (auto [a, b] : missingEdges)
-        if (bc.isEdge(a, b) && ed.findEdge(a, b) < 0 && steinerUsed < budget && rec.splitEdge(a, b, true))
+        if (bc.isEdge(a, b) && ed.findEdge(a, b) < 0 && steinerUsed < presplitBudget && rec.splitEdge(a, b, true))
         {
           ++steinerUsed;
           ++rep.presplitPoints;
@@ -1449,6 +1459,15 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
         }
       if (!split)
         break;
+    }
+    if (!converged)
+    {
+      rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (report)
+        *report = rep;
+      return Status::failure(ErrorKind::RecoveryFailed,
+        "Boundary recovery failed: splitting the listed segments did not make them edges within " +
+          std::to_string(presplitBudget) + " Steiner points (needle-thin triangles).");
     }
   }
   for (int round = 0; round < 100000; ++round)

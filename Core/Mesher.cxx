@@ -186,6 +186,7 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   MeshEditor ed(mesh);
   RegionResult regions;
   std::unordered_set<uint64_t> presplit;
+  Status firstFailure = Status::success();
   for (int attempt = 0; attempt < 2; ++attempt)
   {
     if (attempt > 0)
@@ -228,8 +229,17 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
       }
       st.secondsSteiner += since(t0);
     }
+    if (attempt > 0 && !s.ok())
+    {
+      // Report the first attempt's diagnosis (it names what flips and Steiner points could not do).
+      s = firstFailure;
+      s.message += " A retry that first split the " + std::to_string(presplit.size()) +
+        " segments involved failed too.";
+      break;
+    }
     if (s.ok() || s.kind != ErrorKind::RecoveryFailed || !mayRetry || attempt > 0 || rr.splitSegments.empty())
       break;
+    firstFailure = s;
     presplit = rr.splitSegments;
   }
   if (!s.ok())

@@ -72,24 +72,36 @@ bool fillSide(const TetMesh& m, const std::vector<Face>& faces, const std::vecto
 }
 
 // A point strictly inside the polyhedron `faces` that sees every face (a Schoenhardt-like side needs
-// one, as in TetGen's add_steinerpt_in_schoenhardtpoly): candidates between the centroid of the ring
-// vertices and the centroid of the floor, each checked exactly; the best-shaped cone wins.
+// one, as in TetGen's add_steinerpt_in_schoenhardtpoly). Such a point always exists: the midpoint m of
+// xy sees every ring face strictly (each passes through x or y and has the other on its positive side)
+// and lies on the floor, so m moved a little towards a ring vertex of this side sees the floor too.
+// Candidates: between the centroids of the ring vertices and of the floor, then m moved towards each ring
+// vertex by shrinking amounts; each is checked exactly and the best-shaped cone among the valid wins.
 bool interiorPoint(const TetMesh& m, const std::vector<Face>& faces, const std::vector<int32_t>& chain,
   const int32_t floor[4], double* out)
 {
-  double top[3] = { 0, 0, 0 }, bottom[3] = { 0, 0, 0 };
+  double top[3] = { 0, 0, 0 }, bottom[3] = { 0, 0, 0 }, mid[3];
   for (int32_t c : chain)
     for (int k = 0; k < 3; ++k)
       top[k] += m.point(c)[k] / static_cast<double>(chain.size());
   for (int i = 0; i < 4; ++i)
     for (int k = 0; k < 3; ++k)
       bottom[k] += m.point(floor[i])[k] / 4.0;
+  for (int k = 0; k < 3; ++k)
+    mid[k] = 0.5 * (m.point(floor[0])[k] + m.point(floor[1])[k]);
+  std::vector<std::array<double, 3>> cands;
+  for (double t : { 0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.05 })
+    cands.push_back({ { bottom[0] + t * (top[0] - bottom[0]), bottom[1] + t * (top[1] - bottom[1]),
+      bottom[2] + t * (top[2] - bottom[2]) } });
+  for (int32_t r : chain)
+    for (double t : { 0.5, 0.25, 0.1, 0.03, 0.01, 1e-3, 1e-4, 1e-6 })
+      cands.push_back({ { mid[0] + t * (m.point(r)[0] - mid[0]), mid[1] + t * (m.point(r)[1] - mid[1]),
+        mid[2] + t * (m.point(r)[2] - mid[2]) } });
   double bestQ = 0;
   bool found = false;
-  for (double t : { 0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.05 })
+  for (const auto& cand : cands)
   {
-    const double c[3] = { bottom[0] + t * (top[0] - bottom[0]), bottom[1] + t * (top[1] - bottom[1]),
-      bottom[2] + t * (top[2] - bottom[2]) };
+    const double* c = cand.data();
     double q = 1e300;
     for (const Face& f : faces)
     {
