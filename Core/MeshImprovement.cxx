@@ -173,6 +173,38 @@ private:
   double size_ = 1;
 };
 
+// 1 for the vertices of live tets.
+std::vector<uint8_t> usedVertices(const TetMesh& mesh)
+{
+  std::vector<uint8_t> used(static_cast<size_t>(mesh.numVertices()), 0);
+  mesh.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      used[mesh.vertex(t, i)] = 1;
+  });
+  return used;
+}
+
+// Whether a tet under `degrees` has a vertex on no constrained face and not locked by the caller: only
+// then can a vertex collapse touch the worst tets.
+bool hasUnlockedVertexBelow(TetMesh& mesh, const FaceConstraints& fc, const std::vector<uint8_t>& extraLock,
+  double degrees)
+{
+  TetEditor probe(mesh, &fc, nullptr);
+  probe.rebuildVertexMap();
+  const std::vector<uint8_t> lock = probe.lockedVertices();
+  const double q = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  bool found = false;
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    if (found || !(tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q))
+      return;
+    for (int i = 0; i < 4; ++i)
+      if (!lock[v[i]] && !(static_cast<size_t>(v[i]) < extraLock.size() && extraLock[v[i]]))
+        found = true;
+  });
+  return found;
+}
+
 } // namespace
 
 ImprovementOptions::ImprovementOptions()
@@ -189,6 +221,9 @@ ImprovementOptions::ImprovementOptions()
   sizing.scale = 1.0;
   optimization.targetDegrees = 18.0;
   optimization.maxPasses = 8;
+  // The mesher writes only the points its tets use: interior points (recovery's Steiner points squeezed
+  // against the boundary, field points) may be removed where that improves the worst tet around them.
+  optimization.vertexRemoval = true;
 }
 
 Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, const SurfaceMesh& surface,
@@ -355,11 +390,15 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
   // 4. Optimisation, one pass at a time so that it stops once a pass no longer pays: when the tets below
   //    the target are those the boundary triangles force (all four vertices on a constrained face), the
   //    remaining passes would only retry them.
+  // The vertices in tets before optimisation: those it removes are counted at the end.
+  const int32_t nvField = mesh.numVertices();
+  const std::vector<uint8_t> usedBefore = usedVertices(mesh);
   if (options.optimize)
   {
     const auto t0 = std::chrono::steady_clock::now();
     OptimizationOptions one = options.optimization;
     one.maxPasses = 1;
+    one.vertexRemoval = false; // a second attempt, below
     // The first call runs up to three passes (each call sweeps the whole mesh for its summaries), then
     // one pass per call while a pass still pays.
     auto optimise = [&](int maxPasses) -> Status {
@@ -382,51 +421,99 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       }
       return Status::success();
     };
-    s = optimise(options.optimization.maxPasses);
-    if (!s.ok())
-      return s;
-    // What optimisation cannot fix (slivers spanned by boundary vertices): split by a point inside, then
-    // optimise again. At most splitRounds rounds.
-    for (int round = 0; round < options.splitRounds && stats.after.minDihedral < options.optimization.targetDegrees;
-         ++round)
-    {
-      if (progress && progress->cancelled())
-        return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-      const int64_t n = splitBadTets(mesh, &fc, &tetRegion, options.optimization.targetDegrees,
-        std::max<int64_t>(200, mesh.numTets() / 20));
-      stats.splitPoints += n;
-      if (n == 0)
-        break;
-      const double minBefore = stats.after.minDihedral;
-      s = optimise(std::min(3, options.optimization.maxPasses));
-      if (!s.ok())
-        return s;
-      if (stats.after.minDihedral < minBefore + 0.1)
-        break;
-    }
     // Beyond the target the mesh's minimum is decided by its few worst tets: while it pays, aim a little
     // above the current worst (flips, smoothing and splitting touch only the tets below the aim and accept
     // strict improvements only), so a mesh already past the target still gets better where it is worst.
-    for (int round = 0; round < options.floorRounds; ++round)
+    auto floorRounds = [&]() -> Status {
+      for (int round = 0; round < options.floorRounds; ++round)
+      {
+        if (progress && progress->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+        const double worst = worstSineDegrees(mesh);
+        if (!(worst > 0) || worst >= 60)
+          break;
+        one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+        // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
+        if (countBelow(mesh, one.targetDegrees) > std::max<int64_t>(64, mesh.numTets() / 200))
+          break;
+        Status fs = optimise(2);
+        if (!fs.ok())
+          return fs;
+        stats.splitPoints += splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 64);
+        fs = optimise(1);
+        if (!fs.ok())
+          return fs;
+        if (worstSineDegrees(mesh) < worst + 0.05)
+          break;
+      }
+      return Status::success();
+    };
+    // The stage: optimisation, splitting of what it cannot fix, floor rounds.
+    auto optimiseSplitFloor = [&]() -> Status {
+      one.targetDegrees = options.optimization.targetDegrees;
+      Status ps = optimise(options.optimization.maxPasses);
+      if (!ps.ok())
+        return ps;
+      // What optimisation cannot fix (slivers spanned by boundary vertices): split by a point inside, then
+      // optimise again. At most splitRounds rounds.
+      for (int round = 0; round < options.splitRounds && stats.after.minDihedral < options.optimization.targetDegrees;
+           ++round)
+      {
+        if (progress && progress->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+        const int64_t n = splitBadTets(mesh, &fc, &tetRegion, options.optimization.targetDegrees,
+          std::max<int64_t>(200, mesh.numTets() / 20));
+        stats.splitPoints += n;
+        if (n == 0)
+          break;
+        const double minBefore = stats.after.minDihedral;
+        Status ps = optimise(std::min(3, options.optimization.maxPasses));
+        if (!ps.ok())
+          return ps;
+        if (stats.after.minDihedral < minBefore + 0.1)
+          break;
+      }
+      return floorRounds();
+    };
+    // Vertex collapses (optimization.vertexRemoval) are a second attempt, from the same start, when the
+    // worst tet stays under vertexRemovalDegrees (typically recovery's Steiner points pinned against
+    // nearly coplanar boundary faces, which no flip, move or added point opens); the better of the two
+    // meshes is kept (collapses coarsen the mesh and change what later rounds reach: kept only when the
+    // worst tet gets better).
+    const bool removal = options.optimization.vertexRemoval;
+    TetMesh startMesh;
+    std::vector<int32_t> startRegion;
+    ImprovementStatistics startStats;
+    if (removal)
     {
-      if (progress && progress->cancelled())
-        return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-      const double worst = worstSineDegrees(mesh);
-      if (!(worst > 0) || worst >= 60)
-        break;
-      one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
-      // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
-      if (countBelow(mesh, one.targetDegrees) > std::max<int64_t>(64, mesh.numTets() / 200))
-        break;
-      s = optimise(2);
+      startMesh = mesh;
+      startRegion = tetRegion;
+      startStats = stats;
+    }
+    s = optimiseSplitFloor();
+    if (!s.ok())
+      return s;
+    const double worstKept = worstSineDegrees(mesh);
+    const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
+    if (removal && worstKept < removalDegrees && hasUnlockedVertexBelow(mesh, fc, clusterLock, removalDegrees))
+    {
+      TetMesh keptMesh = std::move(mesh);
+      std::vector<int32_t> keptRegion = std::move(tetRegion);
+      const ImprovementStatistics keptStats = stats;
+      mesh = std::move(startMesh);
+      tetRegion = std::move(startRegion);
+      stats = startStats;
+      one.vertexRemoval = true;
+      s = optimiseSplitFloor();
       if (!s.ok())
         return s;
-      stats.splitPoints += splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 64);
-      s = optimise(1);
-      if (!s.ok())
-        return s;
-      if (worstSineDegrees(mesh) < worst + 0.05)
-        break;
+      one.vertexRemoval = false;
+      if (!(worstSineDegrees(mesh) > worstKept))
+      {
+        mesh = std::move(keptMesh);
+        tetRegion = std::move(keptRegion);
+        stats = keptStats;
+      }
     }
     // Small meshes (a few boundary triangles, few or no field points) often end as a tie with any
     // Delaunay-based mesher: no single flip, move or improving insertion helps. Speculative rounds insert
@@ -496,6 +583,21 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     });
   }
 
+  // Points removed by vertex collapses: recovery's (below nv0), field points (below nvField), split points.
+  {
+    const std::vector<uint8_t> usedAfter = usedVertices(mesh);
+    for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    {
+      const bool before = v < nvField ? usedBefore[v] != 0 : true; // split points: inserted in use
+      if (!before || usedAfter[v])
+        continue;
+      ++stats.removedPoints;
+      if (v >= nvField)
+        --stats.splitPoints;
+      else if (v >= nv0)
+        --stats.fieldPoints;
+    }
+  }
   if (mesh.numVertices() > nv0)
     kinds.resize(static_cast<size_t>(mesh.numVertices()), VertexKind::SteinerInterior);
   if (tetRegion.size() < static_cast<size_t>(mesh.tetCapacity()))
@@ -636,7 +738,9 @@ Status refineTetMesh(TetMesh& mesh, const std::vector<double>& targetSize, std::
   if (options.optimize)
   {
     OptimizationReport orep;
-    s = optimizeMesh(mesh, fc.empty() ? nullptr : &fc, nullptr, regions, options.optimization, progress, &orep);
+    OptimizationOptions optimization = options.optimization;
+    optimization.vertexRemoval = false; // every vertex of the given mesh stays in it (its point data too)
+    s = optimizeMesh(mesh, fc.empty() ? nullptr : &fc, nullptr, regions, optimization, progress, &orep);
     if (!s.ok())
       return s;
     report.after = orep.after;

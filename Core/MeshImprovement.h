@@ -16,8 +16,11 @@
 //      tets it cannot fix (slivers and caps spanned by boundary vertices) are split by a point placed by
 //      search and inserted with a quality-driven cavity (TetEditor::qualityInsertion, only when it
 //      strictly improves), then optimisation runs again. Then floor rounds aim 2 degrees above the
-//      worst tet while that pays, and on small meshes speculative rounds try a few points and keep them
-//      only when the worst tet improves.
+//      worst tet while that pays. When the worst tet is still under 5 degrees with an interior vertex
+//      (typically recovery's Steiner points pinned against nearly coplanar boundary faces), the whole
+//      stage runs again from the same start with vertex collapses (MeshOptimization.h, vertexRemoval),
+//      and the mesh whose worst tet is better is kept. On small meshes speculative rounds then try a
+//      few points and keep them only when the worst tet improves.
 // The boundary is therefore the input boundary, exactly: same points, same triangles. New vertices are
 // marked VertexKind::SteinerInterior in `kinds` (field and cluster points are strictly interior), region
 // labels follow the tets, and the editor's vertex map is rebuilt for the output stage.
@@ -83,7 +86,7 @@ struct ImprovementOptions
 
 struct ImprovementStatistics
 {
-  int64_t fieldPoints = 0;      // field points inserted
+  int64_t fieldPoints = 0;      // field points inserted (and still in the mesh, see removedPoints)
   int fieldPasses = 0;
   int64_t clusterPoints = 0;    // clustering points inserted
   int64_t clusterSkipped = 0;   // outside, on the boundary, duplicates or too close
@@ -93,7 +96,10 @@ struct ImprovementStatistics
   int optimizationPasses = 0;
   int64_t flips = 0;            // 2-3 flips and edge removals
   int64_t smoothMoves = 0;
-  int64_t splitPoints = 0;      // points inserted to split tets optimisation could not fix
+  int64_t splitPoints = 0;      // points inserted to split tets optimisation could not fix (still in the mesh)
+  // Interior points removed by optimisation's vertex collapses: boundary recovery's Steiner points and
+  // field or split points (fieldPoints and splitPoints count only those left).
+  int64_t removedPoints = 0;
   // Tets under 10 degrees whose four vertices are boundary (or interface) vertices: bounded by the
   // surface triangles, not by the optimisation.
   int64_t boundaryForcedBelow10 = 0;

@@ -227,6 +227,81 @@ bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* cre
   return editor.replace(old, nt, created);
 }
 
+bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created)
+{
+  Scratch& s = scratch();
+  TetMesh& m = editor.mesh;
+  editor.star(v, s.tets);
+  if (s.tets.size() < 4)
+    return false;
+  double qOld = 2;
+  for (int32_t t : s.tets)
+  {
+    qOld = std::min(qOld, tetQ(m, t));
+    const int iv = m.localIndex(t, v);
+    for (int i = 0; i < 4; ++i) // the faces through v disappear: none may be constrained
+      if (i != iv && editor.isConstrainedFace(t, i))
+        return false;
+  }
+  editor.neighbors(v, s.tets, s.ring);
+  // The star of v, coned from w over its outer faces not through w: those new tets tile the star exactly
+  // when all are strictly positive (their signed volumes add up to the star's, each point covered once).
+  double best = qOld;
+  int32_t bestW = -1;
+  for (int32_t w : s.ring)
+  {
+    double q = 2;
+    for (int32_t t : s.tets)
+    {
+      const int32_t* x = m.vertices(t);
+      if (x[0] == w || x[1] == w || x[2] == w || x[3] == w)
+        continue;
+      std::array<int32_t, 4> n = { x[0], x[1], x[2], x[3] };
+      *std::find(n.begin(), n.end(), v) = w;
+      q = std::min(q, tetQ(m, n[0], n[1], n[2], n[3]));
+      if (!(q > best))
+        break;
+    }
+    if (!(q > best))
+      continue;
+    bool valid = true;
+    for (int32_t t : s.tets)
+    {
+      const int32_t* x = m.vertices(t);
+      if (x[0] == w || x[1] == w || x[2] == w || x[3] == w)
+        continue;
+      std::array<int32_t, 4> n = { x[0], x[1], x[2], x[3] };
+      *std::find(n.begin(), n.end(), v) = w;
+      if (!positive(m, n))
+      {
+        valid = false;
+        break;
+      }
+    }
+    if (valid)
+    {
+      best = q;
+      bestW = w;
+    }
+  }
+  if (bestW < 0 || !(best > 0))
+    return false;
+  s.newTets.clear();
+  for (int32_t t : s.tets)
+  {
+    const int32_t* x = m.vertices(t);
+    if (x[0] == bestW || x[1] == bestW || x[2] == bestW || x[3] == bestW)
+      continue;
+    std::array<int32_t, 4> n = { x[0], x[1], x[2], x[3] };
+    *std::find(n.begin(), n.end(), v) = bestW;
+    s.newTets.push_back(n);
+  }
+  if (!editor.replace(s.tets, s.newTets, created))
+    return false;
+  editor.forgetVertex(v);
+  return true;
+}
+
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
   std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress, OptimizationReport* reportOut)
 {
@@ -326,6 +401,35 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
           ++report.smoothMoves;
           ++changes;
         }
+    }
+    // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
+    // target (worst first), e.g. recovery's Steiner points pinned against nearly coplanar boundary faces.
+    if (options.vertexRemoval)
+    {
+      const double qR =
+        std::sin(std::min(options.targetDegrees, options.vertexRemovalDegrees) * 3.14159265358979323846 / 180.0);
+      std::vector<std::pair<double, int32_t>> worst;
+      mesh.forEachTet([&](int32_t t) {
+        const double q = tetQ(mesh, t);
+        if (q < qR)
+          worst.emplace_back(q, t);
+      });
+      std::sort(worst.begin(), worst.end());
+      for (const auto& w : worst)
+      {
+        const int32_t t = w.second;
+        if (mesh.isFree(t) || tetQ(mesh, t) >= qR)
+          continue;
+        const int32_t* x = mesh.vertices(t);
+        const int32_t vv[4] = { x[0], x[1], x[2], x[3] };
+        for (int i = 0; i < 4; ++i)
+          if (!lock[vv[i]] && tryVertexCollapse(editor, vv[i], nullptr))
+          {
+            ++report.vertexRemovals;
+            ++changes;
+            break;
+          }
+      }
     }
     report.passes = pass + 1;
     collectBad();

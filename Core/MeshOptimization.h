@@ -11,13 +11,16 @@
 //        - 2-3 flips of its four faces (the smallest multi-face removal; general multi-face removal is
 //          not implemented yet);
 //      tets created by a successful operation are examined in the same pass when still below target;
-//   2. smoothing (MeshSmoothing.h) of the unlocked vertices of the tets still below target.
+//   2. smoothing (MeshSmoothing.h) of the unlocked vertices of the tets still below target;
+//   3. optionally (vertexRemoval), for the tets still far below target, the collapse of one of their
+//      unlocked vertices onto a neighbour.
 // Stops when nothing changed in a pass, every tet reaches the target, or after maxPasses.
 //
 // Constraints: faces without neighbour and faces in `constraints` are never removed (an edge is removed
 // only when its ring is closed and no face around it is constrained; a face is flipped only when not
-// constrained), constrained-face vertices never move, and no vertex is added or removed. Every new tet is
-// checked with the exact orient3d (strictly positive) before any change. So the boundary is unchanged and
+// constrained), constrained-face vertices never move, no vertex is added, and only unlocked vertices are
+// removed (vertexRemoval). Every new tet is checked with the exact orient3d (strictly positive) before
+// any change. So the boundary is unchanged and
 // the mesh stays valid. Works on a ghost-free TetMesh; region labels (optional, per tet slot) and kUser
 // flag bits are carried to the new tets (a flip never mixes regions: interface faces are constrained).
 #pragma once
@@ -42,6 +45,11 @@ struct OptimizationOptions
   bool flips = true;           // 2-3 flips
   bool edgeRemoval = true;     // includes 3-2 flips
   int maxRing = 9;             // largest edge ring considered by edge removal
+  // Removal of unlocked vertices of the tets below vertexRemovalDegrees after the flips and moves of a
+  // pass, by collapsing them onto a neighbour (see tryVertexCollapse); the removed vertex stays in
+  // mesh.points, used by no tet (callers that write every point keep it off).
+  bool vertexRemoval = false;
+  double vertexRemovalDegrees = 5.0;
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
 };
 
@@ -66,6 +74,7 @@ struct OptimizationReport
   int64_t edgeRemovals = 0; // of which 3-2 flips:
   int64_t flips32 = 0;
   int64_t smoothMoves = 0;
+  int64_t vertexRemovals = 0;
   int64_t belowTargetBefore = 0, belowTargetAfter = 0;
   double seconds = 0;
 };
@@ -80,5 +89,11 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
 // of the worst tet of the affected region; created receives the new tets.
 bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created);
 bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created);
+// Removes unlocked vertex v (no constrained face through it) by collapsing it onto the neighbour w whose
+// collapse gives the best worst tet: the star's tets holding w go, the others get w for v. Only when every
+// new tet is strictly positive (exact orient3d) and the worst tet of the star strictly improves. v is then
+// used by no tet (its coordinates stay in mesh.points). Typical use: Steiner points that boundary recovery
+// left next to the boundary, squeezed between nearly coplanar faces no move can open.
+bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created);
 
 } // namespace volgrid

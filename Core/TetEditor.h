@@ -11,7 +11,7 @@
 //     exterior removal.
 //   A vertex is LOCKED (never moved) when it lies on a constrained face, or when the caller locks it.
 //   Edits keep every constrained face (same three vertices; it may end up in a new tet on the same side)
-//   and never remove a vertex.
+//   and never remove a locked vertex (an unlocked one may be left in no tet by a replace(): forgetVertex).
 //
 // EDITS
 //   replace(): old tets out, new tets in (positively oriented, filling the same region); adjacency is
@@ -82,6 +82,12 @@ public:
   // Vertex -> one incident live tet. Rebuilt from scratch; edits keep it up to date.
   void rebuildVertexMap();
   int32_t tetOf(int32_t v) const { return v < static_cast<int32_t>(vertTet_.size()) ? vertTet_[v] : -1; }
+  // After an edit that leaves v in no tet (a vertex removal): tetOf(v) = -1 from then on.
+  void forgetVertex(int32_t v)
+  {
+    if (v >= 0 && v < static_cast<int32_t>(vertTet_.size()))
+      vertTet_[v] = -1;
+  }
 
   bool isConstrainedFace(int32_t t, int i) const
   {

@@ -256,3 +256,60 @@ TEST(MeshOptimization, SummaryAgreesWithTheQualityModule)
     EXPECT_NEAR(s.maxDihedral, *std::max_element(ang, ang + 6), 1e-9);
   }
 }
+
+TEST(MeshOptimization, VertexCollapseRemovesAnInteriorPointSqueezedAgainstAFace)
+{
+  // A regular tet and an interior point 1e-6 above the centroid of one of its faces: the four tets of
+  // the point's star include a flat one no flip can replace (every face but the hull is through the
+  // point). Collapsing the point onto a corner leaves the regular tet.
+  const double corners[4][3] = { { 1, 1, 1 }, { 1, -1, -1 }, { -1, 1, -1 }, { -1, -1, 1 } };
+  std::vector<double> pts;
+  for (const auto& c : corners)
+    pts.insert(pts.end(), c, c + 3);
+  // Face (1, 2, 3) has its centroid at -corner 0 / 3; inwards is towards corner 0.
+  for (int k = 0; k < 3; ++k)
+    pts.push_back(-corners[0][k] / 3 + 1e-6 * corners[0][k]);
+  TetMesh m;
+  std::vector<int32_t> map;
+  DelaunayOptions opt;
+  opt.keepGhosts = false;
+  ASSERT_TRUE(buildDelaunay(pts.data(), 5, opt, m, map).ok());
+  ASSERT_EQ(m.numTets(), 4);
+  int32_t p = -1;
+  for (int32_t v = 0; v < 5; ++v)
+    if (map[v] >= 0 && m.point(map[v])[0] == pts[12])
+      p = map[v];
+  ASSERT_GE(p, 0);
+  const auto hull = hullFaces(m);
+  EXPECT_LT(summarizeDihedrals(m).minDihedral, 0.01);
+
+  // A constrained face through the point forbids the collapse.
+  FaceConstraints fc;
+  m.forEachTet([&](int32_t t) {
+    if (fc.empty() && m.localIndex(t, p) >= 0)
+    {
+      const int32_t* v = m.vertices(t);
+      const int ip = m.localIndex(t, p);
+      const int32_t f[3] = { v[(ip + 1) % 4], v[(ip + 2) % 4], p };
+      fc.add(f[0], f[1], f[2]);
+    }
+  });
+  {
+    TetEditor constrained(m, &fc);
+    constrained.rebuildVertexMap();
+    EXPECT_FALSE(tryVertexCollapse(constrained, p, nullptr));
+    EXPECT_EQ(m.numTets(), 4);
+  }
+
+  TetEditor editor(m);
+  editor.rebuildVertexMap();
+  std::vector<int32_t> created;
+  ASSERT_TRUE(tryVertexCollapse(editor, p, &created));
+  EXPECT_EQ(created.size(), 1u);
+  EXPECT_EQ(m.numTets(), 1);
+  EXPECT_EQ(editor.tetOf(p), -1);
+  EXPECT_TRUE(checkMesh(m, noDelaunay()).valid) << checkMesh(m, noDelaunay()).summary();
+  EXPECT_EQ(hullFaces(m), hull);
+  EXPECT_NEAR(summarizeDihedrals(m).minDihedral, 70.5288, 1e-3); // the regular tet
+  EXPECT_FALSE(tryVertexCollapse(editor, p, nullptr)); // in no tet any more
+}
