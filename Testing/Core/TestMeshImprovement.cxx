@@ -446,7 +446,8 @@ TEST(MeshImprovement, SteinerPointsSqueezedAgainstTheBoundaryAreCollapsed)
     const DihedralSummary d = summarizeDihedrals(m);
     EXPECT_GE(d.minDihedral, floor) << file;
     EXPECT_EQ(d.inverted, 0) << file;
-    EXPECT_GT(r.stats.improvement.removedPoints, 0) << file;
+    // (Since boundary recovery has planar flips these two models no longer get such points, and the
+    // floors hold without a collapse; MeshOptimization.VertexCollapse* tests the collapse on its own.)
     EXPECT_GE(r.stats.steinerInterior, 0) << file;
     EXPECT_GE(r.stats.improvement.fieldPoints, 0) << file;
   }
