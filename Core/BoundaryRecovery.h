@@ -2,10 +2,14 @@
 //
 // Starting point: the Delaunay tetrahedralization of the surface points (plus a far box, see Mesher.h),
 // without ghost tets. Stages, all decided by the exact predicates (no epsilon):
-//   1. Missing edges (segments) are recovered by flips: 2-3 flips of the faces the segment crosses and
-//      edge removal (3-2, 4-4 and general n-to-(2n-4), best triangulation of the edge's ring found by
-//      dynamic programming) of the edges it crosses. A flip is kept only when it strictly reduces the
-//      number of faces/edges the segment crosses, so the search always terminates.
+//   1. Missing edges (segments) are recovered by flips: 2-3 flips of the faces the segment crosses, edge
+//      removal (3-2, 4-4 and general n-to-(2n-4), best triangulation of the edge's ring found by
+//      dynamic programming) of the edges it crosses and of the edges of the faces it crosses (the reflex
+//      edge that blocks a 2-3 flip). An edge crossing the segment in a common plane (a flat CAD face) is
+//      first removed as a 2D flip would: with the chord between its two in-plane ring vertices required,
+//      then by MeshEditor::flipInPlane (each side of the plane re-filled by a cone, a Delaunay fill or an
+//      interior Steiner point). A flip is kept only when it reduces the number of faces/edges the segment
+//      crosses (a bounded number of sideways steps aside), so the search always terminates.
 //   2. Missing facets: once every segment (input edge, or piece of one between Steiner points) is
 //      present, each input triangle with missing subfaces is re-triangulated as a whole by cavity
 //      retetrahedralization (FacetRecovery.h): its inner subface edges need not be recovered first.
@@ -21,6 +25,8 @@
 // Flips and insertions never destroy a recovered subface or subsegment (they are constraints), and
 // never create an edge between two points of a split input segment other than its pieces
 // (BoundaryConstraints::forbiddenEdge; the same holds for facet cavities and Steiner removal).
+// With RecoveryOptions::presplitSegments (the mesher's retry after a failed first attempt) the listed
+// segments are split by Delaunay insertion before any flip, until their pieces are edges.
 // Whatever cannot be recovered is reported as ErrorKind::RecoveryFailed, with the counts, the first
 // input triangles concerned and why recovery stopped: the Steiner budget, the missing-edge count growing
 // for three rounds (Steiner points that do not converge); the flip work budget (edge-removal attempts,

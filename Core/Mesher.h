@@ -11,6 +11,8 @@
 //   3. Recover the missing boundary edges and facets: flips, then Steiner points (BoundaryRecovery.h).
 //   4. Remove the exterior by flood fill and select the regions (Regions.h).
 //   5. Remove every Steiner point that lies on the boundary by relocating it inside (SteinerRemoval.h).
+//      When 3 or 5 fails, 3-5 are redone once from the Delaunay mesh of step 2, first splitting the input
+//      segments the first attempt had to split while the mesh is still Delaunay (presplitSegments).
 //   5b. Grid control and quality: field points, clustering, optimisation (MeshImprovement.h).
 //   6. Output the tets (positively oriented, labelled by region) and the boundary triangles with PatchId.
 // Anything that cannot be recovered is reported with ErrorKind::RecoveryFailed, never hidden.
