@@ -1412,6 +1412,32 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   };
   FacetCavityStats cavityStats;
   BoundaryCensus census;
+  // Missing required subface edges, in subface order (the order recovery tries them in); `only`: those
+  // on these input segments.
+  auto collectMissingEdges = [&](const std::unordered_set<uint64_t>* only) {
+    missingEdges.clear();
+    if (!census.upToDate(ed, bc))
+      census.take(ed, bc);
+    std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
+    for (int32_t f = 0; f < bc.capacity(); ++f)
+    {
+      if (!bc.alive(f))
+        continue;
+      const int32_t* s = bc.subface(f);
+      for (int i = 0; i < 3; ++i)
+      {
+        const int32_t a = s[i], b = s[(i + 1) % 3];
+        const int32_t id = census.edgeId(a, b); // -1: degenerate, never present
+        if (id >= 0 && seen[static_cast<size_t>(id)])
+          continue;
+        if (id >= 0)
+          seen[static_cast<size_t>(id)] = 1;
+        if ((id < 0 || !census.edgePresent(id)) && requiredEdge(a, b) &&
+          (!only || only->count(bc.segmentOf(a, b))))
+          missingEdges.push_back({ a, b });
+      }
+    }
+  };
   if (options.presplitSegments && !options.presplitSegments->empty() && options.allowSteiner)
   {
     // Presplit stage (see RecoveryOptions::presplitSegments); insertVertex without constraints is the
@@ -1423,27 +1449,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     bool converged = false;
     for (int round = 0; round < 64 && steinerUsed < presplitBudget; ++round)
     {
-      census.take(ed, bc);
-      missingEdges.clear();
-      std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
-      for (int32_t f = 0; f < bc.capacity(); ++f)
-      {
-        if (!bc.alive(f))
-          continue;
-        const int32_t* s = bc.subface(f);
-        for (int i = 0; i < 3; ++i)
-        {
-          const int32_t a = s[i], b = s[(i + 1) % 3];
-          const int32_t id = census.edgeId(a, b);
-          if (id >= 0 && seen[static_cast<size_t>(id)])
-            continue;
-          if (id >= 0)
-            seen[static_cast<size_t>(id)] = 1;
-          if ((id < 0 || !census.edgePresent(id)) && requiredEdge(a, b) &&
-            options.presplitSegments->count(bc.segmentOf(a, b)))
-            missingEdges.push_back({ a, b });
-        }
-      }
+      collectMissingEdges(options.presplitSegments);
       if (missingEdges.empty())
       {
         converged = true;
@@ -1474,30 +1480,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   {
     if (pr->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
-    // Missing subface edges (in subface order: the order recovery tries them in).
-    missingEdges.clear();
-    {
-      if (!census.upToDate(ed, bc))
-        census.take(ed, bc);
-      std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
-      for (int32_t f = 0; f < bc.capacity(); ++f)
-      {
-        if (!bc.alive(f))
-          continue;
-        const int32_t* s = bc.subface(f);
-        for (int i = 0; i < 3; ++i)
-        {
-          const int32_t a = s[i], b = s[(i + 1) % 3];
-          const int32_t id = census.edgeId(a, b); // -1: degenerate, never present
-          if (id >= 0 && seen[static_cast<size_t>(id)])
-            continue;
-          if (id >= 0)
-            seen[static_cast<size_t>(id)] = 1;
-          if ((id < 0 || !census.edgePresent(id)) && requiredEdge(a, b))
-            missingEdges.push_back({ a, b });
-        }
-      }
-    }
+    collectMissingEdges(nullptr);
     if (first)
     {
       rep.missingEdgesInitially = static_cast<int64_t>(missingEdges.size());
