@@ -300,13 +300,8 @@ public:
           continue;
         if (ed_.findEdge(a, b) >= 0)
           return true;
-        // Like Sloan's 2D algorithm, a flip that keeps the count may still be needed (coplanar
-        // crossings); a few such sideways steps are allowed.
-        if (traceSegment(a, b, f2, e2) &&
-          (f2.size() + e2.size() < m0 || (f2.size() + e2.size() == m0 && sideways < 64)))
+        if (fewerCrossings(a, b, m0, sideways))
         {
-          if (f2.size() + e2.size() == m0)
-            ++sideways;
           progress = true;
           break;
         }
@@ -325,7 +320,7 @@ public:
   // face; keeps a removal that lowers the crossing count (or keeps it, a bounded number of times).
   bool removeCrossingFaceEdge(int32_t a, int32_t b, size_t m0, int& sideways)
   {
-    std::vector<Crossing> faces, edges, f2, e2;
+    std::vector<Crossing> faces, edges;
     std::vector<int32_t> created;
     if (!traceSegment(a, b, faces, edges))
       return false;
@@ -344,18 +339,29 @@ public:
         const int32_t t = ed_.findEdge(x, y);
         if (t < 0 || !ed_.removeEdgeDeep(t, x, y, &bc_, &created, 1))
           continue;
-        if (ed_.findEdge(a, b) >= 0)
+        if (ed_.findEdge(a, b) >= 0 || fewerCrossings(a, b, m0, sideways))
           return true;
-        if (traceSegment(a, b, f2, e2) && (f2.size() + e2.size() < m0 || (f2.size() + e2.size() == m0 && sideways < 64)))
-        {
-          if (f2.size() + e2.size() == m0)
-            ++sideways;
-          return true;
-        }
         undo(created);
       }
     }
     return false;
+  }
+
+  // After a flip: does segment ab cross fewer than m0 faces and edges? Like Sloan's 2D algorithm, a flip
+  // that keeps the count may still be needed (coplanar crossings): up to 64 such sideways steps per
+  // segment are accepted too.
+  bool fewerCrossings(int32_t a, int32_t b, size_t m0, int& sideways)
+  {
+    std::vector<Crossing> faces, edges;
+    if (!traceSegment(a, b, faces, edges))
+      return false;
+    const size_t m = faces.size() + edges.size();
+    if (m < m0)
+      return true;
+    if (m > m0 || sideways >= 64)
+      return false;
+    ++sideways;
+    return true;
   }
 
   bool recoverFacetByFlips(int32_t a, int32_t b, int32_t c)

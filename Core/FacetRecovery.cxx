@@ -845,8 +845,13 @@ bool fillCavityDelaunay(const TetMesh& m, const std::vector<std::array<int32_t, 
   return true;
 }
 
-bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats)
+namespace
+{
+
+// The whole-triangle cavity (slab: R's border vertices counted as on R); on success the subfaces of
+// `parent` are replaced by the triangulation of R the cavity produced.
+bool recoverWholeFacet(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
+  FacetCavityStats* stats, bool slab)
 {
   if (stats)
     ++stats->attempts;
@@ -854,7 +859,7 @@ bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t paren
     return false;
   std::vector<std::array<int32_t, 3>> tri;
   {
-    FacetCavity fc(ed, bc, parent, subfaces, bc.verts.data() + 3 * static_cast<size_t>(parent), false);
+    FacetCavity fc(ed, bc, parent, subfaces, bc.verts.data() + 3 * static_cast<size_t>(parent), false, slab);
     if (!fc.run(tri, stats))
       return false;
   }
@@ -868,27 +873,18 @@ bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t paren
   return true;
 }
 
+} // namespace
+
+bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
+  FacetCavityStats* stats)
+{
+  return recoverWholeFacet(ed, bc, parent, subfaces, stats, false);
+}
+
 bool recoverFacetBySlab(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
   FacetCavityStats* stats)
 {
-  if (stats)
-    ++stats->attempts;
-  if (subfaces.empty())
-    return false;
-  std::vector<std::array<int32_t, 3>> tri;
-  {
-    FacetCavity fc(ed, bc, parent, subfaces, bc.verts.data() + 3 * static_cast<size_t>(parent), false, true);
-    if (!fc.run(tri, stats))
-      return false;
-  }
-  for (int32_t f : subfaces)
-    bc.removeSubface(f);
-  subfaces.clear();
-  for (auto& t : tri)
-    subfaces.push_back(bc.addSubface(t[0], t[1], t[2], parent));
-  if (stats)
-    ++stats->successes;
-  return true;
+  return recoverWholeFacet(ed, bc, parent, subfaces, stats, true);
 }
 
 bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t subface, FacetCavityStats* stats)
