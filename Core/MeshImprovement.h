@@ -82,6 +82,9 @@ struct ImprovementOptions
   // Meshes of at most 5,000 tets: rounds that insert a point for the worst tet, optimise, and keep the
   // result only if the worst tet got better (0 = none).
   int speculativeRounds = 12;
+  // Rounds of vertex insertion as an improvement operation for the worst tets, any mesh size
+  // (InsertionImprovement.h; 0 = none).
+  int insertionRounds = 8;
 };
 
 struct ImprovementStatistics
