@@ -329,42 +329,57 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   double floor = 180;
   mesh.forEachTet([&](int32_t t) { floor = std::min(floor, minDihedral(mesh, t)); });
   std::vector<std::pair<double, int32_t>> worst;
+  std::vector<std::array<int32_t, 4>> quads;
+  double previousWorst = -3;
+  int stale = 0; // rounds in a row after which the mesh's worst tet was no better
   for (int round = 0; round < options.rounds; ++round)
   {
-    // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound.
-    worst.clear();
+    // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound (a tet tried in
+    // vain is tried again: the points kept since may have made room). Rounds go on while points are kept and the mesh's worst tet improves at least every second
+    // round (two equal worst tets need a round each when the first point pushes into the second's).
     double q0 = 2;
     mesh.forEachTet([&](int32_t t) { q0 = std::min(q0, tetQuality(mesh, t)); });
-    if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60)
+    stale = q0 > previousWorst ? 0 : stale + 1;
+    if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60 || stale >= 2)
       break;
+    previousWorst = q0;
+    const int64_t keptBefore = kept;
     const double qLimit = degreesToQuality(sineQualityToDegrees(q0) + options.aboveWorst);
+    worst.clear();
     mesh.forEachTet([&](int32_t t) {
       const double q = tetQuality(mesh, t);
       if (q < qLimit)
         worst.emplace_back(q, t);
     });
     std::sort(worst.begin(), worst.end());
-    if (worst.size() > static_cast<size_t>(options.tetsPerRound))
-      worst.resize(static_cast<size_t>(options.tetsPerRound));
-    std::vector<std::array<int32_t, 4>> quads;
+    quads.clear();
+    size_t n = 0;
     for (const auto& w : worst)
     {
       const int32_t* v = mesh.vertices(w.second);
-      quads.push_back({ v[0], v[1], v[2], v[3] });
+      std::array<int32_t, 4> key = { v[0], v[1], v[2], v[3] };
+      std::sort(key.begin(), key.end());
+      if (n == static_cast<size_t>(options.tetsPerRound))
+        break;
+      worst[n++] = w;
+      quads.push_back(key);
     }
-    int64_t keptThisRound = 0;
+    worst.resize(n);
     for (size_t k = 0; k < worst.size(); ++k)
     {
       const int32_t t = worst[k].second;
-      if (mesh.isFree(t) || !std::equal(quads[k].begin(), quads[k].end(), mesh.vertices(t)))
+      if (mesh.isFree(t))
+        continue;
+      std::array<int32_t, 4> key = { mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2), mesh.vertex(t, 3) };
+      std::sort(key.begin(), key.end());
+      if (key != quads[k])
         continue; // replaced by an earlier attempt
       Attempt attempt(editor, lock, floor);
       ++rep.attempts;
       if (attempt.run(t))
-        ++keptThisRound;
+        ++kept;
     }
-    kept += keptThisRound;
-    if (keptThisRound == 0)
+    if (kept == keptBefore)
       break;
   }
   rep.kept = kept;

@@ -33,7 +33,7 @@ namespace volgrid
 
 struct InsertionImprovementOptions
 {
-  int rounds = 3;          // rounds: the worst tets are collected again after each round that kept a point
+  int rounds = 8;          // rounds, while the mesh's worst tet improves (the worst tets collected anew)
   int tetsPerRound = 8;    // worst tets attempted per round
   double aboveWorst = 2.0; // only tets within this many degrees of the mesh's worst tet are attempted
 };
