@@ -2,11 +2,13 @@
 
 #include "MeshOptimization.h"
 #include "MeshSmoothing.h"
+#include "Predicates.h"
 #include "Quality.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace volgrid
 {
@@ -103,13 +105,11 @@ public:
     };
     std::vector<Start> starts;
     Frame frames[4];
-    bool valid[4] = { false, false, false, false };
     for (int i = 0; i < 4; ++i)
     {
       int32_t f[3];
       m_.faceVertices(t, i, f);
-      valid[i] = faceFrame(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(tv[i]), frames[i]);
-      if (!valid[i])
+      if (!faceFrame(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(tv[i]), frames[i]))
         continue;
       const bool bothSides = !ed_.isConstrainedFace(t, i);
       for (const double x : { -0.5, 0.0, 0.5 })
@@ -125,15 +125,17 @@ public:
           }
     }
     std::sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.q > b.q; });
-    if (starts.size() > 3)
-      starts.resize(3);
-    // Pattern search in the face's frame from the best starts; best_ and bestAt_ keep the best position.
+    if (starts.size() > 2)
+      starts.resize(2);
+    // Pattern search in the face's frame from the best two starts (200 positions each at most); best_ and
+    // bestAt_ keep the best position.
     for (const Start& st : starts)
     {
       const Frame& f = frames[st.face];
       std::array<double, 3> x = st.x;
       double q = st.q;
-      for (double step = 0.25; step > 1e-6;)
+      int evals = 0;
+      for (double step = 0.25; step > 1e-6 && evals < 200;)
       {
         bool moved = false;
         for (int k = 0; k < 3 && !moved; ++k)
@@ -142,6 +144,7 @@ public:
             std::array<double, 3> y = x;
             y[k] += sgn * step;
             const double qy = score(at(f, y));
+            ++evals;
             if (qy > q)
             {
               q = qy;
@@ -160,7 +163,7 @@ public:
       return false;
     }
     // Insert at the best position, then improve the new tets; restore unless the region improved.
-    const TetMesh saved = m_;
+    TetMesh saved = m_;
     std::vector<int32_t> savedLabels;
     if (ed_.labels)
       savedLabels = *ed_.labels;
@@ -175,7 +178,7 @@ public:
     improveAround(qt);
     if (worstCreated() > qt && minDihedralCreated() >= floor_)
       return true;
-    m_ = saved;
+    m_ = std::move(saved);
     m_.points.resize(m_.points.size() - 3); // the new point, used by no tet
     if (ed_.labels)
       *ed_.labels = std::move(savedLabels);
@@ -233,6 +236,97 @@ private:
     for (int32_t c : alive)
       a = std::min(a, minDihedral(m_, c));
     return a;
+  }
+
+  // Moves w to raise the worst tet of its star, by a pattern search whose directions are the axes and the
+  // face normals of the star's worst tet (the room is often a wedge of a degree, which axis steps alone
+  // cannot follow), down to steps of 1e-7 of the distance to its nearest neighbour (300 positions at most). A position counts only
+  // when every tet of the star stays strictly positive (exact orient3d). True when w moved.
+  bool patternSearchVertex(int32_t w)
+  {
+    ed_.star(w, star_);
+    double* x = m_.points.data() + 3 * static_cast<size_t>(w);
+    auto starMin = [&](int32_t* worstTet) {
+      double q = 2;
+      for (int32_t u : star_)
+      {
+        const int32_t* v = m_.vertices(u);
+        if (predicates::orient3d(m_.point(v[0]), m_.point(v[1]), m_.point(v[2]), m_.point(v[3])) <= 0)
+          return -3.0;
+        const double qu = tetQuality(m_, u);
+        if (qu < q)
+        {
+          q = qu;
+          if (worstTet)
+            *worstTet = u;
+        }
+      }
+      return q;
+    };
+    int32_t worstTet = -1;
+    double q = starMin(&worstTet);
+    if (!(q > -3) || worstTet < 0)
+      return false;
+    double reach = 1e300;
+    for (int32_t u : star_)
+      for (int i = 0; i < 4; ++i)
+      {
+        const double* p = m_.point(m_.vertex(u, i));
+        if (m_.vertex(u, i) != w)
+          reach = std::min(reach, std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) +
+                                    (p[2] - x[2]) * (p[2] - x[2])));
+      }
+    bool movedAny = false;
+    std::array<double, 3> dirs[14];
+    auto setDirections = [&]() {
+      for (int k = 0; k < 3; ++k)
+      {
+        dirs[2 * k] = { 0, 0, 0 };
+        dirs[2 * k][k] = 1;
+        dirs[2 * k + 1] = { 0, 0, 0 };
+        dirs[2 * k + 1][k] = -1;
+      }
+      for (int i = 0; i < 4; ++i)
+      {
+        int32_t f[3];
+        m_.faceVertices(worstTet, i, f);
+        Frame fr;
+        if (!faceFrame(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(m_.vertex(worstTet, i)), fr))
+          fr.n[0] = fr.n[1] = fr.n[2] = 0;
+        dirs[6 + 2 * i] = { fr.n[0], fr.n[1], fr.n[2] };
+        dirs[7 + 2 * i] = { -fr.n[0], -fr.n[1], -fr.n[2] };
+      }
+    };
+    setDirections();
+    int evals = 0;
+    for (double step = 0.25 * reach; step > 1e-7 * reach && evals < 300;)
+    {
+      bool moved = false;
+      const std::array<double, 3> from = { x[0], x[1], x[2] };
+      for (const auto& d : dirs)
+      {
+        for (int k = 0; k < 3; ++k)
+          x[k] = from[k] + step * d[k];
+        ++evals;
+        int32_t wt = worstTet;
+        const double qy = starMin(&wt);
+        if (qy > q)
+        {
+          q = qy;
+          worstTet = wt;
+          moved = movedAny = true;
+          break;
+        }
+      }
+      if (!moved)
+      {
+        std::copy(from.begin(), from.end(), x);
+        step *= 0.5;
+      }
+      else
+        setDirections();
+    }
+    return movedAny;
   }
 
   // Flips of the new tets within a few degrees of q_t (each a strict local improvement) and smoothing of
@@ -299,6 +393,9 @@ private:
       if (!changed)
         break;
     }
+    // Last, the fine position of w within what the flips left it.
+    if (ed_.tetOf(nv_) >= 0)
+      patternSearchVertex(nv_);
   }
 
   bool isLocked(int32_t u) const { return static_cast<size_t>(u) < locked_.size() && locked_[u] != 0; }
@@ -310,7 +407,7 @@ private:
   int32_t nv_ = -1, t_ = -1;
   double best_ = -3;
   std::array<double, 3> bestAt_{};
-  std::vector<int32_t> created_;
+  std::vector<int32_t> created_, star_;
 };
 } // namespace
 
@@ -351,6 +448,10 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
       if (q < qLimit)
         worst.emplace_back(q, t);
     });
+    // A plateau of many tets near a worst tet already at the optimisation's target gains little per point.
+    if (sineQualityToDegrees(q0) >= options.plateauDegrees &&
+      static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
+      break;
     std::sort(worst.begin(), worst.end());
     quads.clear();
     size_t n = 0;

@@ -9,12 +9,13 @@
 //   1. Position: a new interior point w is placed where the quality-driven insertion
 //      (TetEditor::qualityInsertion, cavity holding t) makes the best worst new tet; searched in the local
 //      frame of each face of t (the frame scales with the face: sqrt(area) in-plane and off-plane), from a
-//      grid of starts, then a pattern search whose steps shrink to 1e-6 of the frame, so that a point can
-//      find room inside a wedge of a degree against a needle triangle.
+//      grid of starts, then a pattern search from the best two whose steps shrink to 1e-6 of the frame, so
+//      that a point can find room inside a wedge of a degree against a needle triangle.
 //   2. Insertion even when w alone does not beat q_t, then local improvement of its neighbourhood: edge
 //      removals and 2-3 flips of the new tets (each a strict local improvement, MeshOptimization.h) and
 //      optimisation-based smoothing (MeshSmoothing.h) of w and of the unlocked vertices of the new tets
-//      still near q_t (a moved vertex's star counts as new tets), a few rounds.
+//      still near q_t (a moved vertex's star counts as new tets), a few rounds; last, a pattern search on
+//      w's position along the axes and the face normals of its star's worst tet.
 //   3. Kept only when t is gone and every tet created by the attempt (and still alive) is strictly better
 //      than q_t (the worst tet of the changed region strictly improves) with no dihedral angle under the
 //      mesh's smallest one (so the minimum dihedral angle never drops). Otherwise the mesh is restored.
@@ -33,9 +34,13 @@ namespace volgrid
 
 struct InsertionImprovementOptions
 {
-  int rounds = 8;          // rounds, while the mesh's worst tet improves (the worst tets collected anew)
-  int tetsPerRound = 8;    // worst tets attempted per round
+  int rounds = 12;         // rounds, while the mesh's worst tet improves (the worst tets collected anew)
+  int tetsPerRound = 4;    // worst tets attempted per round
   double aboveWorst = 2.0; // only tets within this many degrees of the mesh's worst tet are attempted
+  // No round when the worst tet is at plateauDegrees or better (e.g. the optimisation's target) and more
+  // than max(plateauTets, tets / 200) tets are within aboveWorst of it.
+  double plateauDegrees = 18.0;
+  int64_t plateauTets = 64;
 };
 
 struct InsertionImprovementReport

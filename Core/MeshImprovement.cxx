@@ -571,6 +571,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     {
       InsertionImprovementOptions io;
       io.rounds = options.insertionRounds;
+      io.plateauDegrees = options.optimization.targetDegrees;
       stats.splitPoints += improveWorstByInsertion(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, io);
       stats.after = summarizeDihedrals(mesh);
     }

@@ -86,7 +86,7 @@ struct ImprovementOptions
   int speculativeRounds = 12;
   // Rounds of vertex insertion as an improvement operation for the worst tets, any mesh size
   // (InsertionImprovement.h; 0 = none).
-  int insertionRounds = 8;
+  int insertionRounds = 12;
 };
 
 struct ImprovementStatistics
