@@ -423,8 +423,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     for (size_t v = 0; v < std::min(lock.size(), locked->size()); ++v)
       lock[v] |= (*locked)[v];
   int64_t kept = 0;
-  double floor = 180;
-  mesh.forEachTet([&](int32_t t) { floor = std::min(floor, minDihedral(mesh, t)); });
+  double floor = -1; // the mesh's smallest dihedral angle, once a round runs
   std::vector<std::pair<double, int32_t>> worst;
   std::vector<std::array<int32_t, 4>> quads;
   double previousWorst = -3;
@@ -452,6 +451,11 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     if (sineQualityToDegrees(q0) >= options.plateauDegrees &&
       static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
       break;
+    if (floor < 0)
+    {
+      floor = 180;
+      mesh.forEachTet([&](int32_t t) { floor = std::min(floor, minDihedral(mesh, t)); });
+    }
     std::sort(worst.begin(), worst.end());
     quads.clear();
     size_t n = 0;

@@ -572,8 +572,11 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       InsertionImprovementOptions io;
       io.rounds = options.insertionRounds;
       io.plateauDegrees = options.optimization.targetDegrees;
-      stats.splitPoints += improveWorstByInsertion(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, io);
-      stats.after = summarizeDihedrals(mesh);
+      const int64_t kept =
+        improveWorstByInsertion(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, io);
+      stats.splitPoints += kept;
+      if (kept > 0)
+        stats.after = summarizeDihedrals(mesh);
     }
     stats.secondsOptimization = since(t0);
   }
