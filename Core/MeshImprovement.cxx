@@ -1,6 +1,7 @@
 #include "MeshImprovement.h"
 
 #include "BadTetSplitting.h"
+#include "InsertionImprovement.h"
 
 #include "Predicates.h"
 
@@ -562,6 +563,20 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       stats.after = savedAfter;
       if (countBelow(mesh, one.targetDegrees) <= ++skip)
         break;
+    }
+    // What is still worst (typically tets of four boundary vertices on a needle triangle in a thin wedge,
+    // on any mesh size): a point inserted for it, flipped and smoothed around, kept only when its region's
+    // worst tet improves.
+    if (options.insertionRounds > 0)
+    {
+      InsertionImprovementOptions io;
+      io.rounds = options.insertionRounds;
+      io.plateauDegrees = options.optimization.targetDegrees;
+      const int64_t kept =
+        improveWorstByInsertion(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, io);
+      stats.splitPoints += kept;
+      if (kept > 0)
+        stats.after = summarizeDihedrals(mesh);
     }
     stats.secondsOptimization = since(t0);
   }

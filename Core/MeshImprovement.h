@@ -20,7 +20,9 @@
 //      (typically recovery's Steiner points pinned against nearly coplanar boundary faces), the whole
 //      stage runs again from the same start with vertex collapses (MeshOptimization.h, vertexRemoval),
 //      and the mesh whose worst tet is better is kept. On small meshes speculative rounds then try a
-//      few points and keep them only when the worst tet improves.
+//      few points and keep them only when the worst tet improves. Last, on any mesh size, vertex insertion
+//      as an improvement operation for the worst tets (InsertionImprovement.h): a point searched in the
+//      frame of each face of the tet, flipped and smoothed around, kept only when its region improves.
 // The boundary is therefore the input boundary, exactly: same points, same triangles. New vertices are
 // marked VertexKind::SteinerInterior in `kinds` (field and cluster points are strictly interior), region
 // labels follow the tets, and the editor's vertex map is rebuilt for the output stage.
@@ -82,6 +84,9 @@ struct ImprovementOptions
   // Meshes of at most 5,000 tets: rounds that insert a point for the worst tet, optimise, and keep the
   // result only if the worst tet got better (0 = none).
   int speculativeRounds = 12;
+  // Rounds of vertex insertion as an improvement operation for the worst tets, any mesh size
+  // (InsertionImprovement.h; 0 = none).
+  int insertionRounds = 12;
 };
 
 struct ImprovementStatistics

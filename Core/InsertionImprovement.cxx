@@ -1,0 +1,494 @@
+#include "InsertionImprovement.h"
+
+#include "MeshOptimization.h"
+#include "MeshSmoothing.h"
+#include "Predicates.h"
+#include "Quality.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace volgrid
+{
+
+namespace
+{
+double tetQuality(const TetMesh& m, int32_t t)
+{
+  const int32_t* v = m.vertices(t);
+  return tetSineQuality(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+}
+
+double minDihedral(const TetMesh& m, int32_t t)
+{
+  const int32_t* v = m.vertices(t);
+  double a[6];
+  quality::tetDihedralAngles(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]), a);
+  return *std::min_element(a, a + 6);
+}
+
+double degreesToQuality(double degrees)
+{
+  return std::sin(std::min(90.0, degrees) * 3.14159265358979323846 / 180.0);
+}
+
+// The local frame of a face: centroid, two in-plane axes, the unit normal towards `side`, and the scale
+// sqrt(area) (a needle triangle gets steps fine enough for the thin wedge over it).
+struct Frame
+{
+  double g[3], e1[3], e2[3], n[3], s;
+};
+
+bool faceFrame(const double* a, const double* b, const double* c, const double* side, Frame& f)
+{
+  double u[3], w[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] = b[k] - a[k];
+    w[k] = c[k] - a[k];
+    f.g[k] = (a[k] + b[k] + c[k]) / 3;
+  }
+  double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+  const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const double lu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  if (!(nn > 0) || !(lu > 0))
+    return false;
+  const double towards = (side[0] - a[0]) * n[0] + (side[1] - a[1]) * n[1] + (side[2] - a[2]) * n[2];
+  const double sign = towards >= 0 ? 1.0 : -1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    f.n[k] = sign * n[k] / nn;
+    f.e1[k] = u[k] / lu;
+  }
+  f.e2[0] = f.n[1] * f.e1[2] - f.n[2] * f.e1[1];
+  f.e2[1] = f.n[2] * f.e1[0] - f.n[0] * f.e1[2];
+  f.e2[2] = f.n[0] * f.e1[1] - f.n[1] * f.e1[0];
+  f.s = std::sqrt(nn / 2);
+  return std::isfinite(f.s);
+}
+
+std::array<double, 3> at(const Frame& f, const std::array<double, 3>& x)
+{
+  std::array<double, 3> p;
+  for (int k = 0; k < 3; ++k)
+    p[k] = f.g[k] + f.s * (x[0] * f.e1[k] + x[1] * f.e2[k] + x[2] * f.n[k]);
+  return p;
+}
+
+class Attempt
+{
+public:
+  // minDihedralFloor: the mesh's smallest dihedral angle; no new tet may go under it (the sine quality
+  // also weighs the largest angle, so a better worst quality alone could still lower the minimum angle).
+  Attempt(TetEditor& editor, const std::vector<uint8_t>& locked, double minDihedralFloor)
+    : ed_(editor), m_(editor.mesh), locked_(locked), floor_(minDihedralFloor)
+  {
+  }
+
+  // Inserts a point for tet t and improves around it; true when kept (see the header).
+  bool run(int32_t t)
+  {
+    const double qt = tetQuality(m_, t);
+    const int32_t* v = m_.vertices(t);
+    const int32_t tv[4] = { v[0], v[1], v[2], v[3] };
+    nv_ = m_.addPoint(m_.point(tv[0])); // coordinates overwritten by each trial position
+    t_ = t;
+    best_ = -3;
+    // Starts: a grid in the frame of each face (only towards t across a constrained face).
+    struct Start
+    {
+      double q;
+      int face;
+      std::array<double, 3> x;
+    };
+    std::vector<Start> starts;
+    Frame frames[4];
+    for (int i = 0; i < 4; ++i)
+    {
+      int32_t f[3];
+      m_.faceVertices(t, i, f);
+      if (!faceFrame(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(tv[i]), frames[i]))
+        continue;
+      const bool bothSides = !ed_.isConstrainedFace(t, i);
+      for (const double x : { -0.5, 0.0, 0.5 })
+        for (const double y : { -0.5, 0.0, 0.5 })
+          for (const double z : { 0.03, 0.1, 0.3, 0.8, -0.03, -0.1, -0.3, -0.8 })
+          {
+            if (z < 0 && !bothSides)
+              continue;
+            const std::array<double, 3> x3 = { x, y, z };
+            const double q = score(at(frames[i], x3));
+            if (q > -3)
+              starts.push_back({ q, i, x3 });
+          }
+    }
+    std::sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.q > b.q; });
+    if (starts.size() > 2)
+      starts.resize(2);
+    // Pattern search in the face's frame from the best two starts (200 positions each at most); best_ and
+    // bestAt_ keep the best position.
+    for (const Start& st : starts)
+    {
+      const Frame& f = frames[st.face];
+      std::array<double, 3> x = st.x;
+      double q = st.q;
+      int evals = 0;
+      for (double step = 0.25; step > 1e-6 && evals < 200;)
+      {
+        bool moved = false;
+        for (int k = 0; k < 3 && !moved; ++k)
+          for (const double sgn : { 1.0, -1.0 })
+          {
+            std::array<double, 3> y = x;
+            y[k] += sgn * step;
+            const double qy = score(at(f, y));
+            ++evals;
+            if (qy > q)
+            {
+              q = qy;
+              x = y;
+              moved = true;
+              break;
+            }
+          }
+        if (!moved)
+          step *= 0.5;
+      }
+    }
+    if (!(best_ > 0))
+    {
+      m_.points.resize(m_.points.size() - 3);
+      return false;
+    }
+    // Insert at the best position, then improve the new tets; restore unless the region improved.
+    TetMesh saved = m_;
+    std::vector<int32_t> savedLabels;
+    if (ed_.labels)
+      savedLabels = *ed_.labels;
+    std::copy(bestAt_.begin(), bestAt_.end(), m_.points.data() + 3 * static_cast<size_t>(nv_));
+    const int32_t start = ed_.locate(m_.point(nv_), t);
+    created_.clear();
+    if (start < 0 || !(ed_.qualityInsertion(nv_, start, t, nullptr, true, &created_) > -3))
+    {
+      m_.points.resize(m_.points.size() - 3);
+      return false;
+    }
+    improveAround(qt);
+    if (worstCreated() > qt && minDihedralCreated() >= floor_)
+      return true;
+    m_ = std::move(saved);
+    m_.points.resize(m_.points.size() - 3); // the new point, used by no tet
+    if (ed_.labels)
+      *ed_.labels = std::move(savedLabels);
+    ed_.rebuildVertexMap();
+    return false;
+  }
+
+private:
+  // The worst new tet of the quality-driven insertion at y (cavity holding t), -3 when none.
+  double score(const std::array<double, 3>& y)
+  {
+    if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
+      return -3;
+    std::copy(y.begin(), y.end(), m_.points.data() + 3 * static_cast<size_t>(nv_));
+    const int32_t start = ed_.locate(y.data(), t_);
+    if (start < 0)
+      return -3;
+    const double q = ed_.qualityInsertion(nv_, start, t_, nullptr, false, nullptr, 24, -3);
+    if (!(q > 0))
+      return -3;
+    if (q > best_)
+    {
+      best_ = q;
+      bestAt_ = y;
+    }
+    return q;
+  }
+
+  // The live tets created by this attempt (a freed slot is only reused by a later creation, also listed).
+  void aliveCreated(std::vector<int32_t>& out) const
+  {
+    out.clear();
+    for (int32_t c : created_)
+      if (!m_.isFree(c))
+        out.push_back(c);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+
+  double worstCreated() const
+  {
+    std::vector<int32_t> alive;
+    aliveCreated(alive);
+    double q = 2;
+    for (int32_t c : alive)
+      q = std::min(q, tetQuality(m_, c));
+    return q;
+  }
+
+  double minDihedralCreated() const
+  {
+    std::vector<int32_t> alive;
+    aliveCreated(alive);
+    double a = 180;
+    for (int32_t c : alive)
+      a = std::min(a, minDihedral(m_, c));
+    return a;
+  }
+
+  // Moves w to raise the worst tet of its star, by a pattern search whose directions are the axes and the
+  // face normals of the star's worst tet (the room is often a wedge of a degree, which axis steps alone
+  // cannot follow), down to steps of 1e-7 of the distance to its nearest neighbour (300 positions at most). A position counts only
+  // when every tet of the star stays strictly positive (exact orient3d). True when w moved.
+  bool patternSearchVertex(int32_t w)
+  {
+    ed_.star(w, star_);
+    double* x = m_.points.data() + 3 * static_cast<size_t>(w);
+    auto starMin = [&](int32_t* worstTet) {
+      double q = 2;
+      for (int32_t u : star_)
+      {
+        const int32_t* v = m_.vertices(u);
+        if (predicates::orient3d(m_.point(v[0]), m_.point(v[1]), m_.point(v[2]), m_.point(v[3])) <= 0)
+          return -3.0;
+        const double qu = tetQuality(m_, u);
+        if (qu < q)
+        {
+          q = qu;
+          if (worstTet)
+            *worstTet = u;
+        }
+      }
+      return q;
+    };
+    int32_t worstTet = -1;
+    double q = starMin(&worstTet);
+    if (!(q > -3) || worstTet < 0)
+      return false;
+    double reach = 1e300;
+    for (int32_t u : star_)
+      for (int i = 0; i < 4; ++i)
+      {
+        const double* p = m_.point(m_.vertex(u, i));
+        if (m_.vertex(u, i) != w)
+          reach = std::min(reach, std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) +
+                                    (p[2] - x[2]) * (p[2] - x[2])));
+      }
+    bool movedAny = false;
+    std::array<double, 3> dirs[14];
+    auto setDirections = [&]() {
+      for (int k = 0; k < 3; ++k)
+      {
+        dirs[2 * k] = { 0, 0, 0 };
+        dirs[2 * k][k] = 1;
+        dirs[2 * k + 1] = { 0, 0, 0 };
+        dirs[2 * k + 1][k] = -1;
+      }
+      for (int i = 0; i < 4; ++i)
+      {
+        int32_t f[3];
+        m_.faceVertices(worstTet, i, f);
+        Frame fr;
+        if (!faceFrame(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(m_.vertex(worstTet, i)), fr))
+          fr.n[0] = fr.n[1] = fr.n[2] = 0;
+        dirs[6 + 2 * i] = { fr.n[0], fr.n[1], fr.n[2] };
+        dirs[7 + 2 * i] = { -fr.n[0], -fr.n[1], -fr.n[2] };
+      }
+    };
+    setDirections();
+    int evals = 0;
+    for (double step = 0.25 * reach; step > 1e-7 * reach && evals < 300;)
+    {
+      bool moved = false;
+      const std::array<double, 3> from = { x[0], x[1], x[2] };
+      for (const auto& d : dirs)
+      {
+        for (int k = 0; k < 3; ++k)
+          x[k] = from[k] + step * d[k];
+        ++evals;
+        int32_t wt = worstTet;
+        const double qy = starMin(&wt);
+        if (qy > q)
+        {
+          q = qy;
+          worstTet = wt;
+          moved = movedAny = true;
+          break;
+        }
+      }
+      if (!moved)
+      {
+        std::copy(from.begin(), from.end(), x);
+        step *= 0.5;
+      }
+      else
+        setDirections();
+    }
+    return movedAny;
+  }
+
+  // Flips of the new tets within a few degrees of q_t (each a strict local improvement) and smoothing of
+  // the new point, while something changes (a few rounds).
+  void improveAround(double qt)
+  {
+    const double aim = degreesToQuality(sineQualityToDegrees(qt) + 5);
+    SmoothingOptions smooth;
+    smooth.passes = 1;
+    smooth.optimize = true;
+    smooth.optimizeIterations = 30;
+    std::vector<int32_t> alive, made;
+    std::vector<std::pair<double, int32_t>> order;
+    for (int round = 0; round < 4; ++round)
+    {
+      bool changed = false;
+      aliveCreated(alive);
+      order.clear();
+      for (int32_t c : alive)
+      {
+        const double q = tetQuality(m_, c);
+        if (q < aim)
+          order.emplace_back(q, c);
+      }
+      std::sort(order.begin(), order.end());
+      for (const auto& oc : order)
+      {
+        const int32_t c = oc.second;
+        if (m_.isFree(c))
+          continue;
+        const int32_t* v = m_.vertices(c);
+        const int32_t cv[4] = { v[0], v[1], v[2], v[3] };
+        bool done = false;
+        for (int i = 0; i < 4 && !done; ++i)
+          for (int j = i + 1; j < 4 && !done; ++j)
+            done = tryEdgeRemoval(ed_, c, cv[i], cv[j], 9, &made);
+        for (int f = 0; f < 4 && !done; ++f)
+          done = tryFlip23(ed_, c, f, &made);
+        if (done)
+        {
+          created_.insert(created_.end(), made.begin(), made.end());
+          changed = true;
+        }
+      }
+      if (ed_.tetOf(nv_) >= 0 && smoothVertex(ed_, nv_, smooth) != SmoothMove::None)
+        changed = true;
+      // The other unlocked vertices of the new tets still near q_t: a moved vertex changes its whole
+      // star, which then counts as created (judged with the new tets, restored with them).
+      aliveCreated(alive);
+      for (int32_t c : alive)
+      {
+        if (m_.isFree(c) || !(tetQuality(m_, c) < aim))
+          continue;
+        const int32_t* v = m_.vertices(c);
+        const int32_t cv[4] = { v[0], v[1], v[2], v[3] };
+        for (int32_t u : cv)
+          if (u != nv_ && !isLocked(u) && smoothVertex(ed_, u, smooth) != SmoothMove::None)
+          {
+            ed_.star(u, made);
+            created_.insert(created_.end(), made.begin(), made.end());
+            changed = true;
+          }
+      }
+      if (!changed)
+        break;
+    }
+    // Last, the fine position of w within what the flips left it.
+    if (ed_.tetOf(nv_) >= 0)
+      patternSearchVertex(nv_);
+  }
+
+  bool isLocked(int32_t u) const { return static_cast<size_t>(u) < locked_.size() && locked_[u] != 0; }
+
+  TetEditor& ed_;
+  TetMesh& m_;
+  const std::vector<uint8_t>& locked_; // vertices that never move (points added later are free)
+  const double floor_;
+  int32_t nv_ = -1, t_ = -1;
+  double best_ = -3;
+  std::array<double, 3> bestAt_{};
+  std::vector<int32_t> created_, star_;
+};
+} // namespace
+
+int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
+  std::vector<int32_t>* labels, const InsertionImprovementOptions& options, InsertionImprovementReport* report)
+{
+  InsertionImprovementReport local;
+  InsertionImprovementReport& rep = report ? *report : local;
+  TetEditor editor(mesh, constraints, labels);
+  editor.rebuildVertexMap();
+  std::vector<uint8_t> lock = editor.lockedVertices();
+  if (locked)
+    for (size_t v = 0; v < std::min(lock.size(), locked->size()); ++v)
+      lock[v] |= (*locked)[v];
+  int64_t kept = 0;
+  double floor = -1; // the mesh's smallest dihedral angle, once a round runs
+  std::vector<std::pair<double, int32_t>> worst;
+  std::vector<std::array<int32_t, 4>> quads;
+  double previousWorst = -3;
+  int stale = 0; // rounds in a row after which the mesh's worst tet was no better
+  for (int round = 0; round < options.rounds; ++round)
+  {
+    // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound (a tet tried in
+    // vain is tried again: the points kept since may have made room). Rounds go on while points are kept and the mesh's worst tet improves at least every second
+    // round (two equal worst tets need a round each when the first point pushes into the second's).
+    double q0 = 2;
+    mesh.forEachTet([&](int32_t t) { q0 = std::min(q0, tetQuality(mesh, t)); });
+    stale = q0 > previousWorst ? 0 : stale + 1;
+    if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60 || stale >= 2)
+      break;
+    previousWorst = q0;
+    const int64_t keptBefore = kept;
+    const double qLimit = degreesToQuality(sineQualityToDegrees(q0) + options.aboveWorst);
+    worst.clear();
+    mesh.forEachTet([&](int32_t t) {
+      const double q = tetQuality(mesh, t);
+      if (q < qLimit)
+        worst.emplace_back(q, t);
+    });
+    // A plateau of many tets near a worst tet already at the optimisation's target gains little per point.
+    if (sineQualityToDegrees(q0) >= options.plateauDegrees &&
+      static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
+      break;
+    if (floor < 0)
+    {
+      floor = 180;
+      mesh.forEachTet([&](int32_t t) { floor = std::min(floor, minDihedral(mesh, t)); });
+    }
+    std::sort(worst.begin(), worst.end());
+    quads.clear();
+    size_t n = 0;
+    for (const auto& w : worst)
+    {
+      const int32_t* v = mesh.vertices(w.second);
+      std::array<int32_t, 4> key = { v[0], v[1], v[2], v[3] };
+      std::sort(key.begin(), key.end());
+      if (n == static_cast<size_t>(options.tetsPerRound))
+        break;
+      worst[n++] = w;
+      quads.push_back(key);
+    }
+    worst.resize(n);
+    for (size_t k = 0; k < worst.size(); ++k)
+    {
+      const int32_t t = worst[k].second;
+      if (mesh.isFree(t))
+        continue;
+      std::array<int32_t, 4> key = { mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2), mesh.vertex(t, 3) };
+      std::sort(key.begin(), key.end());
+      if (key != quads[k])
+        continue; // replaced by an earlier attempt
+      Attempt attempt(editor, lock, floor);
+      ++rep.attempts;
+      if (attempt.run(t))
+        ++kept;
+    }
+    if (kept == keptBefore)
+      break;
+  }
+  rep.kept = kept;
+  return kept;
+}
+
+} // namespace volgrid
