@@ -56,9 +56,15 @@ private:
   // Index of the front face with f's vertices, -1 if none.
   static int findSet(const std::vector<Face>& front, const Face& f)
   {
+    // Faces have three distinct vertices: same set = each of f's vertices is in front[i] (no sorting:
+    // this is the search's innermost loop).
     for (size_t i = 0; i < front.size(); ++i)
-      if (TriKey(front[i][0], front[i][1], front[i][2]) == TriKey(f[0], f[1], f[2]))
+    {
+      const Face& g = front[i];
+      if ((g[0] == f[0] || g[1] == f[0] || g[2] == f[0]) && (g[0] == f[1] || g[1] == f[1] || g[2] == f[1]) &&
+        (g[0] == f[2] || g[1] == f[2] || g[2] == f[2]))
         return static_cast<int>(i);
+    }
     return -1;
   }
 
