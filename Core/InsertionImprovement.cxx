@@ -176,7 +176,7 @@ public:
       return false;
     }
     improveAround(qt);
-    if (worstCreated() > qt && minDihedralCreated() >= floor_)
+    if (minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_)
       return true;
     m_ = std::move(saved);
     m_.points.resize(m_.points.size() - 3); // the new point, used by no tet
@@ -218,30 +218,22 @@ private:
     out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 
-  double worstCreated() const
+  // The smallest `measure` (tetQuality, minDihedral) over the live tets this attempt created.
+  double minOverCreated(double (*measure)(const TetMesh&, int32_t), double none) const
   {
     std::vector<int32_t> alive;
     aliveCreated(alive);
-    double q = 2;
+    double q = none;
     for (int32_t c : alive)
-      q = std::min(q, tetQuality(m_, c));
+      q = std::min(q, measure(m_, c));
     return q;
-  }
-
-  double minDihedralCreated() const
-  {
-    std::vector<int32_t> alive;
-    aliveCreated(alive);
-    double a = 180;
-    for (int32_t c : alive)
-      a = std::min(a, minDihedral(m_, c));
-    return a;
   }
 
   // Moves w to raise the worst tet of its star, by a pattern search whose directions are the axes and the
   // face normals of the star's worst tet (the room is often a wedge of a degree, which axis steps alone
-  // cannot follow), down to steps of 1e-7 of the distance to its nearest neighbour (300 positions at most). A position counts only
-  // when every tet of the star stays strictly positive (exact orient3d). True when w moved.
+  // cannot follow), down to steps of 1e-7 of the distance to its nearest neighbour (300 positions at
+  // most). A position counts only when every tet of the star stays strictly positive (exact orient3d).
+  // True when w moved.
   bool patternSearchVertex(int32_t w)
   {
     ed_.star(w, star_);
