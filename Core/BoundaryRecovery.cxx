@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -73,6 +74,11 @@ struct Crossing
   int32_t tet;
   int32_t a, b; // edge endpoints (edges) or face index in a (faces)
 };
+
+// Edge-removal attempts one segment may spend in recoverEdgeByFlips: a segment the flips cannot recover
+// (long needles crossed by dozens of faces) would otherwise eat the whole work budget of the stage
+// before the easy ones are tried (prt2.stl: 476 segments left for Steiner points without it, 261 with).
+constexpr uint64_t kFlipWorkPerSegment = 1000;
 
 class Recoverer
 {
@@ -254,20 +260,64 @@ public:
     return found == 2 ? chord : std::array<int32_t, 2>{ -1, -1 };
   }
 
+  // Segment ab lies in a flat part of the mesh where it crosses only edges of that plane, each with the
+  // two in-plane ring vertices of a 2D triangulation (a flat CAD face): Sloan's 2D algorithm. Crossing
+  // edges wait in a queue; one whose quad is convex is flipped in the plane (flipInPlane refuses the
+  // others, which go back to the queue), and the new diagonal joins the queue if it still crosses ab.
+  // In 2D a convex one always exists, so this ends; the crossing count never grows but may stay the
+  // same for many flips, which the greedy search below does not allow.
+  bool recoverEdgeInPlane(int32_t a, int32_t b, const std::vector<Crossing>& edges)
+  {
+    // Copies: flipInPlane may add a point, which moves the coordinate array.
+    const double A[3] = { m_.point(a)[0], m_.point(a)[1], m_.point(a)[2] };
+    const double B[3] = { m_.point(b)[0], m_.point(b)[1], m_.point(b)[2] };
+    std::deque<std::array<int32_t, 2>> queue;
+    for (const Crossing& c : edges)
+      queue.push_back({ c.a, c.b });
+    std::vector<int32_t> created;
+    // Sloan: at most k(k-1)/2 flips for k crossing edges (each pair of crossing diagonals flips once).
+    const size_t k = edges.size(), limit = k * (k + 1) / 2 + 4 * k + 100;
+    size_t idle = 0; // consecutive refusals: a full pass of them means no convex quad is left
+    for (size_t step = 0; step < limit && !queue.empty() && idle <= queue.size(); ++step)
+    {
+      const std::array<int32_t, 2> e = queue.front();
+      queue.pop_front();
+      const int32_t t = ed_.findEdge(e[0], e[1]);
+      if (t < 0)
+        continue; // flipped away meanwhile
+      const std::array<int32_t, 2> chord = inPlaneChord(a, b, { t, e[0], e[1] });
+      if (chord[0] < 0 || !ed_.flipInPlane(t, e[0], e[1], chord[0], chord[1], &bc_, &created, &kinds_))
+      {
+        queue.push_back(e);
+        ++idle;
+        continue;
+      }
+      idle = 0;
+      if (coplanarCross(A, B, m_.point(chord[0]), m_.point(chord[1])))
+        queue.push_back(chord);
+    }
+    return ed_.findEdge(a, b) >= 0;
+  }
+
   bool recoverEdgeByFlips(int32_t a, int32_t b)
   {
     std::vector<Crossing> faces, edges, f2, e2;
     std::vector<int32_t> created;
     int sideways = 0;
+    const uint64_t work0 = ed_.removalAttempts;
     for (int iter = 0; iter < 500; ++iter)
     {
       if (ed_.findEdge(a, b) >= 0)
         return true;
+      if (ed_.removalAttempts - work0 > kFlipWorkPerSegment)
+        return false; // hopeless here: leave the budget to the others (a Steiner point will split it)
       if (!traceSegment(a, b, faces, edges))
         return false;
       const size_t m0 = faces.size() + edges.size();
       if (m0 == 0)
         return false;
+      if (iter == 0 && faces.empty() && recoverEdgeInPlane(a, b, edges))
+        return true;
       bool progress = false;
       for (const Crossing& c : faces)
       {

@@ -116,6 +116,52 @@ inline SurfaceMesh stripBox(int n, double lx, double ly, double lz, double shift
   return s;
 }
 
+// Flat box (x in [0, l], y in [0, w], z in [0, h]) whose top face z = h has n + 1 points along each long
+// edge, a[k] at y = 0 and b[k] at y = w, triangulated by two fans of needles: from a[0] to every b[k],
+// and from b[n] to every a[k]. The sides y = 0 and y = w are fans from a bottom corner. These are flat
+// CAD faces: the 3D Delaunay mesh has the short zig-zag edges a[k]-b[k] in the top plane instead, and a
+// fan segment crosses up to 2n of them, all in that plane.
+inline SurfaceMesh fanBox(int n, double l, double w, double h)
+{
+  SurfaceMesh s;
+  const int32_t c0 = s.addPoint(0, 0, 0), c1 = s.addPoint(l, 0, 0), c2 = s.addPoint(0, w, 0), c3 = s.addPoint(l, w, 0);
+  std::vector<int32_t> a, b;
+  for (int k = 0; k <= n; ++k)
+  {
+    a.push_back(s.addPoint(l * k / n, 0, h));
+    b.push_back(s.addPoint(l * k / n, w, h));
+  }
+  // Each triangle turned to face away from the box's centre.
+  auto add = [&](int32_t p, int32_t q, int32_t r) {
+    const double *P = &s.points[3 * p], *Q = &s.points[3 * q], *R = &s.points[3 * r];
+    double u[3], v[3], m[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      u[k] = Q[k] - P[k];
+      v[k] = R[k] - P[k];
+      m[k] = (P[k] + Q[k] + R[k]) / 3 - (k == 0 ? l : k == 1 ? w : h) / 2;
+    }
+    const double nx = u[1] * v[2] - u[2] * v[1], ny = u[2] * v[0] - u[0] * v[2], nz = u[0] * v[1] - u[1] * v[0];
+    if (nx * m[0] + ny * m[1] + nz * m[2] > 0)
+      s.addTriangle(p, q, r);
+    else
+      s.addTriangle(p, r, q);
+  };
+  for (int k = 0; k < n; ++k)
+  {
+    add(a[0], b[k], b[k + 1]); // top, first fan
+    add(b[n], a[k], a[k + 1]); // top, second fan
+    add(c2, b[k], b[k + 1]);   // side y = w
+    add(c1, a[k], a[k + 1]);   // side y = 0
+  }
+  add(c1, a[0], c0);
+  add(c2, b[n], c3);
+  add(a[0], b[0], c2), add(a[0], c2, c0); // side x = 0
+  add(a[n], c1, c3), add(a[n], c3, b[n]); // side x = l
+  add(c0, c2, c3), add(c0, c3, c1);       // bottom
+  return s;
+}
+
 // Icosphere (subdivided icosahedron), outward.
 inline void addSphere(SurfaceMesh& s, const double c[3], double r, int levels, bool inward = false)
 {

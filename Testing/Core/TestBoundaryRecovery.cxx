@@ -470,3 +470,23 @@ TEST(BoundaryRecovery, PlanarFlipReplacesTheDiagonalOfAFlatQuad)
   EXPECT_FALSE(run(-2.0, true));
   EXPECT_FALSE(run(-2.0, false)); // each side's cone alone would be valid here
 }
+
+// Flat faces made of needle fans (testshapes::fanBox): their missing segments cross only edges lying in
+// the face's own plane, many of them, and each flip may leave the crossing count unchanged. Sloan's 2D
+// flips (recoverEdgeInPlane) recover all of them without a Steiner point on the boundary.
+TEST(BoundaryRecovery, FlatNeedleFansRecoveredByPlanarFlips)
+{
+  for (int n : { 12, 40, 100, 200 })
+  {
+    SurfaceMesh s = testshapes::fanBox(n, 10.0, 1.0, 1.0);
+    RecoverySetup su(s);
+    MeshEditor ed(su.mesh);
+    RecoveryReport rep;
+    const Status st = recoverBoundary(ed, su.bc, su.kinds, RecoveryOptions(), nullptr, &rep);
+    ASSERT_TRUE(st.ok()) << "n = " << n << ": " << st.message;
+    EXPECT_GT(rep.missingEdgesInitially, n / 2) << "n = " << n;
+    EXPECT_EQ(rep.steinerSegment + rep.steinerFacet, 0) << "n = " << n;
+    EXPECT_TRUE(allPresent(ed, su.bc)) << "n = " << n;
+    EXPECT_TRUE(checkMesh(su.mesh, structural()).valid) << "n = " << n;
+  }
+}
