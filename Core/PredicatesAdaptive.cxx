@@ -20,9 +20,7 @@ namespace predicates
 {
 namespace
 {
-using namespace expansion;
-using namespace internal;
-
+using namespace internal; // and expansion::, which internal uses
 using detail::kEps;
 
 // ---------------------------------------------------------------------------------------------------
