@@ -4,7 +4,7 @@
 // orient3d, insphere, insphereSoS and orient2dProjected (Predicates.h) return: the functions there are
 // these. Including this header lets the compiler inline the filtered double evaluation (~60 flops for
 // insphere, branch-free up to one well-predicted test) into the caller; only the rare uncertain cases
-// call out of line into the exact code of Predicates.cxx (detail::*Exact).
+// call out of line into the exact code of PredicatesAdaptive.cxx (detail::*Exact).
 //
 // The error bounds are derived in Predicates.cxx. They stay sound if the caller's translation unit
 // contracts a*b+c into fused multiply-adds (a fused operation only removes a rounding), but Core is
