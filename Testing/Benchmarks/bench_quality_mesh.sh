@@ -11,7 +11,10 @@
 #      keep the same triangles. Per model: the SURFACE BOUND on the minimum dihedral angle of any mesh that
 #      keeps these triangles, the smaller of
 #        e: the smallest dihedral angle between two adjacent input triangles measured inside the domain
-#           (every tet holding that edge has its dihedral angle there no larger);
+#           (every tet holding that edge has its dihedral angle there no larger), halved for an edge that
+#           no single tet can hold: the only candidate, the tet of its two triangles, would create an edge
+#           crossing an input segment or triangle (exact rational test, for the 300 sharpest edges), so
+#           at least two tets share that angle;
 #        t: the tet that holds a boundary triangle has it as a face and lies inside the domain's wedges at
 #           its three edges: the largest minimum dihedral angle over all such tets (fourth vertex free),
 #           estimated numerically for the 40 triangles of worst shape or on the sharpest edges;
@@ -52,6 +55,7 @@ fi
 export VOLGRID_BIN="$volgrid" VOLGRID_BUILD_DIR="$build_dir" VOLGRID_REPO="$repo_root"
 exec python3 - "$@" <<'PYTHON'
 import json, math, os, re, shutil, subprocess, sys, tempfile, time
+from fractions import Fraction
 
 volgrid = os.environ["VOLGRID_BIN"]
 build_dir = os.environ["VOLGRID_BUILD_DIR"]
@@ -169,7 +173,74 @@ def surface_bound(pts, tris):
     tri_best = 180.0
     for t in set(cands):
         tri_best = min(tri_best, triangle_bound(*(pts[v] for v in tris[t]), lim(t)))
+    split = split_edge_bound(pts, tris, half, angle, min(best, tri_best))
+    if split is not None:
+        best = min(best, split)
     return best, tri_best
+
+def orient_exact(a, b, c, d):
+    """Sign of det[b - a, c - a, d - a] in exact rational arithmetic (the doubles converted exactly)."""
+    a = [Fraction(v) for v in a]
+    u = [Fraction(b[k]) - a[k] for k in range(3)]
+    v = [Fraction(c[k]) - a[k] for k in range(3)]
+    w = [Fraction(d[k]) - a[k] for k in range(3)]
+    det = (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+           u[2] * (v[0] * w[1] - v[1] * w[0]))
+    return (det > 0) - (det < 0)
+
+def crosses_surface(z, w, pts, tris, near):
+    """Whether the open segment z-w (two input vertices, not an input edge) certainly crosses the input
+    surface: through the interior of a triangle or of one of its edges, exactly. `near`: candidate
+    triangles (bounding boxes overlapping the segment's)."""
+    P, Q = pts[z], pts[w]
+    for t in near:
+        tri = tris[t]
+        if z in tri and w in tri:
+            continue
+        A, B, C = (pts[v] for v in tri)
+        s1, s2 = orient_exact(A, B, C, P), orient_exact(A, B, C, Q)
+        if s1 * s2 < 0:
+            o = [orient_exact(P, Q, X, Y) for X, Y in ((A, B), (B, C), (C, A))]
+            if (all(x >= 0 for x in o) or all(x <= 0 for x in o)) and o.count(0) <= 1:
+                return True  # through the interior of the triangle or of one of its edges
+        elif s1 == 0 and s2 == 0:
+            # Coplanar: a proper crossing with an edge of the triangle that shares no end with z-w.
+            n = [abs(x) for x in cross(sub(B, A), sub(C, A))]
+            drop = n.index(max(n))
+            keep = [k for k in range(3) if k != drop]
+            def o2(a, b, c):
+                d = ((Fraction(b[keep[0]]) - Fraction(a[keep[0]])) * (Fraction(c[keep[1]]) - Fraction(a[keep[1]])) -
+                     (Fraction(b[keep[1]]) - Fraction(a[keep[1]])) * (Fraction(c[keep[0]]) - Fraction(a[keep[0]])))
+                return (d > 0) - (d < 0)
+            for i in range(3):
+                u, v = tri[i], tri[(i + 1) % 3]
+                if u in (z, w) or v in (z, w):
+                    continue
+                U, V = pts[u], pts[v]
+                if o2(U, V, P) * o2(U, V, Q) < 0 and o2(P, Q, U) * o2(P, Q, V) < 0:
+                    return True
+    return False
+
+def split_edge_bound(pts, tris, half, angle, below, max_edges=300):
+    """The edge bound refined: an input edge x-y with interior angle phi lies in one tet only if that tet
+    is {x, y, z, w}, z and w the third vertices of its two triangles; when the new edge z-w would cross
+    the input surface, at least two tets share the angle and one has at most phi / 2 there. Checks the
+    sharpest edges (ascending phi) while phi / 2 is below `below`; None when none lowers it."""
+    edges = sorted((phi, x, y) for (x, y), phi in angle.items() if x < y and phi < 2 * below)
+    if not edges:
+        return None
+    boxes = [tuple(min(pts[v][k] for v in t) for k in range(3)) + tuple(max(pts[v][k] for v in t) for k in range(3))
+             for t in tris]
+    for phi, x, y in edges[:max_edges]:
+        if phi >= 180.0:
+            return phi / 2  # no tet has a dihedral angle of 180 degrees or more
+        z, w = half[(x, y)], half[(y, x)]
+        lo = [min(pts[z][k], pts[w][k]) for k in range(3)]
+        hi = [max(pts[z][k], pts[w][k]) for k in range(3)]
+        near = [t for t, b in enumerate(boxes) if all(b[k] <= hi[k] and b[3 + k] >= lo[k] for k in range(3))]
+        if crosses_surface(z, w, pts, tris, near):
+            return phi / 2  # ascending: no later edge gives less
+    return None
 
 def dihedrals(p):
     """The six dihedral angles (degrees) of tet p[0..3], edges (0,1) (0,2) (0,3) (1,2) (1,3) (2,3)."""
