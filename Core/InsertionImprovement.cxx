@@ -29,6 +29,20 @@ double minDihedral(const TetMesh& m, int32_t t)
   return *std::min_element(a, a + 6);
 }
 
+// The smallest and the largest dihedral angle of the mesh.
+std::pair<double, double> dihedralRange(const TetMesh& mesh)
+{
+  double lo = 180, hi = 0;
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    double a[6];
+    quality::tetDihedralAngles(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), a);
+    lo = std::min(lo, *std::min_element(a, a + 6));
+    hi = std::max(hi, *std::max_element(a, a + 6));
+  });
+  return { lo, hi };
+}
+
 double degreesToQuality(double degrees)
 {
   return std::sin(std::min(90.0, degrees) * 3.14159265358979323846 / 180.0);
@@ -448,6 +462,12 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
       floor = 180;
       mesh.forEachTet([&](int32_t t) { floor = std::min(floor, minDihedral(mesh, t)); });
     }
+    // A round must raise the smallest angle or leave the largest alone: where the worst tet is forced by
+    // the surface (a wedge's 1 degree edge), new points replace it with tets that the sine quality ranks
+    // better but whose largest angle reaches 178 degrees, for nothing.
+    const std::pair<double, double> rangeBefore = dihedralRange(mesh);
+    const TetMesh before = mesh;
+    const std::vector<int32_t> labelsBefore = labels ? *labels : std::vector<int32_t>();
     std::sort(worst.begin(), worst.end());
     quads.clear();
     size_t n = 0;
@@ -478,6 +498,16 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     }
     if (kept == keptBefore)
       break;
+    const std::pair<double, double> rangeAfter = dihedralRange(mesh);
+    if (!(rangeAfter.first > rangeBefore.first) && rangeAfter.second > rangeBefore.second)
+    {
+      mesh = before;
+      if (labels)
+        *labels = labelsBefore;
+      editor.rebuildVertexMap();
+      kept = keptBefore;
+      break;
+    }
   }
   rep.kept = kept;
   return kept;
