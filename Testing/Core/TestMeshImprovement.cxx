@@ -529,3 +529,21 @@ TEST(MeshImprovement, WorstTetsGetAnInsertedPointAndBeatTetGenTies)
     }
   }
 }
+
+TEST(MeshImprovement, InsertionNeverTradesAForcedMinimumForALargerMaximum)
+{
+  // wedge-1: a 1 degree edge of the surface forces a 1 degree dihedral angle on every mesh; the rest can
+  // be right-angled (TetGen: 90 deg). Points inserted to replace the worst tet cannot lift that minimum;
+  // their round must not stay, since it only made the largest angle worse (it reached 178 deg).
+  SurfaceMesh s;
+  const std::string path = std::string(VOLGRID_SHARED_DATA_DIR) + "/tetgen-tests/testingdrafts/wedge-1.smesh";
+  if (!readSurface(path, s).ok())
+    GTEST_SKIP() << "no corpus file " << path;
+  MesherResult r;
+  ASSERT_TRUE(meshSurface(s, MesherOptions(), r).ok());
+  TetMesh m;
+  ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok());
+  const DihedralSummary d = summarizeDihedrals(m);
+  EXPECT_GT(d.minDihedral, 0.999);
+  EXPECT_LT(d.maxDihedral, 90.001);
+}
