@@ -49,6 +49,30 @@ public:
     return at < 0 ? -1 : data_[static_cast<size_t>(at) + 3];
   }
 
+  // Calls fn(f, a, b, id, first) for each edge ab of each live subface f of bc, in subface order, with
+  // the edge's id (edgeId) and whether this is its first visit (an edge of two subfaces comes twice; an
+  // edge without id, never present, is always a first visit).
+  template <class Fn>
+  void forEachSubfaceEdge(const BoundaryConstraints& bc, Fn&& fn) const
+  {
+    std::vector<uint8_t> seen(data_.size(), 0);
+    for (int32_t f = 0; f < bc.capacity(); ++f)
+    {
+      if (!bc.alive(f))
+        continue;
+      const int32_t* s = bc.subface(f);
+      for (int i = 0; i < 3; ++i)
+      {
+        const int32_t a = s[i], b = s[(i + 1) % 3];
+        const int32_t id = edgeId(a, b);
+        const bool first = id < 0 || !seen[static_cast<size_t>(id)];
+        if (id >= 0)
+          seen[static_cast<size_t>(id)] = 1;
+        fn(f, a, b, id, first);
+      }
+    }
+  }
+
 private:
   // Subfaces 0..count-1 with vertices verts[3f..3f+2]; dead where parent[f] < 0 (parent may be null).
   void index(const int32_t* verts, int32_t count, const int32_t* parent, int32_t numVertices);

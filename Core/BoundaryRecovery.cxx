@@ -682,25 +682,11 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     missingEdges.clear();
     if (!census.upToDate(ed, bc))
       census.take(ed, bc);
-    std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
-    for (int32_t f = 0; f < bc.capacity(); ++f)
-    {
-      if (!bc.alive(f))
-        continue;
-      const int32_t* s = bc.subface(f);
-      for (int i = 0; i < 3; ++i)
-      {
-        const int32_t a = s[i], b = s[(i + 1) % 3];
-        const int32_t id = census.edgeId(a, b); // -1: degenerate, never present
-        if (id >= 0 && seen[static_cast<size_t>(id)])
-          continue;
-        if (id >= 0)
-          seen[static_cast<size_t>(id)] = 1;
-        if ((id < 0 || !census.edgePresent(id)) && requiredEdge(a, b) &&
-          (!only || only->count(bc.segmentOf(a, b))))
-          missingEdges.push_back({ a, b });
-      }
-    }
+    census.forEachSubfaceEdge(bc, [&](int32_t, int32_t a, int32_t b, int32_t id, bool first) {
+      if (first && (id < 0 || !census.edgePresent(id)) && requiredEdge(a, b) &&
+        (!only || only->count(bc.segmentOf(a, b))))
+        missingEdges.push_back({ a, b });
+    });
   };
   if (options.presplitSegments && !options.presplitSegments->empty() && options.allowSteiner)
   {
@@ -885,35 +871,24 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   {
     if (!census.upToDate(ed, bc))
       census.take(ed, bc);
-    std::vector<uint8_t> seen(static_cast<size_t>(census.edgeIdLimit()), 0);
-    for (int32_t f = 0; f < bc.capacity(); ++f)
-    {
-      if (!bc.alive(f))
-        continue;
-      const int32_t* s = bc.subface(f);
-      bool faceOk = true;
-      for (int i = 0; i < 3; ++i)
+    // A live subface none of whose edges was counted missing above, yet not a face, is a missing facet.
+    std::vector<uint8_t> edgeMissing(static_cast<size_t>(bc.capacity()), 0);
+    census.forEachSubfaceEdge(bc, [&](int32_t f, int32_t, int32_t, int32_t id, bool first) {
+      if (first && (id < 0 || !census.edgePresent(id)))
       {
-        const int32_t a = s[i], b = s[(i + 1) % 3];
-        const int32_t id = census.edgeId(a, b);
-        const bool firstSeen = id < 0 || !seen[static_cast<size_t>(id)];
-        if (id >= 0)
-          seen[static_cast<size_t>(id)] = 1;
-        if (firstSeen && (id < 0 || !census.edgePresent(id)))
-        {
-          ++rep.unrecoveredEdges;
-          faceOk = false;
-          if (badEdges.size() < 5)
-            badEdges.push_back(bc.parent[f]);
-        }
+        ++rep.unrecoveredEdges;
+        edgeMissing[static_cast<size_t>(f)] = 1;
+        if (badEdges.size() < 5)
+          badEdges.push_back(bc.parent[f]);
       }
-      if (faceOk && census.faceCode(f) < 0)
+    });
+    for (int32_t f = 0; f < bc.capacity(); ++f)
+      if (bc.alive(f) && !edgeMissing[static_cast<size_t>(f)] && census.faceCode(f) < 0)
       {
         ++rep.unrecoveredFacets;
         if (badFaces.size() < 5)
           badFaces.push_back(bc.parent[f]);
       }
-    }
   }
   rep.facetCavities = static_cast<int64_t>(cavityStats.successes);
   rep.facetCavityEnlargements = static_cast<int64_t>(cavityStats.enlargements);
