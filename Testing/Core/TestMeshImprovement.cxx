@@ -115,6 +115,28 @@ std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
   });
   return faces;
 }
+// Meshes s with `options`, checks what every mesh must hold (valid, boundary == input, exact volume, no
+// inverted tet) and returns its dihedral angles; `what` names the case in failure messages.
+DihedralSummary meshAndCheck(const SurfaceMesh& s, const MesherOptions& options, MesherResult& r, const std::string& what)
+{
+  const Status st = meshSurface(s, options, r);
+  EXPECT_TRUE(st.ok()) << what << ": " << st.message;
+  if (!st.ok())
+    return DihedralSummary();
+  std::vector<int32_t> input(s.triangles.size());
+  for (size_t k = 0; k < input.size(); ++k)
+    input[k] = r.inputToOutputPoint[s.triangles[k]];
+  const BoundaryCheckReport br =
+    checkBoundaryConformity(r.points, r.numInputPoints, r.tets, input, r.stats.enclosedVolume);
+  EXPECT_TRUE(br.meshValid() && br.boundaryEqualsInput()) << what << ": " << br.summary();
+  EXPECT_LT(br.relativeVolumeError, 1e-9) << what;
+  TetMesh m;
+  EXPECT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok()) << what;
+  const DihedralSummary d = summarizeDihedrals(m);
+  EXPECT_EQ(d.inverted, 0) << what;
+  return d;
+}
+
 } // namespace
 
 TEST(MeshImprovement, DefaultsAreOnAndDocumented)
@@ -401,19 +423,8 @@ TEST(MeshImprovement, BoundaryCapsOfCorpusModelsAreSplitBeyondTetGen)
     if (!readSurface(dir + "/" + file, s).ok())
       GTEST_SKIP() << "no corpus at " << dir;
     MesherResult r;
-    ASSERT_TRUE(meshSurface(s, MesherOptions(), r).ok()) << file;
-    std::vector<int32_t> input(s.triangles.size());
-    for (size_t k = 0; k < input.size(); ++k)
-      input[k] = r.inputToOutputPoint[s.triangles[k]];
-    const BoundaryCheckReport br =
-      checkBoundaryConformity(r.points, r.numInputPoints, r.tets, input, r.stats.enclosedVolume);
-    EXPECT_TRUE(br.meshValid() && br.boundaryEqualsInput()) << file << ": " << br.summary();
-    EXPECT_LT(br.relativeVolumeError, 1e-9) << file;
-    TetMesh m;
-    ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok()) << file;
-    const DihedralSummary d = summarizeDihedrals(m);
+    const DihedralSummary d = meshAndCheck(s, MesherOptions(), r, file);
     EXPECT_GE(d.minDihedral, 6.0) << file;
-    EXPECT_EQ(d.inverted, 0) << file;
     EXPECT_GT(r.stats.improvement.splitPoints, 0) << file;
   }
 }
@@ -435,19 +446,8 @@ TEST(MeshImprovement, SteinerPointsSqueezedAgainstTheBoundaryAreCollapsed)
     if (!readSurface(dir + "/" + file, s).ok())
       GTEST_SKIP() << "no corpus at " << dir;
     MesherResult r;
-    ASSERT_TRUE(meshSurface(s, MesherOptions(), r).ok()) << file;
-    std::vector<int32_t> input(s.triangles.size());
-    for (size_t k = 0; k < input.size(); ++k)
-      input[k] = r.inputToOutputPoint[s.triangles[k]];
-    const BoundaryCheckReport br =
-      checkBoundaryConformity(r.points, r.numInputPoints, r.tets, input, r.stats.enclosedVolume);
-    EXPECT_TRUE(br.meshValid() && br.boundaryEqualsInput()) << file << ": " << br.summary();
-    EXPECT_LT(br.relativeVolumeError, 1e-9) << file;
-    TetMesh m;
-    ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok()) << file;
-    const DihedralSummary d = summarizeDihedrals(m);
+    const DihedralSummary d = meshAndCheck(s, MesherOptions(), r, file);
     EXPECT_GE(d.minDihedral, floor) << file;
-    EXPECT_EQ(d.inverted, 0) << file;
     // (Since boundary recovery has planar flips these two models no longer get such points, and the
     // floors hold without a collapse; MeshOptimization.VertexCollapse* tests the collapse on its own.)
     EXPECT_GE(r.stats.steinerInterior, 0) << file;
@@ -510,18 +510,7 @@ TEST(MeshImprovement, WorstTetsGetAnInsertedPointAndBeatTetGenTies)
       if (!insertion)
         options.improvement.insertionRounds = 0;
       MesherResult r;
-      ASSERT_TRUE(meshSurface(s, options, r).ok()) << c.file;
-      std::vector<int32_t> input(s.triangles.size());
-      for (size_t k = 0; k < input.size(); ++k)
-        input[k] = r.inputToOutputPoint[s.triangles[k]];
-      const BoundaryCheckReport br =
-        checkBoundaryConformity(r.points, r.numInputPoints, r.tets, input, r.stats.enclosedVolume);
-      EXPECT_TRUE(br.meshValid() && br.boundaryEqualsInput()) << c.file << ": " << br.summary();
-      EXPECT_LT(br.relativeVolumeError, 1e-9) << c.file;
-      TetMesh m;
-      ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok()) << c.file;
-      const DihedralSummary d = summarizeDihedrals(m);
-      EXPECT_EQ(d.inverted, 0) << c.file;
+      const DihedralSummary d = meshAndCheck(s, options, r, c.file);
       if (insertion)
         EXPECT_GE(d.minDihedral, c.floor) << c.file;
       else
@@ -540,10 +529,7 @@ TEST(MeshImprovement, InsertionNeverTradesAForcedMinimumForALargerMaximum)
   if (!readSurface(path, s).ok())
     GTEST_SKIP() << "no corpus file " << path;
   MesherResult r;
-  ASSERT_TRUE(meshSurface(s, MesherOptions(), r).ok());
-  TetMesh m;
-  ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok());
-  const DihedralSummary d = summarizeDihedrals(m);
+  const DihedralSummary d = meshAndCheck(s, MesherOptions(), r, "wedge-1");
   EXPECT_GT(d.minDihedral, 0.999);
   EXPECT_LT(d.maxDihedral, 90.001);
 }
