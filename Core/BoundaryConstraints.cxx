@@ -7,19 +7,6 @@
 namespace volgrid
 {
 
-TriKey::TriKey(int32_t a, int32_t b, int32_t c)
-{
-  if (a > b)
-    std::swap(a, b);
-  if (b > c)
-    std::swap(b, c);
-  if (a > b)
-    std::swap(a, b);
-  v[0] = a;
-  v[1] = b;
-  v[2] = c;
-}
-
 void BoundaryConstraints::init(const int32_t* triangles, int32_t numTriangles)
 {
   verts.clear();

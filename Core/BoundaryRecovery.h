@@ -38,6 +38,7 @@
 #include "Progress.h"
 #include "Status.h"
 #include "TetMesh.h"
+#include "VertexKeys.h"
 
 #include <array>
 #include <cstdint>
@@ -57,34 +58,6 @@ enum class VertexKind : uint8_t
   SteinerSegment,  // added on an input edge (boundary: must be removed)
   SteinerFacet,    // added inside an input triangle (boundary: must be removed)
   SteinerInterior  // added strictly inside a region (allowed, counted)
-};
-
-inline uint64_t edgeKey(int32_t a, int32_t b)
-{
-  const uint32_t lo = static_cast<uint32_t>(a < b ? a : b), hi = static_cast<uint32_t>(a < b ? b : a);
-  return (static_cast<uint64_t>(lo) << 32) | hi;
-}
-
-struct TriKey
-{
-  int32_t v[3];
-  TriKey() = default;
-  TriKey(int32_t a, int32_t b, int32_t c);
-  bool operator==(const TriKey& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
-  bool operator<(const TriKey& o) const
-  {
-    return v[0] != o.v[0] ? v[0] < o.v[0] : v[1] != o.v[1] ? v[1] < o.v[1] : v[2] < o.v[2];
-  }
-};
-struct TriKeyHash
-{
-  size_t operator()(const TriKey& k) const
-  {
-    uint64_t h = static_cast<uint32_t>(k.v[0]) * 0x9E3779B97F4A7C15ull;
-    h ^= (static_cast<uint64_t>(static_cast<uint32_t>(k.v[1])) + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
-    h ^= (static_cast<uint64_t>(static_cast<uint32_t>(k.v[2])) + 0x94D049BB133111EBull) * 0x165667B19E3779F9ull;
-    return static_cast<size_t>(h ^ (h >> 29));
-  }
 };
 
 // The boundary the mesh must contain: the input triangles, each possibly split into subfaces while

@@ -9,27 +9,6 @@
 namespace volgrid
 {
 
-FaceConstraints::Key::Key(int32_t a, int32_t b, int32_t c)
-{
-  if (a > b)
-    std::swap(a, b);
-  if (b > c)
-    std::swap(b, c);
-  if (a > b)
-    std::swap(a, b);
-  v[0] = a;
-  v[1] = b;
-  v[2] = c;
-}
-
-size_t FaceConstraints::Hash::operator()(const Key& k) const
-{
-  uint64_t h = static_cast<uint32_t>(k.v[0]) * 0x9E3779B97F4A7C15ull;
-  h = (h ^ (h >> 31)) + static_cast<uint32_t>(k.v[1]) * 0xC2B2AE3D27D4EB4Full;
-  h = (h ^ (h >> 29)) + static_cast<uint32_t>(k.v[2]) * 0x165667B19E3779F9ull;
-  return static_cast<size_t>(h ^ (h >> 32));
-}
-
 void FaceConstraints::addTriangles(const int32_t* tris, size_t n)
 {
   set_.reserve(set_.size() + n);

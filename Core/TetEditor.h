@@ -25,6 +25,7 @@
 #pragma once
 
 #include "TetMesh.h"
+#include "VertexKeys.h"
 
 #include <array>
 #include <cstdint>
@@ -39,8 +40,8 @@ namespace volgrid
 class FaceConstraints
 {
 public:
-  void add(int32_t a, int32_t b, int32_t c) { set_.insert(Key(a, b, c)); }
-  bool contains(int32_t a, int32_t b, int32_t c) const { return !set_.empty() && set_.count(Key(a, b, c)) != 0; }
+  void add(int32_t a, int32_t b, int32_t c) { set_.insert(TriKey(a, b, c)); }
+  bool contains(int32_t a, int32_t b, int32_t c) const { return !set_.empty() && set_.count(TriKey(a, b, c)) != 0; }
   size_t size() const { return set_.size(); }
   bool empty() const { return set_.empty(); }
   void clear() { set_.clear(); }
@@ -48,17 +49,7 @@ public:
   void addTriangles(const int32_t* tris, size_t n);
 
 private:
-  struct Key
-  {
-    int32_t v[3];
-    Key(int32_t a, int32_t b, int32_t c);
-    bool operator==(const Key& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
-  };
-  struct Hash
-  {
-    size_t operator()(const Key& k) const;
-  };
-  std::unordered_set<Key, Hash> set_;
+  std::unordered_set<TriKey, TriKeyHash> set_;
 };
 
 // Quality used by the improvement stages: the minimum over the six edges of the sine of the dihedral
