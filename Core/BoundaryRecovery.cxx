@@ -5,6 +5,7 @@
 #include "BoundaryCensus.h"
 #include "FacetRecovery.h"
 #include "Predicates.h"
+#include "SegmentConeSplit.h"
 
 #include <algorithm>
 #include <chrono>
@@ -79,6 +80,9 @@ struct Crossing
 // (long needles crossed by dozens of faces) would otherwise eat the whole work budget of the stage
 // before the easy ones are tried (prt2.stl: 476 segments left for Steiner points without it, 261 with).
 constexpr uint64_t kFlipWorkPerSegment = 1000;
+
+// Rounds in which one input segment may be split by cones (splitEdgeByCones).
+constexpr int kMaxConeRounds = 4;
 
 class Recoverer
 {
@@ -572,6 +576,56 @@ public:
       kinds_.pop_back();
       return false;
     }
+    splitConstraintEdge(a, b, v, sameParent);
+    return true;
+  }
+
+  // Missing subsegment ab recovered at once by points on it (SegmentConeSplit.h); false when that does
+  // not apply (the caller then splits it at its midpoint).
+  bool splitEdgeByCones(int32_t a, int32_t b, size_t maxPoints)
+  {
+    const std::array<int32_t, 2>* ef = bc_.edgeFaces(a, b);
+    if (!ef)
+      return false;
+    const std::array<int32_t, 2> fs = *ef;
+    const bool sameParent = fs[0] >= 0 && fs[1] >= 0 && bc_.parent[fs[0]] == bc_.parent[fs[1]];
+    const uint64_t seg = bc_.segmentOf(a, b);
+    // Two segments meeting at a small angle can take turns to advance a little each round, closing in
+    // on their common end without end: a few rounds per segment, then the midpoint split takes over.
+    if (++coneRounds_[seg] > kMaxConeRounds)
+      return false;
+    std::vector<int32_t> added; // points of this call, on the line too
+    auto onLine = [&](int32_t w) {
+      if (w == a || w == b || static_cast<int32_t>(seg >> 32) == w || static_cast<int32_t>(seg & 0xffffffffu) == w)
+        return true;
+      if (std::find(added.begin(), added.end(), w) != added.end())
+        return true;
+      return !sameParent && w < static_cast<int32_t>(kinds_.size()) && kinds_[w] == VertexKind::SteinerSegment &&
+        bc_.segmentOf(w, w) == seg;
+    };
+    int32_t from = a;
+    bool any = false;
+    for (size_t n = 0; n < maxPoints; ++n)
+    {
+      int32_t v = -1;
+      const ConeStep step = coneStepAlongSegment(ed_, bc_, from, b, onLine, &v);
+      if (step == ConeStep::Recovered)
+        return true;
+      if (step == ConeStep::Failed)
+        return any;
+      kinds_.push_back(sameParent ? VertexKind::SteinerFacet : VertexKind::SteinerSegment);
+      splitConstraintEdge(from, b, v, sameParent);
+      added.push_back(v);
+      from = v;
+      any = true;
+    }
+    return any;
+  }
+
+  // Subsegment ab of the constraints becomes av + vb; the subfaces on it are split in two.
+  void splitConstraintEdge(int32_t a, int32_t b, int32_t v, bool sameParent)
+  {
+    const std::array<int32_t, 2> fs = *bc_.edgeFaces(a, b);
     if (!sameParent)
       bc_.addSegmentPoint(v, a, b);
     for (int32_t fid : fs)
@@ -591,7 +645,6 @@ public:
       ++steinerFacet;
     else
       ++steinerSegment;
-    return true;
   }
 
   bool splitFacet(int32_t fid)
@@ -628,6 +681,7 @@ private:
   std::vector<int32_t> queue_;
   std::unordered_set<TriKey, TriKeyHash> seenFaces_;
   std::unordered_set<uint64_t> seenEdges_;
+  std::unordered_map<uint64_t, int> coneRounds_; // per input segment (edgeKey), splitEdgeByCones calls
 };
 
 } // namespace
@@ -772,9 +826,11 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       {
         if (!bc.isEdge(a, b) || ed.findEdge(a, b) >= 0 || steinerUsed >= budget)
           continue;
-        if (rec.splitEdge(a, b))
+        const int64_t before = rec.steinerSegment + rec.steinerFacet;
+        if ((options.segmentCones && rec.splitEdgeByCones(a, b, static_cast<size_t>(budget - steinerUsed))) ||
+          rec.splitEdge(a, b))
         {
-          ++steinerUsed;
+          steinerUsed += rec.steinerSegment + rec.steinerFacet - before;
           changed = true;
         }
       }

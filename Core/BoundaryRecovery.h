@@ -18,8 +18,9 @@
 //      When that fails for a triangle, its subface edges and subfaces are recovered one by one as before:
 //      the edges crossing a subface are removed by edge removal or 2-3 flips.
 //   3. What flips cannot recover gets a Steiner point (paper: "points at the intersection of the missing
-//      edges/facets with the tets"): the midpoint of a missing (sub)segment or the centroid of a missing
-//      (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
+//      edges/facets with the tets"): the midpoint of a missing (sub)segment (with segmentCones first the
+//      fewest crossing points whose cones make every piece an edge, SegmentConeSplit.h) or the centroid
+//      of a missing (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
 //      made star-shaped exactly. The boundary triangles are then split into subfaces (BoundaryConstraints)
 //      and the pieces are recovered in turn. SteinerRemoval.h later removes every such boundary point.
 // Flips and insertions never destroy a recovered subface or subsegment (they are constraints), and
@@ -210,6 +211,11 @@ struct RecoveryOptions
   // edge. That converges (a piece short enough is a Delaunay edge), where splitting after flips may
   // not; the mesher retries a failed recovery with the segments the first attempt had to split.
   const std::unordered_set<uint64_t>* presplitSegments = nullptr;
+  // Missing segments that flips leave are split by cones (SegmentConeSplit.h: their pieces are edges at
+  // once) before the midpoint split is tried. The mesher's last resort: long needle segments that the
+  // midpoint split does not make recoverable (prt2.stl) converge with few points, while segments meeting
+  // at a small angle can be slower to recover that way than with midpoints.
+  bool segmentCones = false;
 };
 
 struct RecoveryReport

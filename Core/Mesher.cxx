@@ -171,8 +171,9 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
 
   // 3-5. Recovery, exterior removal, removal of the boundary Steiner points. When recovery or that removal
-  // fails, both are retried once from the Delaunay mesh, first splitting the input segments the first
-  // attempt had to split while the mesh is still Delaunay (RecoveryOptions::presplitSegments).
+  // fails, both are retried from the Delaunay mesh: first splitting the input segments the first attempt
+  // had to split while the mesh is still Delaunay (RecoveryOptions::presplitSegments), then, as the last
+  // resort, with segment cones (RecoveryOptions::segmentCones).
   std::vector<VertexKind> kinds(static_cast<size_t>(N + 8), VertexKind::Unused);
   for (int32_t v = 0; v < N; ++v)
     if (used[v])
@@ -187,7 +188,8 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   RegionResult regions;
   std::unordered_set<uint64_t> presplit;
   Status firstFailure = Status::success();
-  for (int attempt = 0; attempt < 2; ++attempt)
+  constexpr int kAttempts = 3;
+  for (int attempt = 0; attempt < kAttempts; ++attempt)
   {
     if (attempt > 0)
     {
@@ -202,7 +204,8 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     RecoveryOptions ro;
     ro.allowSteiner = options.allowSteinerPoints;
     ro.maxSteinerPoints = options.maxSteinerPoints;
-    ro.presplitSegments = attempt > 0 ? &presplit : nullptr;
+    ro.presplitSegments = attempt == 1 ? &presplit : nullptr;
+    ro.segmentCones = attempt == 2;
     RecoveryReport rr;
     s = recoverBoundary(ed, bc, kinds, ro, pr, &rr);
     st.missingEdges = rr.missingEdgesInitially;
@@ -229,18 +232,21 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
       }
       st.secondsSteiner += since(t0);
     }
-    if (attempt > 0 && !s.ok())
+    if (attempt + 1 == kAttempts && !s.ok())
     {
       // Report the first attempt's diagnosis (it names what flips and Steiner points could not do).
       s = firstFailure;
-      s.message += " A retry that first split the " + std::to_string(presplit.size()) +
-        " segments involved failed too.";
+      s.message += " Retries that first split the " + std::to_string(presplit.size()) +
+        " segments involved, and that split segments by cones, failed too.";
       break;
     }
-    if (s.ok() || s.kind != ErrorKind::RecoveryFailed || !mayRetry || attempt > 0 || rr.splitSegments.empty())
+    if (s.ok() || s.kind != ErrorKind::RecoveryFailed || !mayRetry || (attempt == 0 && rr.splitSegments.empty()))
       break;
-    firstFailure = s;
-    presplit = rr.splitSegments;
+    if (attempt == 0)
+    {
+      firstFailure = s;
+      presplit = rr.splitSegments;
+    }
   }
   if (!s.ok())
     return s;

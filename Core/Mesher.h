@@ -72,7 +72,7 @@ struct MesherStatistics
   int64_t steinerInterior = 0;   // points added strictly inside the domain
   int64_t steinerBoundary = 0;   // points left on the boundary (0 unless removeBoundarySteiner is off)
   int64_t steinerInserted = 0;   // boundary Steiner points recovery inserted (all later relocated)
-  int recoveryAttempts = 0;      // 2 when the first recovery failed and the retry with presplit segments ran
+  int recoveryAttempts = 0;      // 2: the retry with presplit segments ran; 3: also the one with segment cones
   double enclosedVolume = 0;     // volume of the domain computed from the input surface
   double tetVolume = 0;          // sum of the output tets' volumes
   double secondsCheck = 0, secondsDelaunay = 0, secondsRecovery = 0, secondsExterior = 0, secondsSteiner = 0,
