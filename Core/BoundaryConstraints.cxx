@@ -106,6 +106,14 @@ uint64_t BoundaryConstraints::segmentOf(int32_t a, int32_t b) const
   return ib != segmentOf_.end() ? ib->second : edgeKey(a, b);
 }
 
+bool BoundaryConstraints::onSegment(int32_t w, uint64_t seg) const
+{
+  if (static_cast<int32_t>(seg >> 32) == w || static_cast<int32_t>(seg & 0xffffffffu) == w)
+    return true;
+  auto iw = segmentOf_.find(w);
+  return iw != segmentOf_.end() && iw->second == seg;
+}
+
 int32_t BoundaryConstraints::findSubface(int32_t a, int32_t b, int32_t c) const
 {
   const int32_t* f = faces_.find(TriKey(a, b, c));

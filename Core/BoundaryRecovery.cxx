@@ -596,12 +596,7 @@ public:
       return false;
     std::vector<int32_t> added; // points of this call, on the line too
     auto onLine = [&](int32_t w) {
-      if (w == a || w == b || static_cast<int32_t>(seg >> 32) == w || static_cast<int32_t>(seg & 0xffffffffu) == w)
-        return true;
-      if (std::find(added.begin(), added.end(), w) != added.end())
-        return true;
-      return !sameParent && w < static_cast<int32_t>(kinds_.size()) && kinds_[w] == VertexKind::SteinerSegment &&
-        bc_.segmentOf(w, w) == seg;
+      return w == a || w == b || std::find(added.begin(), added.end(), w) != added.end() || bc_.onSegment(w, seg);
     };
     int32_t from = a;
     bool any = false;

@@ -90,6 +90,8 @@ public:
   bool forbiddenEdge(int32_t u, int32_t v) const;
   // The input segment (edgeKey of its input end points) that subsegment ab lies on.
   uint64_t segmentOf(int32_t a, int32_t b) const;
+  // Is w an end point of input segment seg, or a Steiner point put on it?
+  bool onSegment(int32_t w, uint64_t seg) const;
   // Input segments that received Steiner points.
   const std::unordered_set<uint64_t>& splitSegments() const { return splitSegments_; }
 
