@@ -1,13 +1,11 @@
 // Segment cones (Core/SegmentConeSplit.h): a missing segment split by points on it whose pieces are
 // edges at once, and the mesher's last-resort retry that uses them (gmsh-benchmarks/prt2.stl).
-#include "BoundaryCheck.h"
 #include "BoundaryRecovery.h"
 #include "Delaunay.h"
 #include "MeshChecker.h"
-#include "Mesher.h"
+#include "MesherTestCorpusModel.h"
 #include "Quality.h"
 #include "SegmentConeSplit.h"
-#include "SurfaceReader.h"
 
 #include <gtest/gtest.h>
 
@@ -121,19 +119,8 @@ TEST(SegmentConeSplit, PiecesAreEdgesAndTheMeshStaysValid)
 // do. The mesh then has the input boundary exactly.
 TEST(SegmentConeSplit, NeedleStripsOfPrt2MeshedByTheConeRetry)
 {
-  const std::string path = std::string(VOLGRID_SHARED_DATA_DIR) + "/gmsh-benchmarks/prt2.stl";
-  SurfaceMesh s;
-  if (!readSurface(path, s).ok())
-    GTEST_SKIP() << "corpus file not found: " << path;
-  MesherOptions options;
-  options.improvement.fieldPoints = false;
-  options.improvement.optimize = false;
   MesherResult r;
-  const Status st = meshSurface(s, options, r);
-  ASSERT_TRUE(st.ok()) << st.message;
+  if (!testshapes::meshCorpusModelAndCheck("gmsh-benchmarks/prt2.stl", r))
+    GTEST_SKIP() << "corpus file gmsh-benchmarks/prt2.stl not found";
   EXPECT_EQ(r.stats.recoveryAttempts, 3);
-  EXPECT_EQ(r.stats.steinerBoundary, 0);
-  const BoundaryCheckReport br =
-    checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
-  EXPECT_TRUE(br.ok()) << br.summary();
 }

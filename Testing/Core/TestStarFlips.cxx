@@ -1,15 +1,12 @@
 // Flips around boundary Steiner points that Steiner removal could not remove (Core/StarFlips.h).
-#include "BoundaryCheck.h"
 #include "BoundaryRecovery.h"
 #include "MeshChecker.h"
-#include "Mesher.h"
+#include "MesherTestCorpusModel.h"
 #include "StarFlips.h"
-#include "SurfaceReader.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <string>
 
 using namespace volgrid;
@@ -81,19 +78,7 @@ TEST(StarFlips, CandidatesAreInteriorEdges)
 // once interior edges next to them are flipped away.
 TEST(StarFlips, TriceratopsBoundarySteinerPointsRemoved)
 {
-  const std::string path = std::string(VOLGRID_SHARED_DATA_DIR) + "/tetgen-tests/cgal/triceratops.off";
-  if (!std::ifstream(path))
-    GTEST_SKIP() << "no corpus file " << path;
-  SurfaceMesh s;
-  ASSERT_TRUE(readSurface(path, s).ok());
-  MesherOptions options;
-  options.improvement.fieldPoints = false;
-  options.improvement.optimize = false;
   MesherResult r;
-  const Status st = meshSurface(s, options, r);
-  ASSERT_TRUE(st.ok()) << st.message;
-  EXPECT_EQ(r.stats.steinerBoundary, 0);
-  const BoundaryCheckReport br =
-    checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
-  EXPECT_TRUE(br.ok()) << br.summary();
+  if (!testshapes::meshCorpusModelAndCheck("tetgen-tests/cgal/triceratops.off", r))
+    GTEST_SKIP() << "no corpus file tetgen-tests/cgal/triceratops.off";
 }
