@@ -168,9 +168,13 @@ public:
         for (int fi = 0; fi < 4; ++fi)
         {
           const int32_t u = m_.neighbor(t, fi);
-          if (u >= 0 && ed_.tetStamp[u] == s)
-            continue;
           m_.faceVertices(t, fi, f);
+          if (u >= 0 && ed_.tetStamp[u] == s)
+          {
+            if (bc_.findSubface(f[0], f[1], f[2]) >= 0)
+              return false; // a constraint face would vanish inside
+            continue;
+          }
           for (int e = 0; e < 3; ++e)
           {
             keptEdges_.push_back(edgeKey(f[e], f[(e + 1) % 3]));
@@ -265,8 +269,10 @@ ConeStep coneStepAlongSegment(MeshEditor& ed, const BoundaryConstraints& bc, int
 
   // The whole rest at once: the cone from a or from b over the chain.
   setSeed(K);
-  auto fromA = [&](int32_t w) { return !onLine(w) || w == b || bc.isEdge(a, w); };
-  auto fromB = [&](int32_t w) { return !onLine(w) || w == a || bc.isEdge(b, w); };
+  // New edges from a or b: never to another point of the line but the other end or a piece, nor along
+  // another split segment (BoundaryConstraints::forbiddenEdge).
+  auto fromA = [&](int32_t w) { return (!onLine(w) || w == b || bc.isEdge(a, w)) && !bc.forbiddenEdge(a, w); };
+  auto fromB = [&](int32_t w) { return (!onLine(w) || w == a || bc.isEdge(b, w)) && !bc.forbiddenEdge(b, w); };
   if (cav.build(seed, A, a, -1, nullptr, fromA) || cav.build(seed, B, b, -1, nullptr, fromB))
     return ed.replace(cav.region, cav.tets, nullptr) ? ConeStep::Recovered : ConeStep::Failed;
 
@@ -295,7 +301,10 @@ ConeStep coneStepAlongSegment(MeshEditor& ed, const BoundaryConstraints& bc, int
     setSeed(j + 1);
     const ConeCavity::Fan fan = { chain[j].tet, chain[j].exit, E, eId };
     const int32_t beyond = chain[j + 1].tet;
-    if (cav.build(seed, A, a, beyond, &fan, [&](int32_t w) { return !onLine(w) || bc.isEdge(a, w); }) &&
+    // (the fan joins E to the crossed face's vertices: none may be on the line)
+    if (!onLine(f[0]) && !onLine(f[1]) && !onLine(f[2]) &&
+      cav.build(seed, A, a, beyond, &fan,
+          [&](int32_t w) { return (!onLine(w) || bc.isEdge(a, w)) && !bc.forbiddenEdge(a, w); }) &&
       coneBeyond(beyond, chain[j + 1].entry, eId))
       return true;
     setSeed(j + 2);
