@@ -5,8 +5,8 @@
 // RecoveryFailed (reported, never a wrong mesh, never a crash). The coverage is printed and must not
 // fall below the recorded baseline.
 //
-// Skipped (and why): models above kMaxTriangles triangles (runtime: nefertiti, bunny00, igea; the
-// benchmark covers bunny00, the CLI corpus test all three).
+// Every clean model is run, the largest (igea.ply, 268,686 triangles) in about 2 s; kMaxTriangles only
+// guards the runtime against a much larger file added to the corpus later (it would be listed as skipped).
 #include "BoundaryCheck.h"
 #include "Enclosures.h"
 #include "Mesher.h"
@@ -30,9 +30,9 @@ using namespace volgrid;
 namespace
 {
 
-constexpr int64_t kMaxTriangles = 60000;
+constexpr int64_t kMaxTriangles = 300000;
 // Cases (models and enclosure variants) meshed and checked by this implementation when it was written.
-constexpr int kBaselineChecked = 170; // planar flips, ring chords, retry with presplit segments, crossing-face edge removal, slab facets, piecewise facets, Steiner points past the flip budget, vertex cones, no edge along split segments, star flips, cavity carving, segment cones
+constexpr int kBaselineChecked = 176; // planar flips, ring chords, retry with presplit segments, crossing-face edge removal, slab facets, piecewise facets, Steiner points past the flip budget, vertex cones, no edge along split segments, star flips, cavity carving, segment cones, no size limit below 300k triangles
 
 std::string dataDir() { return VOLGRID_SHARED_DATA_DIR; }
 
