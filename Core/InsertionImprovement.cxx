@@ -29,18 +29,12 @@ double minDihedral(const TetMesh& m, int32_t t)
   return *std::min_element(a, a + 6);
 }
 
-// The smallest and the largest dihedral angle of the mesh.
+// The smallest and the largest dihedral angle of the mesh (two angles per tet, not six: this runs twice
+// per round over the whole mesh).
 std::pair<double, double> dihedralRange(const TetMesh& mesh)
 {
-  double lo = 180, hi = 0;
-  mesh.forEachTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    double a[6];
-    quality::tetDihedralAngles(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), a);
-    lo = std::min(lo, *std::min_element(a, a + 6));
-    hi = std::max(hi, *std::max_element(a, a + 6));
-  });
-  return { lo, hi };
+  const DihedralSummary s = summarizeDihedrals(mesh);
+  return { s.minDihedral, s.maxDihedral };
 }
 
 double degreesToQuality(double degrees)
