@@ -18,11 +18,12 @@
 //      When that fails for a triangle, its subface edges and subfaces are recovered one by one as before:
 //      the edges crossing a subface are removed by edge removal or 2-3 flips.
 //   3. What flips cannot recover gets a Steiner point (paper: "points at the intersection of the missing
-//      edges/facets with the tets"): the midpoint of a missing (sub)segment (with segmentCones first the
-//      fewest crossing points whose cones make every piece an edge, SegmentConeSplit.h) or the centroid
-//      of a missing (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
-//      made star-shaped exactly. The boundary triangles are then split into subfaces (BoundaryConstraints)
-//      and the pieces are recovered in turn. SteinerRemoval.h later removes every such boundary point.
+//      edges/facets with the tets"): the midpoint of a missing (sub)segment or the centroid of a missing
+//      (sub)facet, inserted by a Bowyer-Watson cavity that never crosses a recovered boundary face and is
+//      made star-shaped exactly (with RecoveryOptions::segmentCones a segment is first split at crossing
+//      points whose cones make every piece an edge at once, SegmentConeSplit.h). The boundary triangles
+//      are then split into subfaces (BoundaryConstraints) and the pieces are recovered in turn.
+//      SteinerRemoval.h later removes every such boundary point.
 // Flips and insertions never destroy a recovered subface or subsegment (they are constraints), and
 // never create an edge between two points of a split input segment other than its pieces
 // (BoundaryConstraints::forbiddenEdge; the same holds for facet cavities and Steiner removal).

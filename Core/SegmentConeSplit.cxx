@@ -123,7 +123,8 @@ bool traceChain(MeshEditor& ed, const BoundaryConstraints& bc, int32_t a, int32_
 // A cavity made star-shaped from an apex by growth: it starts as the seed tets, takes in the tet beyond
 // any face the apex does not see strictly (never across a constraint face or into `frozen`), and is
 // replaced by the cone from the apex over its faces; faces through the apex (when it is a vertex) give
-// no tet. With a fan, the face `fanFace` of `fanTet` is split in three at the point fanPoint instead.
+// no tet. With a fan, the cavity face fan->face of fan->tet is split in three at fan->point instead (the
+// cone tets then hold the fan's triangles).
 class ConeCavity
 {
 public:
