@@ -40,6 +40,7 @@
 #include "Progress.h"
 #include "Status.h"
 #include "TetMesh.h"
+#include "TetStamps.h"
 #include "VertexKeys.h"
 
 #include <array>
@@ -181,7 +182,7 @@ public:
 
   // Scratch helpers shared by the stages.
   uint32_t newStamp();
-  std::vector<uint32_t> tetStamp; // per tet slot (resized on demand)
+  TetStamps tetStamp; // per tet slot (resized on demand)
   void ensureStamp();
 
 private:

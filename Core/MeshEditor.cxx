@@ -46,19 +46,12 @@ int32_t MeshEditor::tetOf(int32_t v)
 
 void MeshEditor::ensureStamp()
 {
-  if (tetStamp.size() < static_cast<size_t>(mesh.tetCapacity()))
-    tetStamp.resize(static_cast<size_t>(mesh.tetCapacity()) + 1024, 0);
+  tetStamp.ensure(mesh.tetCapacity());
 }
 
 uint32_t MeshEditor::newStamp()
 {
-  ensureStamp();
-  if (++stamp_ == 0)
-  {
-    std::fill(tetStamp.begin(), tetStamp.end(), 0);
-    stamp_ = 1;
-  }
-  return stamp_;
+  return tetStamp.next(mesh.tetCapacity());
 }
 
 void MeshEditor::star(int32_t v, std::vector<int32_t>& out)

@@ -151,7 +151,6 @@ public:
   bool build(const std::vector<int32_t>& seed, const double* apex, int32_t apexId, int32_t frozen, const Fan* fan,
     const Allowed& allowed)
   {
-    ed_.ensureStamp();
     const uint32_t s = ed_.newStamp();
     region = seed;
     for (int32_t t : region)

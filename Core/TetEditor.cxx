@@ -133,19 +133,12 @@ void TetEditor::rebuildVertexMap()
 
 void TetEditor::ensureStamp()
 {
-  if (stamp_.size() < static_cast<size_t>(mesh.tetCapacity()))
-    stamp_.resize(static_cast<size_t>(mesh.tetCapacity()) + 1024, 0);
+  stamp_.ensure(mesh.tetCapacity());
 }
 
 uint32_t TetEditor::newStamp()
 {
-  ensureStamp();
-  if (++stampValue_ == 0)
-  {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    stampValue_ = 1;
-  }
-  return stampValue_;
+  return stamp_.next(mesh.tetCapacity());
 }
 
 std::vector<uint8_t> TetEditor::lockedVertices() const

@@ -25,6 +25,7 @@
 #pragma once
 
 #include "TetMesh.h"
+#include "TetStamps.h"
 #include "VertexKeys.h"
 
 #include <array>
@@ -146,8 +147,7 @@ private:
   void ensureStamp();
   uint32_t newStamp();
   std::vector<int32_t> vertTet_;
-  std::vector<uint32_t> stamp_;
-  uint32_t stampValue_ = 0;
+  TetStamps stamp_;
   // scratch
   struct FaceEntry
   {
