@@ -4,6 +4,7 @@
 // already has where possible.
 #include "FacetRecovery.h"
 
+#include "IntervalTriangulation.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -147,18 +148,7 @@ bool chooseTriangulation(MeshEditor& ed, const std::vector<int32_t>& poly, const
   if (cost[static_cast<size_t>(n - 1)] >= kInf)
     return false;
   out.clear();
-  std::vector<std::pair<int, int>> stack = { { 0, n - 1 } };
-  while (!stack.empty())
-  {
-    auto [i, j] = stack.back();
-    stack.pop_back();
-    if (j - i < 2)
-      continue;
-    const int k = choice[static_cast<size_t>(i * n + j)];
-    out.push_back({ { poly[i], poly[k], poly[j] } });
-    stack.push_back({ i, k });
-    stack.push_back({ k, j });
-  }
+  forEachChosenTriangle(choice, n, [&](int i, int k, int j) { out.push_back({ { poly[i], poly[k], poly[j] } }); });
   return true;
 }
 

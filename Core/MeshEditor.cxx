@@ -2,6 +2,7 @@
 // removal, constrained vertex insertion, point location), shared by recovery and Steiner removal.
 #include "BoundaryRecovery.h"
 
+#include "IntervalTriangulation.h"
 #include "Predicates.h"
 #include "Quality.h"
 
@@ -376,19 +377,10 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
   if (!(best[n - 1] > kInvalid))
     return false;
   tmpNew_.clear();
-  std::vector<std::pair<int, int>> stack = { { 0, n - 1 } };
-  while (!stack.empty())
-  {
-    auto [i, j] = stack.back();
-    stack.pop_back();
-    if (j - i < 2)
-      continue;
-    const int k = choice[i * n + j];
+  forEachChosenTriangle(choice, n, [&](int i, int k, int j) {
     tmpNew_.push_back({ { ring[i], ring[k], ring[j], y } });
     tmpNew_.push_back({ { ring[i], ring[j], ring[k], x } });
-    stack.push_back({ i, k });
-    stack.push_back({ k, j });
-  }
+  });
   lastRemoved.clear();
   for (int32_t u : tets)
     lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
