@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "NodeFile.h"
 #include "VolGridConversion.h"
+#include "XmlDataFiles.h"
 
 #include "Delaunay.h"
 #include "MeshChecker.h"
@@ -11,7 +12,6 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridWriter.h"
 
 #include <cstdio>
 #include <cstring>
@@ -212,14 +212,10 @@ int runDelaunayCommand(int argc, char** argv)
     for (size_t o = 0; o < kept.size(); ++o)
       inputIds->SetValue(static_cast<vtkIdType>(o), kept[o]);
     grid->GetPointData()->AddArray(inputIds);
-    vtkNew<vtkXMLUnstructuredGridWriter> writer;
-    writer->SetFileName(args.out.c_str());
-    writer->SetInputData(grid);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    if (writer->Write() != 1)
+    std::string error;
+    if (!volgrid::cli::writeXmlDataSet(args.out, grid, error))
     {
-      std::fprintf(stderr, "volgrid delaunay: cannot write '%s'\n", args.out.c_str());
+      std::fprintf(stderr, "volgrid delaunay: %s\n", error.c_str());
       return 1;
     }
   }

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "SurfaceFile.h"
 #include "VolGridConversion.h"
+#include "XmlDataFiles.h"
 
 #include "BoundaryCheck.h"
 #include "Mesher.h"
@@ -11,8 +12,6 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLPolyDataWriter.h"
-#include "vtkXMLUnstructuredGridWriter.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -191,17 +190,12 @@ bool parseArguments(int argc, char** argv, Arguments& args)
   return true;
 }
 
-template <class Writer, class Data>
-bool write(const std::string& path, Data* data)
+bool write(const std::string& path, vtkDataSet* data)
 {
-  vtkNew<Writer> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(data);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  if (writer->Write() != 1)
+  std::string error;
+  if (!volgrid::cli::writeXmlDataSet(path, data, error))
   {
-    std::fprintf(stderr, "volgrid mesh: cannot write '%s'\n", path.c_str());
+    std::fprintf(stderr, "volgrid mesh: %s\n", error.c_str());
     return false;
   }
   return true;
@@ -249,9 +243,9 @@ int runMeshCommand(int argc, char** argv)
   vtkNew<vtkUnstructuredGrid> volume;
   vtkNew<vtkPolyData> boundarySurface;
   VolGridFillFromMesherResult(result, volume, boundarySurface);
-  if (!write<vtkXMLUnstructuredGridWriter>(args.out, volume.Get()))
+  if (!write(args.out, volume.Get()))
     return 1;
-  if (!args.boundaryOut.empty() && !write<vtkXMLPolyDataWriter>(args.boundaryOut, boundarySurface.Get()))
+  if (!args.boundaryOut.empty() && !write(args.boundaryOut, boundarySurface.Get()))
     return 1;
 
   const volgrid::MesherStatistics& s = result.stats;

@@ -3,6 +3,7 @@
 // prints a summary table, or with --json one JSON line. Errors go to stderr with a non-zero exit code:
 // 2 for bad arguments, 1 for unreadable input.
 #include "Commands.h"
+#include "XmlDataFiles.h"
 
 #include "vtkVolGridQuality.h"
 
@@ -20,8 +21,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLPolyDataReader.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -59,19 +58,10 @@ vtkSmartPointer<vtkDataSet> readMesh(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
   vtkSmartPointer<vtkDataSet> data;
-  if (ext == "vtu")
+  if (volgrid::cli::isXmlDataExtension(ext))
   {
-    vtkNew<vtkXMLUnstructuredGridReader> r;
-    r->SetFileName(path.c_str());
-    r->Update();
-    data = r->GetOutput();
-  }
-  else if (ext == "vtp")
-  {
-    vtkNew<vtkXMLPolyDataReader> r;
-    r->SetFileName(path.c_str());
-    r->Update();
-    data = r->GetOutput();
+    std::string ignored; // the message below names the file
+    data = volgrid::cli::readXmlDataSet(path, ignored);
   }
   else if (ext == "vtk")
   {

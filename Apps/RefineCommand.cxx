@@ -5,6 +5,7 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "VolGridConversion.h"
+#include "XmlDataFiles.h"
 
 #include "MeshImprovement.h"
 
@@ -18,8 +19,6 @@
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLGenericDataObjectReader.h"
-#include "vtkXMLUnstructuredGridWriter.h"
 
 #include <algorithm>
 #include <array>
@@ -58,10 +57,8 @@ vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path)
   }
   else
   {
-    vtkNew<vtkXMLGenericDataObjectReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
+    std::string ignored; // the caller names the file in its own message
+    return volgrid::cli::readXmlDataSet(path, ignored);
   }
   return vtkDataSet::SafeDownCast(data);
 }
@@ -305,14 +302,10 @@ int runRefineCommand(int argc, char** argv)
   vtkIdType cell = 0;
   mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
   out->GetCellData()->AddArray(region);
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(positional[1].c_str());
-  writer->SetInputData(out);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  if (writer->Write() != 1)
+  std::string writeError;
+  if (!volgrid::cli::writeXmlDataSet(positional[1], out, writeError))
   {
-    std::fprintf(stderr, "volgrid refine: cannot write '%s'\n", positional[1].c_str());
+    std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());
     return 1;
   }
   if (json)

@@ -1,6 +1,7 @@
 #include "SurfaceFile.h"
 
 #include "VolGridSurfaceConversion.h"
+#include "XmlDataFiles.h"
 
 #include "GzipFile.h"
 #include "SurfaceReader.h"
@@ -16,8 +17,6 @@
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLWriter.h"
 #include "vtkSmartPointer.h"
-#include "vtkXMLPolyDataReader.h"
-#include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
 #include <cctype>
@@ -100,10 +99,8 @@ Status readWithVtk(const std::string& path, const std::string& readPath, const s
   }
   else if (ext == "vtp")
   {
-    vtkNew<vtkXMLPolyDataReader> r;
-    r->SetFileName(readPath.c_str());
-    r->Update();
-    data = r->GetOutput();
+    std::string ignored; // the caller names the file in its own message
+    data = cli::readXmlDataSet(readPath, ignored);
     format = "VTK XML poly data";
   }
   else
@@ -267,11 +264,7 @@ bool writeSurfaceFile(const std::string& path, vtkPolyData* surface, std::string
   int ok = 0;
   if (ext == "vtp")
   {
-    vtkNew<vtkXMLPolyDataWriter> w;
-    w->SetFileName(path.c_str());
-    w->SetInputData(surface);
-    w->SetDataModeToAppended();
-    ok = w->Write();
+    return cli::writeXmlDataSet(path, surface, error);
   }
   else if (ext == "vtk")
   {
