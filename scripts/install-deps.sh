@@ -19,6 +19,34 @@ case "$level" in
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac
 
+# Libraries the build links whose Debian 12 updates change behaviour: kept at the version a new machine
+# gets, so that developers, CI and users run alike (libexpat1 2.5.0-1+deb12u2 and later defer re-parsing,
+# which VTK 9.2's XML readers trip over; VolGrid's readers and writers handle it).
+current=(libexpat1)
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+apt_get() { $SUDO apt-get -o DPkg::Lock::Timeout=600 "$@"; }
+
+# Package lists older than a day are refreshed before versions are compared.
+lists_stamp=/var/cache/apt/pkgcache.bin
+if [ ! -f "$lists_stamp" ] || [ -n "$(find "$lists_stamp" -mmin +1440 2>/dev/null)" ]; then
+  apt_get update -q >/dev/null || echo "install-deps: apt-get update failed; comparing with the lists at hand" >&2
+fi
+outdated=()
+for p in "${current[@]}"; do
+  installed=$(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || true)
+  candidate=$(apt-cache policy "$p" 2>/dev/null | awk '/Candidate:/ {print $2}')
+  if [ -n "$installed" ] && [ -n "$candidate" ] && [ "$candidate" != "(none)" ] && [ "$installed" != "$candidate" ]; then
+    outdated+=("$p")
+  fi
+done
+if [ "${#outdated[@]}" -gt 0 ]; then
+  echo "install-deps: updating ${outdated[*]} to the current Debian 12 version"
+  apt_get install -y -q --only-upgrade "${outdated[@]}"
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -29,8 +57,5 @@ if [ "${#missing[@]}" -eq 0 ]; then
   exit 0
 fi
 echo "install-deps: installing ${missing[*]}"
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -q
-$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+apt_get update -q
+apt_get install -y -q --no-install-recommends "${missing[@]}"
