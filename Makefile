@@ -25,9 +25,14 @@ $(VTK_ONLY_DIR)/CMakeCache.txt:
 build-vtk-only: deps $(VTK_ONLY_DIR)/CMakeCache.txt
 	cmake --build $(VTK_ONLY_DIR) -j $(JOBS)
 
+# Both flavours always run (a failure in the first does not hide the second); the target fails if either did.
 test: build build-vtk-only
-	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) --timeout 900
-	ctest --test-dir $(VTK_ONLY_DIR) --output-on-failure -j $(JOBS) --timeout 900
+	@status=0; \
+	echo "== ParaView flavour ($(BUILD_DIR)) =="; \
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) --timeout 900 || status=1; \
+	echo "== VTK-only flavour ($(VTK_ONLY_DIR)) =="; \
+	ctest --test-dir $(VTK_ONLY_DIR) --output-on-failure -j $(JOBS) --timeout 900 || status=1; \
+	exit $$status
 
 demo: build
 	scripts/demo.sh $(BUILD_DIR)
