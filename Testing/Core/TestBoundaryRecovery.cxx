@@ -1,4 +1,5 @@
 // Boundary recovery on its own: flips (2-3, 3-2, edge removal), Steiner fallback, constraints kept.
+#include "../Common/CorpusSkip.h"
 #include "BoundaryRecovery.h"
 #include "Delaunay.h"
 #include "FacetRecovery.h"
@@ -404,8 +405,9 @@ TEST(BoundaryRecovery, PresplitSegmentsArePresentBeforeAnyFlip)
   EXPECT_TRUE(allPresent(ed, su.bc));
   EXPECT_TRUE(checkMesh(su.mesh, structural()).valid);
 
+  VOLGRID_SKIP_WITHOUT_CORPUS_FILE("/tetgen-tests/cgal/part.off");
   SurfaceMesh part;
-  ASSERT_TRUE(readSurface(std::string(VOLGRID_SHARED_DATA_DIR) + "/tetgen-tests/cgal/part.off", part).ok());
+  ASSERT_TRUE(readSurface(volgrid_testing::corpusPath("/tetgen-tests/cgal/part.off"), part).ok());
   const std::unordered_set<uint64_t> partSegments = allSegments(part);
   RecoverySetup sp(part);
   MeshEditor ep(sp.mesh);

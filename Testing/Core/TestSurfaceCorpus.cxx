@@ -8,6 +8,7 @@
 // as one vertex. Orientation: "Consistent" means no edge is traversed twice in the same direction; the
 // number of inward shells is compared only for watertight files (the signed volume of an open shell
 // depends on the reference point, so SOURCES' inward count for open files is not reproducible).
+#include "../Common/CorpusSkip.h"
 #include "SurfaceChecks.h"
 #include "SurfaceReader.h"
 
@@ -173,6 +174,7 @@ void checkRow(const CorpusRow& row)
 // The whole corpus (about 100 files, 1.3 M triangles in total) takes a few seconds; no file is skipped.
 TEST(SurfaceCorpus, DiagnosisMatchesSources)
 {
+  VOLGRID_SKIP_WITHOUT_CORPUS_FILE("SOURCES.md");
   for (const CorpusRow& row : kCorpus)
   {
     checkRow(row);
@@ -183,6 +185,7 @@ TEST(SurfaceCorpus, DiagnosisMatchesSources)
 // (as the mesher does), and the defective ones are rejected with a named defect class.
 TEST(SurfaceCorpus, MesherVerdict)
 {
+  VOLGRID_SKIP_WITHOUT_CORPUS_FILE("SOURCES.md");
   for (const CorpusRow& row : kCorpus)
   {
     SCOPED_TRACE(row.file);

@@ -1,5 +1,6 @@
 // Surface repair: welding a triangle soup, removing zero-area/duplicate triangles, stitching,
 // filling holes with a refined patch, and orienting shells (consistency, then away from the domain).
+#include "../Common/CorpusSkip.h"
 #include "Enclosures.h"
 #include "SurfaceChecks.h"
 #include "SurfaceReader.h"
@@ -201,8 +202,10 @@ TEST(SurfaceRepair, OrientConsistentlyThenForDomain)
 TEST(SurfaceRepair, CorpusCastingAndFalcon)
 {
   // casting.off: closed, consistent, INWARD -> flipped outward.
+  VOLGRID_SKIP_WITHOUT_CORPUS_FILE("/tetgen-tests/meshlab/casting.off");
+  VOLGRID_SKIP_WITHOUT_CORPUS_FILE("/aero-gmsh/InitialMeshFalcon.msh");
   SurfaceMesh casting;
-  ASSERT_TRUE(readSurface(std::string(VOLGRID_SHARED_DATA_DIR) + "/tetgen-tests/meshlab/casting.off", casting).ok());
+  ASSERT_TRUE(readSurface(volgrid_testing::corpusPath("/tetgen-tests/meshlab/casting.off"), casting).ok());
   EXPECT_EQ(checkSurface(casting).inwardShells(), 1);
   SurfaceRepairReport r;
   ASSERT_TRUE(repairSurface(casting, SurfaceRepairOptions(), &r).ok());

@@ -104,8 +104,15 @@ def run(cli, data_dir, name, timeout, scratch):
     return name, prep.returncode, last_json(prep.stdout), check, prep.stderr.strip(), last_json(diagnosis.stdout)
 
 
+# ctest reports this exit code as a skip (SKIP_RETURN_CODE in CMakeLists.txt).
+SKIPPED = 77
+
+
 def main():
     cli, data_dir = sys.argv[1], sys.argv[2]
+    if not os.path.isfile(os.path.join(data_dir, "SOURCES.md")):
+        print(f"skipped: no corpus at {data_dir} (../shared/data/real is not beside this clone)")
+        return SKIPPED
     timeout = float(sys.argv[sys.argv.index("--timeout") + 1]) if "--timeout" in sys.argv else 180
     jobs = int(sys.argv[sys.argv.index("--jobs") + 1]) if "--jobs" in sys.argv else 2
     rows = corpus_rows(data_dir)
@@ -136,7 +143,7 @@ def main():
                 # its "meshable" verdict is what prep promises.
                 if not verdict or not verdict.get("meshable"):
                     problems.append(f"{name}: prep said meshable but check disagrees: "
-                                    f"{check.stdout.strip()[-300:] if check else ''}")
+                                    f"{(check.stdout.strip() + ' ' + check.stderr.strip())[-300:] if check else ''}")
             elif summary is None:
                 unreadable += 1
                 problems.append(f"{name}: prep could not read it: {err[-200:] or 'no message'}")

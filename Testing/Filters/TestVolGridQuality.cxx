@@ -1,5 +1,6 @@
 // vtkVolGridQuality on real meshes: agreement with vtkMeshQuality where the definitions coincide, the
 // statistics table, skipped cells, surfaces, and bit-identical results for 1 and 2 threads.
+#include "../Common/CorpusSkip.h"
 #include "vtkVolGridQuality.h"
 
 #include "Quality.h"
@@ -116,6 +117,7 @@ void expectRelativelyEqual(vtkDataArray* ours, vtkDataArray* theirs, double tole
 
 TEST(VolGridQuality, MatchesMeshQualityOnCorpusMesh)
 {
+  VOLGRID_SKIP_WITHOUT_CORPUS_FILE("/common-3d-test-models/stanford-bunny.obj");
   vtkUnstructuredGrid* mesh = corpusTetMesh();
   ASSERT_GT(mesh->GetNumberOfCells(), 10000);
   vtkSmartPointer<vtkDataSet> out = runQuality(mesh);
