@@ -204,6 +204,8 @@ int vtkVolGridTetrahedralize::MeshSurface(
   }
 
   VolGridFillFromMesherResult(result, output, boundary);
+  VolGridSetPatchAndRegionNames(result, VolGridReadLabelNames(input, "PatchNames"),
+    VolGridReadLabelNames(input, "RegionNames"), output, boundary);
   const vtkIdType numPoints = output->GetNumberOfPoints();
 
   // Point data of the input points (the first input point of each merged location); added points get
