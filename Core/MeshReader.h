@@ -1,0 +1,30 @@
+// Solver mesh readers: a tet mesh with its named boundary patches and regions back into a SolverMesh,
+// so that `volgrid convert`, `refine` and `quality` take a solver's mesh. One format per file
+// (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx). Errors name the file, the line and the problem.
+#pragma once
+
+#include "SolverMesh.h"
+#include "Status.h"
+
+#include <string>
+
+namespace volgrid
+{
+
+// True when readSolverMesh knows the path's extension.
+bool solverMeshReaderSupports(const std::string& path);
+
+// Reads by extension (.mesh, .msh, .su2). The mesh is cleared first.
+Status readSolverMesh(const std::string& path, SolverMesh& mesh);
+
+// Medit .mesh (ASCII): Vertices, Triangles (ref = patch), Tetrahedra (ref = region); other sections
+// skipped. Names from VolGrid's "# VolGrid patch|region LABEL NAME" comment lines.
+Status readMeditVolume(const std::string& path, SolverMesh& mesh);
+
+// gmsh .msh, ASCII 2.2 and 4.1: triangles (patch = physical tag of the entity, else the entity tag)
+// and tets (region likewise); names from $PhysicalNames.
+Status readGmshVolume(const std::string& path, SolverMesh& mesh);
+// SU2 (.su2, ASCII, 3D): tets and triangle markers; marker k (file order) is patch k named by MARKER_TAG.
+Status readSU2(const std::string& path, SolverMesh& mesh);
+
+} // namespace volgrid
