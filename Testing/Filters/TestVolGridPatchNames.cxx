@@ -14,6 +14,7 @@
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -31,7 +32,10 @@ std::vector<std::string> names(vtkDataObject* data, const char* array)
 }
 } // namespace
 
-TEST(VolGridPatchNames, NamesReachBothOutputsAndQualityHasCfdMetrics)
+namespace
+{
+// A unit sphere (patch 0, "wing") inside a sphere of radius 6 (patch 1, "farfield"), as poly data.
+vtkSmartPointer<vtkPolyData> bodyInFarField()
 {
   volgrid::SurfaceMesh far, body;
   volgrid::EnclosureOptions o;
@@ -39,16 +43,23 @@ TEST(VolGridPatchNames, NamesReachBothOutputsAndQualityHasCfdMetrics)
   o.dimensions[0] = 6;
   o.targetEdgeLength = 1.0;
   o.patchId = 1; // named "farfield" by the enclosure generator
-  ASSERT_TRUE(volgrid::makeEnclosure(o, far).ok());
+  EXPECT_TRUE(volgrid::makeEnclosure(o, far).ok());
   o.dimensions[0] = 1;
   o.targetEdgeLength = 0.3;
   o.patchId = 0;
-  ASSERT_TRUE(volgrid::makeEnclosure(o, body).ok());
+  EXPECT_TRUE(volgrid::makeEnclosure(o, body).ok());
   body.patchNames[0] = "wing";
   far.append(body);
   EXPECT_EQ(far.patchNames, (volgrid::NameTable{ { 0, "wing" }, { 1, "farfield" } }));
-  vtkNew<vtkPolyData> input;
+  auto input = vtkSmartPointer<vtkPolyData>::New();
   VolGridSurfaceMeshToPolyData(far, input, "PatchId");
+  return input;
+}
+} // namespace
+
+TEST(VolGridPatchNames, NamesReachBothOutputsAndQualityHasCfdMetrics)
+{
+  vtkSmartPointer<vtkPolyData> input = bodyInFarField();
   EXPECT_EQ(names(input, "PatchNames"), (std::vector<std::string>{ "wing", "farfield" }));
 
   vtkNew<vtkVolGridTetrahedralize> mesher;
@@ -79,4 +90,24 @@ TEST(VolGridPatchNames, NamesReachBothOutputsAndQualityHasCfdMetrics)
   ASSERT_NE(out->GetCellData()->GetArray("Quality"), nullptr); // the selected metric is coloured
   EXPECT_NE(out->GetFieldData()->GetArray("SevereNonOrthogonalFaces"), nullptr);
   EXPECT_NE(out->GetFieldData()->GetArray("HighlySkewFaces"), nullptr);
+}
+
+TEST(VolGridPatchNames, PatchAssignmentRenamesAndRegroups)
+{
+  vtkSmartPointer<vtkPolyData> input = bodyInFarField();
+  vtkNew<vtkVolGridTetrahedralize> mesher;
+  mesher->SetInputData(input);
+  mesher->SetPatchAssignment("outer=1,body=0");
+  mesher->Update();
+  vtkPolyData* boundary = vtkPolyData::SafeDownCast(mesher->GetOutputDataObject(1));
+  ASSERT_NE(boundary, nullptr);
+  EXPECT_EQ(names(boundary, "PatchNames"), (std::vector<std::string>{ "patch0", "outer", "body" }));
+  double range[2];
+  boundary->GetCellData()->GetArray("PatchId")->GetRange(range);
+  EXPECT_EQ(range[0], 1.0);
+  EXPECT_EQ(range[1], 2.0);
+  // An id no triangle carries is an error: no output.
+  mesher->SetPatchAssignment("outer=7");
+  mesher->Update();
+  EXPECT_EQ(mesher->GetOutput(0)->GetNumberOfCells(), 0);
 }
