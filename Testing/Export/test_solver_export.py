@@ -152,6 +152,13 @@ def main():
         run(volgrid, "convert", w(src), w(dst), *extra)
         with open(w(src), "rb") as a, open(w(dst), "rb") as b:
             check(a.read() == b.read(), "%s written, read back and written again: identical" % src)
+    if case == "wing":
+        # OBJ groups become named patches (a tet whose faces are in two `g` groups, one of them twice).
+        with open(w("groups.obj"), "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\ng wing upper\nf 1 3 2\nf 1 2 4\ng tip\nf 1 4 3\n"
+                    "g wing upper\nf 2 3 4\n")
+        run(volgrid, "mesh", w("groups.obj"), w("groups.msh"), "--no-field-points")
+        check(R.gmsh_api(w("groups.msh"))[2] == {"wing upper": 3, "tip": 1}, "OBJ groups are named patches")
     bad = run(volgrid, "convert", w("domain.mesh"), w("out.xyz"), expect=2)
     check(not os.path.exists(w("out.xyz")) and "extension" in bad.stderr, "unknown extension: clear error, no file")
     bad = run(volgrid, "convert", w("domain.mesh"), w("case"), "--format", "openfoam", expect=1)
