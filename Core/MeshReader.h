@@ -1,6 +1,7 @@
 // Solver mesh readers: a tet mesh with its named boundary patches and regions back into a SolverMesh,
 // so that `volgrid convert`, `refine` and `quality` take a solver's mesh. One format per file
-// (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx). Errors name the file, the line and the problem.
+// (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx,
+// MeshReaderTetGen.cxx). Errors name the file, the line and the problem.
 #pragma once
 
 #include "SolverMesh.h"
@@ -14,7 +15,7 @@ namespace volgrid
 // True when readSolverMesh knows the path's extension.
 bool solverMeshReaderSupports(const std::string& path);
 
-// Reads by extension (.mesh, .msh, .su2). The mesh is cleared first.
+// Reads by extension (.mesh, .msh, .su2, .node/.ele/.face). The mesh is cleared first.
 Status readSolverMesh(const std::string& path, SolverMesh& mesh);
 
 // Medit .mesh (ASCII): Vertices, Triangles (ref = patch), Tetrahedra (ref = region); other sections
@@ -26,5 +27,8 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh);
 Status readGmshVolume(const std::string& path, SolverMesh& mesh);
 // SU2 (.su2, ASCII, 3D): tets and triangle markers; marker k (file order) is patch k named by MARKER_TAG.
 Status readSU2(const std::string& path, SolverMesh& mesh);
+// TetGen STEM.node/.ele/.face (`path` any of them or the stem): region = first tet attribute (else 1),
+// patch = face marker (else 1); 0- or 1-based as the first node says. No names.
+Status readTetGenVolume(const std::string& path, SolverMesh& mesh);
 
 } // namespace volgrid

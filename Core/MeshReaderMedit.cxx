@@ -62,7 +62,7 @@ Status readCells(Scanner& sc, int64_t count, int nv, int64_t numPoints, std::vec
 bool solverMeshReaderSupports(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
-  return ext == "mesh" || ext == "msh" || ext == "su2";
+  return ext == "mesh" || ext == "msh" || ext == "su2" || ext == "node" || ext == "ele" || ext == "face";
 }
 
 Status readSolverMesh(const std::string& path, SolverMesh& mesh)
@@ -73,8 +73,10 @@ Status readSolverMesh(const std::string& path, SolverMesh& mesh)
     return readGmshVolume(path, mesh);
   if (lowerExtension(path) == "su2")
     return readSU2(path, mesh);
+  if (solverMeshReaderSupports(path))
+    return readTetGenVolume(path, mesh);
   return Status::failure(ErrorKind::InvalidOption,
-    "cannot read a volume mesh from '" + path + "': unknown extension (.mesh .msh .su2)");
+    "cannot read a volume mesh from '" + path + "': unknown extension (.mesh .msh .su2 .node)");
 }
 
 Status readMeditVolume(const std::string& path, SolverMesh& mesh)

@@ -187,3 +187,28 @@ TEST(SurfaceReaderNames, StlSolidNamesAndGmshPhysicalNames)
     EXPECT_EQ(g.patchNames, (NameTable{ { 1, "wall_a" }, { 2, "farfield" } }));
   }
 }
+
+TEST(MeshReaderTetGen, RoundTripAndZeroBasedFilesWithoutFaces)
+{
+  const std::string stem = tempPath("two-tetgen");
+  ASSERT_TRUE(writeSolverMesh(stem + ".node", twoTets(), MeshFormat::TetGen).ok());
+  SolverMesh r;
+  ASSERT_TRUE(readSolverMesh(stem + ".ele", r).ok());
+  const SolverMesh m = twoTets();
+  EXPECT_EQ(r.points, m.points);
+  EXPECT_EQ(r.tets, m.tets);
+  EXPECT_EQ(r.tetRegion, m.tetRegion);
+  EXPECT_EQ(r.triangles, m.triangles);
+  EXPECT_EQ(r.trianglePatch, m.trianglePatch);
+  // TetGen's own numbering may start at 0; without .face there are no boundary triangles.
+  const std::string zero = tempPath("zero");
+  std::ofstream(zero + ".node") << "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n";
+  std::ofstream(zero + ".ele") << "1 4 0\n0 0 1 2 3\n";
+  std::filesystem::remove(zero + ".face");
+  ASSERT_TRUE(readSolverMesh(zero + ".node", r).ok());
+  EXPECT_EQ(r.tets, (std::vector<int32_t>{ 0, 1, 2, 3 }));
+  EXPECT_EQ(r.tetRegion, (std::vector<int32_t>{ 1 }));
+  EXPECT_TRUE(r.triangles.empty());
+  std::ofstream(zero + ".ele") << "1 4 0\n0 0 1 2 9\n";
+  EXPECT_FALSE(readSolverMesh(zero + ".node", r).ok()); // node id out of range
+}

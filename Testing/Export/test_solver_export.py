@@ -1,8 +1,8 @@
 """Solver hand-off end to end: a VolGrid mesh written as gmsh 4.1 and 2.2, SU2, Medit, TetGen and an
 OpenFOAM case, each read back by a reader VolGrid did not write (meshio, gmsh's API, OpenFOAM's checkMesh),
 which must report the same points, tets and patch names with the same face counts; OpenFOAM's
-potentialFoam runs on the case; VolGrid Quality's non-orthogonality and skewness match checkMesh's; Medit
-and gmsh files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
+potentialFoam runs on the case; VolGrid Quality's non-orthogonality and skewness match checkMesh's; Medit,
+gmsh, SU2 and TetGen files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
 Exit 77 (skip) when the ONERA M6 domain is missing (a clone without ../shared/data/real)."""
 import json
 import os
@@ -152,6 +152,12 @@ def main():
         run(volgrid, "convert", w(src), w(dst), *extra)
         with open(w(src), "rb") as a, open(w(dst), "rb") as b:
             check(a.read() == b.read(), "%s written, read back and written again: identical" % src)
+    run(volgrid, "convert", w("mesh.node"), w("again.node"))
+    same = True
+    for ext in (".node", ".ele", ".face"):
+        with open(w("mesh" + ext), "rb") as a, open(w("again" + ext), "rb") as b:
+            same = same and a.read() == b.read()
+    check(same, "TetGen files written, read back and written again: identical")
     if case == "wing":
         # OBJ groups become named patches (a tet whose faces are in two `g` groups, one of them twice).
         with open(w("groups.obj"), "w") as f:
