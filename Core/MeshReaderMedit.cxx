@@ -62,11 +62,14 @@ Status readCells(Scanner& sc, int64_t count, int nv, int64_t numPoints, std::vec
 bool solverMeshReaderSupports(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
-  return ext == "mesh" || ext == "msh" || ext == "su2" || ext == "node" || ext == "ele" || ext == "face";
+  return ext == "mesh" || ext == "msh" || ext == "su2" || ext == "node" || ext == "ele" || ext == "face" ||
+    isOpenFoamCase(path);
 }
 
 Status readSolverMesh(const std::string& path, SolverMesh& mesh)
 {
+  if (isOpenFoamCase(path))
+    return readOpenFOAM(path, mesh);
   if (lowerExtension(path) == "mesh")
     return readMeditVolume(path, mesh);
   if (lowerExtension(path) == "msh")

@@ -125,8 +125,11 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
     return s;
   foamHeader(faces.stream(), "faceList", "faces", "");
   std::fprintf(faces.stream(), "%zu\n(\n", poly.faces.size());
-  for (const auto& f : poly.faces)
-    std::fprintf(faces.stream(), "3(%d %d %d)\n", f[0], f[1], f[2]);
+  for (const auto& f : poly.faces) // each loop from its smallest point id: independent of the tet's vertex order
+  {
+    const int k = f[0] < f[1] ? (f[0] < f[2] ? 0 : 2) : (f[1] < f[2] ? 1 : 2);
+    std::fprintf(faces.stream(), "3(%d %d %d)\n", f[k], f[(k + 1) % 3], f[(k + 2) % 3]);
+  }
   std::fprintf(faces.stream(), ")\n");
   if (!(s = faces.commit()).ok())
     return s;

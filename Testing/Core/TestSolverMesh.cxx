@@ -140,6 +140,18 @@ TEST(MeshWriterOpenFOAM, UpperTriangularOrderOutwardFacesPatchesByName)
   EXPECT_NE(boundary.find("wall_a\n    {\n        type            wall;"), std::string::npos) << boundary;
   EXPECT_NE(boundary.find("farfield\n    {\n        type            patch;"), std::string::npos);
   EXPECT_NE(boundary.find("nFaces          3;\n        startFace       4;"), std::string::npos);
+  // Read back: the same tets (from the faces) and the patches by name, in the boundary file's order.
+  SolverMesh r;
+  ASSERT_TRUE(readSolverMesh(dir, r).ok());
+  EXPECT_EQ(r.numberOfTets(), 2);
+  EXPECT_EQ(r.points, twoTets().points);
+  EXPECT_EQ(r.patchNames, (NameTable{ { 1, "wall_a" }, { 2, "farfield" } }));
+  EXPECT_EQ(r.trianglePatch, (std::vector<int32_t>{ 1, 1, 1, 2, 2, 2 }));
+  const std::string again = tempPath("foam-again");
+  std::filesystem::remove_all(again);
+  ASSERT_TRUE(writeSolverMesh(again, r, MeshFormat::OpenFOAM).ok());
+  for (const char* f : { "points", "faces", "owner", "neighbour", "boundary" })
+    EXPECT_EQ(readText(dir + "/constant/polyMesh/" + f), readText(again + "/constant/polyMesh/" + f)) << f;
   // An existing directory is refused; a bad word is refused before anything is written.
   EXPECT_FALSE(writeSolverMesh(dir, twoTets(), MeshFormat::OpenFOAM).ok());
   SolverMesh bad = twoTets();

@@ -2,7 +2,7 @@
 OpenFOAM case, each read back by a reader VolGrid did not write (meshio, gmsh's API, OpenFOAM's checkMesh),
 which must report the same points, tets and patch names with the same face counts; OpenFOAM's
 potentialFoam runs on the case; VolGrid Quality's non-orthogonality and skewness match checkMesh's; Medit,
-gmsh, SU2 and TetGen files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
+gmsh, SU2, TetGen and OpenFOAM files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
 Exit 77 (skip) when the ONERA M6 domain is missing (a clone without ../shared/data/real)."""
 import json
 import os
@@ -152,6 +152,12 @@ def main():
         run(volgrid, "convert", w(src), w(dst), *extra)
         with open(w(src), "rb") as a, open(w(dst), "rb") as b:
             check(a.read() == b.read(), "%s written, read back and written again: identical" % src)
+    run(volgrid, "convert", w("case"), w("case-again"), "--format", "openfoam")
+    same = True
+    for f in ("points", "faces", "owner", "neighbour", "boundary"):
+        with open(w("case/constant/polyMesh/" + f), "rb") as a, open(w("case-again/constant/polyMesh/" + f), "rb") as b:
+            same = same and a.read() == b.read()
+    check(same, "OpenFOAM polyMesh written, read back and written again: identical")
     run(volgrid, "convert", w("mesh.node"), w("again.node"))
     same = True
     for ext in (".node", ".ele", ".face"):
