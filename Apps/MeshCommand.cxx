@@ -256,7 +256,7 @@ int runMeshCommand(int argc, char** argv)
   const bool boundaryPreserved = boundary.meshValid() && boundary.boundaryEqualsInput();
 
   volgrid::SolverMesh solverMesh; // named patches; --patch applied to result.boundaryPatch too
-  if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh))
+  if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh, !vtkOutput))
     return 1;
   vtkNew<vtkUnstructuredGrid> volume;
   vtkNew<vtkPolyData> boundarySurface;

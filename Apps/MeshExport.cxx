@@ -96,7 +96,7 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
 }
 
 bool solverMeshFromResult(const char* command, const ExportRequest& request, const SurfaceMesh& surface,
-  MesherResult& result, SolverMesh& mesh)
+  MesherResult& result, SolverMesh& mesh, bool withGeometry)
 {
   mesh.patchNames = surface.hasPatchIds() ? surface.patchNames : NameTable();
   if (!request.patches.empty())
@@ -108,6 +108,8 @@ bool solverMeshFromResult(const char* command, const ExportRequest& request, con
       return false;
     }
   }
+  if (!withGeometry)
+    return true;
   mesh.points = result.points;
   mesh.tets = result.tets;
   mesh.tetRegion = result.tetRegion;

@@ -36,9 +36,9 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
 
 // The mesher's output as a SolverMesh: patch names from the input surface, the user's --patch grouping
 // applied (to `result`'s boundaryPatch as well, so the VTK outputs agree). False (message printed) on
-// a bad assignment.
+// a bad assignment. Without `withGeometry` only the names are filled (the VTK outputs need no copy).
 bool solverMeshFromResult(const char* command, const ExportRequest& request, const SurfaceMesh& surface,
-  MesherResult& result, SolverMesh& mesh);
+  MesherResult& result, SolverMesh& mesh, bool withGeometry);
 
 // Writes `mesh` in `format`; prints "wrote FORMAT PATH: points, tets, patch (faces) ..." to stdout unless
 // quiet. False (message naming the path and reason printed) on failure.
