@@ -1,6 +1,7 @@
 // volgrid mesh: boundary-conforming tetrahedral mesh of the volume enclosed by closed surfaces.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "MeshExport.h"
 #include "SurfaceFile.h"
 #include "VolGridConversion.h"
 #include "XmlDataFiles.h"
@@ -26,7 +27,7 @@ bool readPointsWithArray(const char* command, const std::string& path, const std
 namespace
 {
 const char* kUsage =
-  "usage: volgrid mesh SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check]\n"
+  "usage: volgrid mesh SURFACE OUT.vtu|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
   "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [density and quality options]\n"
   "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
   "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region);\n"
@@ -159,6 +160,7 @@ bool parseArguments(int argc, char** argv, Arguments& args)
     else if (a == "--help" || a == "-h")
     {
       std::fputs(kUsage, stdout);
+      std::fputs(volgrid::cli::kExportUsage, stdout);
       std::exit(0);
     }
     else if (!a.empty() && a[0] == '-')
@@ -204,8 +206,15 @@ bool write(const std::string& path, vtkDataSet* data)
 
 int runMeshCommand(int argc, char** argv)
 {
+  volgrid::cli::ExportRequest exportRequest; // --format, --patch, --patch-type (MeshExport.h)
+  if (!volgrid::cli::takeExportOptions("mesh", argc, argv, exportRequest))
+    return 2;
   Arguments args;
   if (!parseArguments(argc, argv, args))
+    return 2;
+  volgrid::MeshFormat format = volgrid::MeshFormat::Unknown;
+  bool vtkOutput = true;
+  if (!volgrid::cli::chooseFormat("mesh", args.out, exportRequest, format, vtkOutput))
     return 2;
 
   volgrid::SurfaceMesh surface;
@@ -240,10 +249,16 @@ int runMeshCommand(int argc, char** argv)
     result.points, result.numInputPoints, result.tets, inputTriangles, result.stats.enclosedVolume);
   const bool boundaryPreserved = boundary.meshValid() && boundary.boundaryEqualsInput();
 
+  volgrid::SolverMesh solverMesh; // named patches; --patch applied to result.boundaryPatch too
+  if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh, !vtkOutput))
+    return 1;
   vtkNew<vtkUnstructuredGrid> volume;
   vtkNew<vtkPolyData> boundarySurface;
   VolGridFillFromMesherResult(result, volume, boundarySurface);
-  if (!write(args.out, volume.Get()))
+  VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, volume, boundarySurface);
+  if (!vtkOutput && !volgrid::cli::writeSolverOutput("mesh", args.out, format, solverMesh, exportRequest, args.json))
+    return 1;
+  if (vtkOutput && !write(args.out, volume.Get()))
     return 1;
   if (!args.boundaryOut.empty() && !write(args.boundaryOut, boundarySurface.Get()))
     return 1;

@@ -19,9 +19,11 @@
 #include "vtkStringArray.h"
 
 #include <cmath>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -116,6 +118,32 @@ const char* kJsonCounts[][2] = {
   { "misoriented_shells", "MisorientedShells" },
   { "enclosure_patch_id", "EnclosurePatchId" },
 };
+} // namespace
+
+namespace
+{
+// "dir/wing.stl.gz" -> "wing": a patch name (an OpenFOAM word: other characters become '_').
+std::string fileStem(const std::string& path)
+{
+  std::string stem = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  stem = stem.substr(0, stem.find('.'));
+  for (char& c : stem)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
+      c = '_';
+  return stem.empty() ? "surface" : stem;
+}
+
+// One patch per input file unless the file has its own (STL solids, refs, groups): a file with a single
+// unnamed patch is named after the file, several unnamed ones "<stem>_<id>".
+void nameFilePatches(const std::string& file, volgrid::SurfaceMesh& mesh)
+{
+  if (!mesh.hasPatchIds())
+    mesh.patchIds.assign(static_cast<size_t>(mesh.numberOfTriangles()), 0);
+  const std::set<int32_t> ids(mesh.patchIds.begin(), mesh.patchIds.end());
+  for (int32_t id : ids)
+    if (!mesh.patchNames.count(id))
+      mesh.patchNames[id] = ids.size() == 1 ? fileStem(file) : fileStem(file) + "_" + std::to_string(id);
+}
 } // namespace
 
 int runPrepCommand(int argc, char** argv)
@@ -246,6 +274,7 @@ int runPrepCommand(int argc, char** argv)
     }
     if (!json)
       std::printf("read %s: %s\n", file.c_str(), info.c_str());
+    nameFilePatches(file, mesh);
     vtkNew<vtkPolyData> part;
     VolGridSurfaceMeshToPolyData(mesh, part, "PatchId");
     prep->AddInputData(part);

@@ -2,6 +2,8 @@
 // Runs vtkVolGridQuality on a volume grid (.vtu, .vtk) or a surface (.vtp, .vtk, .stl, .obj, .ply) and
 // prints a summary table, or with --json one JSON line. Errors go to stderr with a non-zero exit code:
 // 2 for bad arguments, 1 for unreadable input.
+#include "MeshReader.h"
+#include "VolGridConversion.h"
 #include "Commands.h"
 #include "XmlDataFiles.h"
 
@@ -58,6 +60,19 @@ vtkSmartPointer<vtkDataSet> readMesh(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
   vtkSmartPointer<vtkDataSet> data;
+  if (volgrid::solverMeshReaderSupports(path)) // a solver's tet mesh (.mesh): Core's reader
+  {
+    volgrid::SolverMesh solverMesh;
+    const volgrid::Status s = volgrid::readSolverMesh(path, solverMesh);
+    if (!s.ok())
+    {
+      std::fprintf(stderr, "volgrid quality: %s\n", s.message.c_str());
+      return nullptr;
+    }
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    VolGridFillFromSolverMesh(solverMesh, grid, nullptr);
+    return grid;
+  }
   if (volgrid::cli::isXmlDataExtension(ext))
   {
     std::string ignored; // the message below names the file
@@ -149,9 +164,10 @@ std::string jsonString(const std::string& s)
 }
 
 const char* kVolumeMetrics[] = { "AspectRatio", "MinDihedralAngle", "MaxDihedralAngle", "MinSolidAngle", "Volume",
-  "VolumeGradient", "RadiusEdgeRatio", "RadiusRatio" };
+  "VolumeGradient", "RadiusEdgeRatio", "RadiusRatio", "NonOrthogonality", "Skewness", "VolumeRatio" };
 const char* kSurfaceMetrics[] = { "AspectRatio", "Area", "MinAngle", "MaxAngle" };
-const char* kVolumeFigures[] = { "NumberOfTetrahedra", "SkippedCells", "TotalVolume" };
+const char* kVolumeFigures[] = { "NumberOfTetrahedra", "SkippedCells", "TotalVolume", "MaxNonOrthogonality",
+  "AverageNonOrthogonality", "SevereNonOrthogonalFaces", "MaxSkewness", "HighlySkewFaces", "MaxVolumeRatio" };
 const char* kSurfaceFigures[] = { "NumberOfElements", "SurfaceArea", "EnclosedVolume", "BoundaryEdges",
   "BoundaryLoops", "NonManifoldEdges", "Shells", "SkippedCells" };
 } // namespace
@@ -184,7 +200,7 @@ int runQualityCommand(int argc, char** argv)
       if (!v)
         return 2;
       metric = -1;
-      for (int m = vtkVolGridQuality::ASPECT_RATIO; m <= vtkVolGridQuality::MAX_ANGLE; ++m)
+      for (int m = vtkVolGridQuality::ASPECT_RATIO; m <= vtkVolGridQuality::VOLUME_RATIO; ++m)
         if (std::strcmp(v, vtkVolGridQuality::GetMetricName(m)) == 0)
           metric = m;
       if (metric < 0)

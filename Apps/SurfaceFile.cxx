@@ -1,4 +1,5 @@
 #include "SurfaceFile.h"
+#include "ObjGroups.h"
 
 #include "VolGridSurfaceConversion.h"
 #include "XmlDataFiles.h"
@@ -86,6 +87,7 @@ Status readWithVtk(const std::string& path, const std::string& readPath, const s
     vtkNew<vtkOBJReader> r;
     r->SetFileName(readPath.c_str());
     r->Update();
+    objGroupsToPatches(readPath, r->GetOutput()); // `g` groups become named patches
     data = r->GetOutput();
     format = "OBJ";
   }

@@ -20,12 +20,14 @@ const SubCommand kCommands[] = {
   { "delaunay", runDelaunayCommand,
     "INPUT.node | --random N [--seed S]  [--check] [--json] [--out FILE.vtu]: Delaunay tetrahedralization" },
   { "mesh", runMeshCommand,
-    "SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check] [--alpha A ...]: boundary-conforming volume mesh" },
+    "SURFACE OUT.vtu|.msh|.su2|.mesh [--format openfoam] [--patch NAME=ID,...] [--json] [--boundary OUT.vtp] [--check] [--alpha A ...]: boundary-conforming volume mesh" },
   { "refine", runRefineCommand,
     "MESH.vtu OUT.vtu --size-array NAME [--alpha A] [--json]: refine a tet mesh to a target size (adaptivity)" },
   { "quality", runQualityCommand, "MESH.vtu [--json] [--bins N]: volume or surface grid quality summary" },
   { "prep", runPrepCommand,
     "IN... OUT [--enclosure box|sphere|...] [--enclosure-scale S] [--json]: repair, orient, enclose surfaces" },
+  { "convert", runConvertCommand,
+    "IN OUT [--format NAME] [--patch NAME=ID,...]: a tet mesh to gmsh, SU2, OpenFOAM, Medit or TetGen" },
   { "check", runCheckCommand, "SURFACE [--json]: surface diagnostics (exit 0 clean, 1 defects)" },
 };
 

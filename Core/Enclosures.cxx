@@ -262,6 +262,10 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
         std::to_string(reference) + " (more than ~20 M triangles)");
   }
   const int32_t patch = o.patchId;
+  if (patch >= 0)
+  {
+    m.patchNames[patch] = "farfield"; // a generated enclosure is the far field of an external flow
+  }
   const double* c = o.center;
   const double* d = o.dimensions;
   switch (o.shape)

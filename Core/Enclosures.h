@@ -31,7 +31,7 @@ struct EnclosureOptions
   int axis = 2;
   bool domeNegative = false;
   double targetEdgeLength = 0; // 0: about a sixteenth of the primitive's size
-  int32_t patchId = -1;        // stored on every triangle when >= 0
+  int32_t patchId = -1;        // stored on every triangle when >= 0 (and named "farfield")
 };
 
 // Options sized by a factor of a bounding box: the primitive is centred on the box and, for

@@ -29,6 +29,46 @@ Status skipSection(Scanner& sc, std::string_view name)
   }
   return sc.error("section " + std::string(name) + " is not closed by " + endTag);
 }
+
+// $PhysicalNames: "dim tag \"name\"" lines; the names of 2D groups become patch names (the reader uses
+// the physical tag as the patch id, and VolGrid's writer gives each entity its physical group's tag).
+Status readPhysicalNames(Scanner& sc, SurfaceMesh& mesh)
+{
+  int64_t count = 0;
+  Status s = sc.readCount(count, "the physical name count", 1 << 24);
+  std::vector<std::string_view> toks;
+  for (int64_t k = 0; k < count && s.ok(); ++k)
+  {
+    int64_t dim = 0, tag = 0;
+    if (!sc.nextLine(toks) || toks.size() < 3 || !parseInt(toks[0], dim) || !parseInt(toks[1], tag))
+    {
+      return sc.error("bad $PhysicalNames line");
+    }
+    std::string name;
+    for (size_t t = 2; t < toks.size(); ++t)
+    {
+      name += (t > 2 ? " " : "") + std::string(toks[t]);
+    }
+    if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+    {
+      name = name.substr(1, name.size() - 2);
+    }
+    if (dim == 2)
+    {
+      mesh.patchNames[static_cast<int32_t>(tag)] = name;
+    }
+  }
+  if (!s.ok())
+  {
+    return s;
+  }
+  std::string_view end;
+  if (!sc.next(end) || end != "$EndPhysicalNames")
+  {
+    return sc.error("$PhysicalNames is not closed by $EndPhysicalNames");
+  }
+  return Status::success();
+}
 } // namespace
 
 Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
@@ -104,6 +144,15 @@ Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* inf
       info.format = "gmsh " + std::string(version >= 4.0 ? (version >= 4.05 ? "4.1" : "4.0") : "2");
       haveFormat = true;
       s = skipSection(sc, tok);
+      if (!s.ok())
+      {
+        return s;
+      }
+      continue;
+    }
+    if (tok == "$PhysicalNames")
+    {
+      s = readPhysicalNames(sc, mesh);
       if (!s.ok())
       {
         return s;

@@ -89,7 +89,11 @@ Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
         {
           ++solid;
           inSolid = true;
-          sc.skipLine(); // the solid's name
+          std::string name; // the solid's name: the rest of the line
+          while (sc.nextOnLine(tok))
+            name += (name.empty() ? "" : " ") + std::string(tok);
+          if (!name.empty())
+            mesh.patchNames[solid] = name;
           continue;
         }
         if (tok == "facet" && solid >= 0)

@@ -53,6 +53,7 @@ void SurfaceMesh::append(const SurfaceMesh& other)
   {
     triangles.push_back(v + shift);
   }
+  patchNames.insert(other.patchNames.begin(), other.patchNames.end());
 }
 
 void SurfaceMesh::clear()
@@ -60,6 +61,7 @@ void SurfaceMesh::clear()
   points.clear();
   triangles.clear();
   patchIds.clear();
+  patchNames.clear();
 }
 
 double BoundingBox::diagonal() const

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace volgrid
@@ -15,6 +17,7 @@ struct SurfaceMesh
   std::vector<double> points;    // 3 * numberOfPoints()
   std::vector<int32_t> triangles; // 3 * numberOfTriangles()
   std::vector<int32_t> patchIds;  // empty, or one per triangle
+  std::map<int32_t, std::string> patchNames; // patch id -> name (STL solid, gmsh physical name, ...)
 
   int32_t numberOfPoints() const { return static_cast<int32_t>(points.size() / 3); }
   int32_t numberOfTriangles() const { return static_cast<int32_t>(triangles.size() / 3); }
@@ -25,7 +28,8 @@ struct SurfaceMesh
   int32_t addPoint(double x, double y, double z);
   // patch is stored only when the mesh has patch ids, or when patch != -1 (then earlier triangles get -1).
   int32_t addTriangle(int32_t a, int32_t b, int32_t c, int32_t patch = -1);
-  // Appends another mesh (point ids shifted). Patch ids are kept when either has them.
+  // Appends another mesh (point ids shifted). Patch ids are kept when either has them; names of ids
+  // this mesh does not name yet are taken from `other`.
   void append(const SurfaceMesh& other);
   void clear();
 };

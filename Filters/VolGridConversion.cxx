@@ -12,6 +12,10 @@
 
 #include "Mesher.h"
 #include "TetMesh.h"
+#include "SolverMesh.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkStringArray.h"
 
 void VolGridFillUnstructuredGrid(
   const volgrid::TetMesh& mesh, const std::vector<int32_t>& keptVertices, vtkUnstructuredGrid* grid)
@@ -102,4 +106,53 @@ void VolGridFillFromMesherResult(
     boundary->GetCellData()->RemoveArray("PatchId");
     boundary->GetCellData()->AddArray(intArray("PatchId", result.boundaryPatch));
   }
+}
+
+void VolGridSetLabelNames(vtkDataObject* data, const char* arrayName, const std::vector<int32_t>& labels,
+  const std::map<int32_t, std::string>& names, const char* prefix)
+{
+  const std::vector<int32_t> distinct = volgrid::distinctLabels(labels);
+  vtkNew<vtkStringArray> array;
+  array->SetName(arrayName);
+  array->SetNumberOfValues(distinct.empty() || distinct.back() < 0 ? 0 : distinct.back() + 1);
+  // Every entry gets a name: VTK's XML reader crashes on empty strings in a string array.
+  for (vtkIdType label = 0; label < array->GetNumberOfValues(); ++label)
+    array->SetValue(label, volgrid::labelName(names, static_cast<int32_t>(label), prefix));
+  data->GetFieldData()->RemoveArray(arrayName);
+  data->GetFieldData()->AddArray(array);
+}
+
+void VolGridSetPatchAndRegionNames(const volgrid::MesherResult& result,
+  const std::map<int32_t, std::string>& patchNames, const std::map<int32_t, std::string>& regionNames,
+  vtkUnstructuredGrid* volume, vtkPolyData* boundary)
+{
+  VolGridSetLabelNames(volume, "PatchNames", result.boundaryPatch, patchNames, "patch");
+  VolGridSetLabelNames(volume, "RegionNames", result.tetRegion, regionNames, "region");
+  if (boundary)
+    VolGridSetLabelNames(boundary, "PatchNames", result.boundaryPatch, patchNames, "patch");
+}
+
+std::map<int32_t, std::string> VolGridReadLabelNames(vtkDataObject* data, const char* arrayName)
+{
+  std::map<int32_t, std::string> names;
+  vtkStringArray* array =
+    data ? vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(arrayName)) : nullptr;
+  for (vtkIdType i = 0; array && i < array->GetNumberOfValues(); ++i)
+    if (!array->GetValue(i).empty())
+      names[static_cast<int32_t>(i)] = array->GetValue(i);
+  return names;
+}
+
+void VolGridFillFromSolverMesh(const volgrid::SolverMesh& mesh, vtkUnstructuredGrid* volume, vtkPolyData* boundary)
+{
+  volgrid::MesherResult result; // the same arrays under the mesher's names
+  result.points = mesh.points;
+  result.tets = mesh.tets;
+  result.tetRegion = mesh.tetRegion;
+  result.tetRegion.resize(mesh.tets.size() / 4, 0);
+  result.boundaryTriangles = mesh.triangles;
+  result.boundaryPatch = mesh.trianglePatch;
+  result.boundaryPatch.resize(mesh.triangles.size() / 3, 0);
+  VolGridFillFromMesherResult(result, volume, boundary);
+  VolGridSetPatchAndRegionNames(result, mesh.patchNames, mesh.regionNames, volume, boundary);
 }

@@ -6,14 +6,18 @@
 #include "vtkVolGridFiltersModule.h" // for export macro
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
+class vtkDataObject;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 namespace volgrid
 {
 class TetMesh;
 struct MesherResult;
+struct SolverMesh;
 }
 
 // Fills `grid` with the finite tets of `mesh` (VTK_TETRA cells, same vertex order, so positive volume)
@@ -27,5 +31,27 @@ VTKVOLGRIDFILTERS_EXPORT void VolGridFillUnstructuredGrid(
 // named arrays; other arrays are left to the caller.
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromMesherResult(
   const volgrid::MesherResult& result, vtkUnstructuredGrid* volume, vtkPolyData* boundary);
+
+// Adds the field-data string array `arrayName` to `data`: entry L (0..max label in `labels`) is the name
+// of label L (its name in `names`, or "<prefix>L"); negative labels have no entry. Replaces an array of
+// that name.
+VTKVOLGRIDFILTERS_EXPORT void VolGridSetLabelNames(vtkDataObject* data, const char* arrayName,
+  const std::vector<int32_t>& labels, const std::map<int32_t, std::string>& names, const char* prefix);
+
+// The names in a field-data string array written by VolGridSetLabelNames (entry L names label L; a
+// missing array gives no names).
+VTKVOLGRIDFILTERS_EXPORT std::map<int32_t, std::string> VolGridReadLabelNames(
+  vtkDataObject* data, const char* arrayName);
+
+// PatchNames (of result.boundaryPatch) on both outputs and RegionNames (of result.tetRegion) on the
+// volume; `boundary` may be null.
+VTKVOLGRIDFILTERS_EXPORT void VolGridSetPatchAndRegionNames(const volgrid::MesherResult& result,
+  const std::map<int32_t, std::string>& patchNames, const std::map<int32_t, std::string>& regionNames,
+  vtkUnstructuredGrid* volume, vtkPolyData* boundary);
+
+// A solver's mesh (Core/MeshReader.h) as VTK data: `volume` gets the tets with Region, PatchNames and
+// RegionNames; `boundary` (may be null) the boundary triangles with PatchId and PatchNames.
+VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromSolverMesh(
+  const volgrid::SolverMesh& mesh, vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 
 #endif

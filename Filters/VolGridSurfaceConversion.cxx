@@ -1,4 +1,5 @@
 #include "VolGridSurfaceConversion.h"
+#include "VolGridConversion.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -143,6 +144,7 @@ bool VolGridAppendSurface(vtkDataSet* input, volgrid::SurfaceMesh& mesh, const c
 bool VolGridPolyDataToSurfaceMesh(vtkDataSet* input, volgrid::SurfaceMesh& mesh, VolGridSurfaceConversionInfo* info)
 {
   mesh.clear();
+  mesh.patchNames = VolGridReadLabelNames(input, "PatchNames");
   return VolGridAppendSurface(input, mesh, "PatchId", 0, -1, info);
 }
 
@@ -185,5 +187,6 @@ void VolGridSurfaceMeshToPolyData(const volgrid::SurfaceMesh& mesh, vtkPolyData*
       patches->SetValue(t, mesh.patchIds[static_cast<size_t>(t)]);
     }
     output->GetCellData()->AddArray(patches);
+    VolGridSetLabelNames(output, "PatchNames", mesh.patchIds, mesh.patchNames, "patch");
   }
 }

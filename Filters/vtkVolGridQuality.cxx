@@ -2,6 +2,7 @@
 #include "vtkVolGridQuality.h"
 
 #include "Quality.h"
+#include "CfdQuality.h"
 #include "QualityStatistics.h"
 
 #include "vtkCellArray.h"
@@ -59,6 +60,9 @@ const MetricInfo kMetrics[] = {
   { vtkVolGridQuality::AREA, "Area", vq::Worst::Smallest },
   { vtkVolGridQuality::MIN_ANGLE, "MinAngle", vq::Worst::Smallest },
   { vtkVolGridQuality::MAX_ANGLE, "MaxAngle", vq::Worst::Largest },
+  { vtkVolGridQuality::NON_ORTHOGONALITY, "NonOrthogonality", vq::Worst::Largest },
+  { vtkVolGridQuality::SKEWNESS, "Skewness", vq::Worst::Largest },
+  { vtkVolGridQuality::VOLUME_RATIO, "VolumeRatio", vq::Worst::Largest },
 };
 
 // The selected metric, or its counterpart on the other kind of grid (see the header).
@@ -91,6 +95,9 @@ int effectiveMetric(int metric, bool volume)
       return Q::AREA;
     case Q::RADIUS_EDGE_RATIO:
     case Q::RADIUS_RATIO:
+    case Q::NON_ORTHOGONALITY:
+    case Q::SKEWNESS:
+    case Q::VOLUME_RATIO:
       return Q::ASPECT_RATIO;
     default:
       return metric;
@@ -239,6 +246,9 @@ struct vtkVolGridQuality::Internals
 
   static bool Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input,
     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
+  // The CFD face metrics of a pure tet grid (Core/CfdQuality.h): three cell arrays and six figures.
+  static void Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
+    std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
   static bool Surface(vtkVolGridQuality* self, vtkPolyData* input,
     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
 };
@@ -354,7 +364,40 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
   }
   addScalar(summary, "NumberOfTetrahedra", static_cast<double>(numTets));
   addScalar(summary, "SkippedCells", static_cast<double>(self->NumberOfSkippedCells));
+  if (numTets == numCells && numCells > 0)
+    Cfd(self, input, points, arrays, summary);
   return true;
+}
+
+void vtkVolGridQuality::Internals::Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
+  std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
+{
+  self->SetProgressText("CFD face metrics");
+  const vtkIdType numCells = input->GetNumberOfCells();
+  std::vector<double> xyz(points, points + 3 * input->GetNumberOfPoints());
+  std::vector<int32_t> tets(static_cast<size_t>(4 * numCells));
+  for (vtkIdType c = 0; c < numCells; ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    input->GetCellPoints(c, npts, pts);
+    std::copy(pts, pts + 4, tets.begin() + 4 * c);
+  }
+  vq::CfdCellMetrics cells;
+  const vq::CfdSummary s = vq::cfdMetrics(xyz, tets, &cells);
+  const std::pair<const char*, std::vector<double>*> columns[] = { { "NonOrthogonality", &cells.nonOrthogonality },
+    { "Skewness", &cells.skewness }, { "VolumeRatio", &cells.volumeRatio } };
+  for (const auto& column : columns)
+  {
+    arrays.push_back(newCellArray(column.first, numCells));
+    std::copy(column.second->begin(), column.second->end(), arrays.back()->GetPointer(0));
+  }
+  addScalar(summary, "MaxNonOrthogonality", s.maxNonOrthogonality);
+  addScalar(summary, "AverageNonOrthogonality", s.averageNonOrthogonality);
+  addScalar(summary, "SevereNonOrthogonalFaces", static_cast<double>(s.severelyNonOrthogonalFaces));
+  addScalar(summary, "MaxSkewness", s.maxSkewness);
+  addScalar(summary, "HighlySkewFaces", static_cast<double>(s.highlySkewFaces));
+  addScalar(summary, "MaxVolumeRatio", s.maxVolumeRatio);
 }
 
 bool vtkVolGridQuality::Internals::Surface(vtkVolGridQuality* self, vtkPolyData* input,
@@ -447,7 +490,7 @@ vtkVolGridQuality::vtkVolGridQuality()
 
 const char* vtkVolGridQuality::GetMetricName(int metric)
 {
-  return metric >= ASPECT_RATIO && metric <= MAX_ANGLE ? kMetrics[metric].name : nullptr;
+  return metric >= ASPECT_RATIO && metric <= VOLUME_RATIO ? kMetrics[metric].name : nullptr;
 }
 
 int vtkVolGridQuality::FillInputPortInformation(int, vtkInformation* info)
@@ -556,7 +599,10 @@ bool vtkVolGridQuality::Execute(vtkDataSet* input, vtkDataSet* output, vtkTable*
   // Statistics, the Quality copy and the histogram table.
   this->SetProgressText("Statistics");
   const vtkIdType numCells = input->GetNumberOfCells();
-  const int selected = effectiveMetric(this->Metric, volume);
+  int selected = effectiveMetric(this->Metric, volume);
+  if (volume && selected >= NON_ORTHOGONALITY && arrays.size() <= static_cast<size_t>(RADIUS_RATIO) + 1)
+    selected = MAX_DIHEDRAL_ANGLE; // no CFD metrics: the grid is not made of tets only
+
   vtkCellData* cd = output->GetCellData();
   auto bin = vtkSmartPointer<vtkIntArray>::New();
   bin->SetName("Bin");

@@ -8,11 +8,15 @@
  * Output port 0: the input with per-cell arrays added.
  *  - Volume grids: AspectRatio, MinDihedralAngle, MaxDihedralAngle (degrees), MinSolidAngle (steradians),
  *    Volume (signed: inverted tets are negative), VolumeGradient (largest |volume difference| with a
- *    face neighbour), RadiusEdgeRatio, RadiusRatio (vtkMeshQuality's tet radius ratio).
+ *    face neighbour), RadiusEdgeRatio, RadiusRatio (vtkMeshQuality's tet radius ratio); for grids of
+ *    tets only, the CFD metrics of OpenFOAM's checkMesh (Core/CfdQuality.h), each the largest over the
+ *    cell's faces: NonOrthogonality (degrees), Skewness, VolumeRatio (with the face neighbours).
  *  - Surface grids: AspectRatio, Area, MinAngle, MaxAngle (degrees).
  *  - Quality: a copy of the selected metric (see SetMetric), so that ParaView colours by it at once.
  *  Field data: per metric a 6-component array "<Metric>Statistics" (Count, Min, Max, Mean, StdDev,
- *  WorstCell), and the grid-wide figures (NumberOfTetrahedra, SkippedCells, TotalVolume; or for
+ *  WorstCell), and the grid-wide figures (NumberOfTetrahedra, SkippedCells, TotalVolume, and for tet
+ *  grids checkMesh's face figures MaxNonOrthogonality, AverageNonOrthogonality,
+ *  SevereNonOrthogonalFaces (> 70 deg), MaxSkewness, HighlySkewFaces (> 4), MaxVolumeRatio; or for
  *  surfaces NumberOfElements, SurfaceArea, EnclosedVolume, BoundaryEdges, BoundaryLoops,
  *  NonManifoldEdges, Shells, SkippedCells).
  *
@@ -51,7 +55,10 @@ public:
     RADIUS_RATIO = 7,
     AREA = 8,
     MIN_ANGLE = 9,
-    MAX_ANGLE = 10
+    MAX_ANGLE = 10,
+    NON_ORTHOGONALITY = 11, // CFD metrics of pure tet grids, as OpenFOAM's checkMesh (Core/CfdQuality.h)
+    SKEWNESS = 12,
+    VOLUME_RATIO = 13
   };
 
   ///@{
@@ -59,9 +66,10 @@ public:
    * The metric copied into the "Quality" array (default MIN_DIHEDRAL_ANGLE). A volume metric selected
    * for a surface uses its surface counterpart and vice versa: dihedral and solid angles <-> triangle
    * angles (min to MinAngle, max to MaxAngle), Volume and VolumeGradient <-> Area, RadiusEdgeRatio and
-   * RadiusRatio -> AspectRatio.
+   * RadiusRatio -> AspectRatio. The CFD metrics fall back to MaxDihedralAngle on grids that are not
+   * pure tets, AspectRatio on surfaces.
    */
-  vtkSetClampMacro(Metric, int, ASPECT_RATIO, MAX_ANGLE);
+  vtkSetClampMacro(Metric, int, ASPECT_RATIO, VOLUME_RATIO);
   vtkGetMacro(Metric, int);
   ///@}
 

@@ -1,6 +1,7 @@
 // vtkVolGridSurfacePrep: a thin adapter from VTK surfaces to Core/SurfaceRepair.h, Core/SurfaceChecks.h and
 // Core/Enclosures.h.
 #include "vtkVolGridSurfacePrep.h"
+#include "VolGridConversion.h"
 
 #include "VolGridFilterProgress.h"
 #include "VolGridSurfaceConversion.h"
@@ -229,6 +230,12 @@ int vtkVolGridSurfacePrep::RequestData(
       ++parts;
       return;
     }
+    // Names: the part's PatchNames (shifted like its ids), else "part<k>" for a part without patches.
+    for (const auto& name : VolGridReadLabelNames(part, "PatchNames"))
+      if (hasPatchArray)
+        mesh.patchNames[name.first + nextPatch] = name.second;
+    if (!hasPatchArray)
+      mesh.patchNames[nextPatch] = "part" + std::to_string(parts);
     int32_t maxPatch = nextPatch;
     if (hasPatchArray)
     {

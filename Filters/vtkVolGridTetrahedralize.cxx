@@ -1,5 +1,7 @@
 #include "vtkVolGridTetrahedralize.h"
 
+#include "PatchNames.h"
+
 #include "VolGridConversion.h"
 #include "VolGridFilterProgress.h"
 #include "VolGridSurfaceConversion.h"
@@ -49,6 +51,7 @@ vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
 vtkVolGridTetrahedralize::~vtkVolGridTetrahedralize()
 {
   this->SetSourceSizeArray(nullptr);
+  this->SetPatchAssignment(nullptr);
 }
 
 void vtkVolGridTetrahedralize::SetSourceConnection(vtkAlgorithmOutput* output)
@@ -203,7 +206,21 @@ int vtkVolGridTetrahedralize::MeshSurface(
     vtkWarningMacro(<< warning);
   }
 
+  std::map<int32_t, std::string> patchNames = VolGridReadLabelNames(input, "PatchNames");
+  if (this->PatchAssignment && *this->PatchAssignment)
+  {
+    volgrid::PatchAssignment assignment;
+    volgrid::Status s = volgrid::parsePatchAssignment(this->PatchAssignment, assignment);
+    if (s.ok())
+      s = volgrid::applyPatchAssignment(assignment, result.boundaryPatch, patchNames);
+    if (!s.ok())
+    {
+      vtkErrorMacro(<< "VolGrid Tetrahedralize: PatchAssignment: " << s.message);
+      return 0;
+    }
+  }
   VolGridFillFromMesherResult(result, output, boundary);
+  VolGridSetPatchAndRegionNames(result, patchNames, VolGridReadLabelNames(input, "RegionNames"), output, boundary);
   const vtkIdType numPoints = output->GetNumberOfPoints();
 
   // Point data of the input points (the first input point of each merged location); added points get
@@ -335,6 +352,7 @@ void vtkVolGridTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InputMode: " << this->InputMode << "\n";
   os << indent << "RegionRule: " << this->RegionRule << "\n";
   os << indent << "AllowSteinerPoints: " << this->AllowSteinerPoints << "\n";
+  os << indent << "PatchAssignment: " << (this->PatchAssignment ? this->PatchAssignment : "(none)") << "\n";
   os << indent << "SpatialSort: " << this->SpatialSort << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "CheckOutput: " << this->CheckOutput << "\n";

@@ -185,6 +185,16 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Boundary patches: names and groups of the input's PatchId values, "NAME=ID,ID,NAME=ID,..." as the
+   * CLI's --patch (Core/PatchNames.h): group k gets PatchId k + 1 and its name, ids not listed keep their
+   * own patch after the groups. Empty (default): the input's PatchId and PatchNames are kept as they are.
+   */
+  vtkSetStringMacro(PatchAssignment);
+  vtkGetStringMacro(PatchAssignment);
+  ///@}
+
+  ///@{
   /** Sizing: interpolate SourceSizeArray in space as a sizing field. Default off. */
   vtkSetMacro(SizingFromSources, bool);
   vtkGetMacro(SizingFromSources, bool);
@@ -249,6 +259,7 @@ protected:
   double MaxVolume = 0;
   bool ClusterSourcePoints = true;
   char* SourceSizeArray = nullptr;
+  char* PatchAssignment = nullptr;
   bool SizingFromSources = false;
   bool Optimize = true;
   double TargetMinDihedral = 18;

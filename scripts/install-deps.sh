@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages VolGrid needs, only those missing (idempotent, quiet when all are there).
 #   scripts/install-deps.sh build   what `make build` needs: compilers, CMake, ParaView's SDK, GoogleTest
-#   scripts/install-deps.sh test    + what the tests compare against (TetGen, CGAL)
+#   scripts/install-deps.sh test    + what the tests compare against (TetGen, CGAL) and the independent
+#                                   readers of the solver formats (gmsh, meshio, OpenFOAM)
 #   scripts/install-deps.sh bench   + what the benchmarks compare against
 set -euo pipefail
 level="${1:-build}"
@@ -14,7 +15,7 @@ packages=(build-essential cmake pkg-config libgtest-dev
   zlib1g-dev)
 case "$level" in
   build) ;;
-  test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev) ;;
+  test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev gmsh python3-gmsh python3-meshio openfoam) ;;
   bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac

@@ -1,0 +1,145 @@
+// Export options, patch renaming and solver-format output for the CLI (see MeshExport.h).
+#include "MeshExport.h"
+
+#include "Mesher.h"
+#include "SurfaceFile.h"
+#include "SurfaceMesh.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace volgrid
+{
+namespace cli
+{
+const char* const kExportUsage =
+  "Solver output (by OUT's extension: .msh gmsh 4.1, .su2, .mesh Medit, .node/.ele/.face TetGen;\n"
+  ".vtu VTK):\n"
+  "  --format NAME        gmsh | gmsh22 | su2 | openfoam (OUT is a new case directory: OUT/constant/polyMesh)\n"
+  "                       | medit | tetgen | vtu, when the extension does not say it\n"
+  "  --patch NAME=ID,...  names boundary patches and groups input patch ids under a name, e.g.\n"
+  "                       --patch farfield=1,symmetry=2,wing=3,4,5 (new PatchId 1, 2, 3 in that order;\n"
+  "                       ids not listed keep their own patch after these)\n"
+  "  --patch-type NAME=TYPE  OpenFOAM patch type (default: symmetryPlane for names with 'symmetry',\n"
+  "                       patch for 'farfield'/'inlet'/'outlet', wall otherwise)\n";
+
+bool takeExportOptions(const char* command, int& argc, char** argv, ExportRequest& request)
+{
+  int kept = 1;
+  for (int i = 1; i < argc; ++i)
+  {
+    const bool format = std::strcmp(argv[i], "--format") == 0;
+    const bool patch = std::strcmp(argv[i], "--patch") == 0;
+    const bool type = std::strcmp(argv[i], "--patch-type") == 0;
+    if (!format && !patch && !type)
+    {
+      argv[kept++] = argv[i];
+      continue;
+    }
+    if (i + 1 >= argc)
+    {
+      std::fprintf(stderr, "volgrid %s: %s needs a value\n", command, argv[i]);
+      return false;
+    }
+    const std::string value = argv[++i];
+    if (format)
+      request.format = value;
+    else if (patch)
+    {
+      const Status s = parsePatchAssignment(value, request.patches);
+      if (!s.ok())
+      {
+        std::fprintf(stderr, "volgrid %s: %s\n", command, s.message.c_str());
+        return false;
+      }
+    }
+    else
+    {
+      const size_t eq = value.find('=');
+      if (eq == std::string::npos || eq == 0 || eq + 1 == value.size())
+      {
+        std::fprintf(stderr, "volgrid %s: --patch-type expects NAME=TYPE, not '%s'\n", command, value.c_str());
+        return false;
+      }
+      request.writeOptions.openFoamPatchTypes[value.substr(0, eq)] = value.substr(eq + 1);
+    }
+  }
+  argc = kept;
+  argv[argc] = nullptr;
+  return true;
+}
+
+bool chooseFormat(const char* command, const std::string& out, const ExportRequest& request, MeshFormat& format,
+  bool& vtk)
+{
+  vtk = false;
+  if (!request.format.empty())
+  {
+    vtk = request.format == "vtu" || request.format == "vtk";
+    format = meshFormatFromName(request.format);
+    if (vtk || format != MeshFormat::Unknown)
+      return true;
+    std::fprintf(stderr, "volgrid %s: unknown --format '%s' (gmsh, gmsh22, su2, openfoam, medit, tetgen, vtu)\n",
+      command, request.format.c_str());
+    return false;
+  }
+  format = meshFormatFromPath(out);
+  const std::string ext = surfaceFileExtension(out);
+  vtk = ext == "vtu" || ext == "vtk" || ext == "vtp";
+  if (vtk || format != MeshFormat::Unknown)
+    return true;
+  std::fprintf(stderr,
+    "volgrid %s: cannot tell the output format of '%s' from its extension '%s' (.vtu .msh .su2 .mesh .node; "
+    "--format NAME for others, e.g. --format openfoam)\n",
+    command, out.c_str(), ext.c_str());
+  return false;
+}
+
+bool solverMeshFromResult(const char* command, const ExportRequest& request, const SurfaceMesh& surface,
+  MesherResult& result, SolverMesh& mesh, bool withGeometry)
+{
+  mesh.patchNames = surface.hasPatchIds() ? surface.patchNames : NameTable();
+  if (!request.patches.empty())
+  {
+    const Status s = applyPatchAssignment(request.patches, result.boundaryPatch, mesh.patchNames);
+    if (!s.ok())
+    {
+      std::fprintf(stderr, "volgrid %s: %s\n", command, s.message.c_str());
+      return false;
+    }
+  }
+  if (!withGeometry)
+    return true;
+  mesh.points = result.points;
+  mesh.tets = result.tets;
+  mesh.tetRegion = result.tetRegion;
+  mesh.triangles = result.boundaryTriangles;
+  mesh.trianglePatch = result.boundaryPatch;
+  return true;
+}
+
+bool writeSolverOutput(const char* command, const std::string& out, MeshFormat format, const SolverMesh& mesh,
+  const ExportRequest& request, bool quiet)
+{
+  SolverMesh normalized = mesh;
+  normalizeLabels(normalized);
+  const Status s = writeSolverMesh(out, normalized, format, request.writeOptions);
+  if (!s.ok())
+  {
+    std::fprintf(stderr, "volgrid %s: %s\n", command, s.message.c_str());
+    return false;
+  }
+  if (quiet)
+    return true;
+  std::printf("wrote %s '%s': %lld points, %lld tets, patches", meshFormatName(format), out.c_str(),
+    static_cast<long long>(normalized.numberOfPoints()), static_cast<long long>(normalized.numberOfTets()));
+  const std::vector<int32_t> patches = distinctLabels(normalized.trianglePatch);
+  const std::vector<int64_t> counts = labelCounts(normalized.trianglePatch, patches);
+  for (size_t k = 0; k < patches.size(); ++k)
+    std::printf(" %s (%lld)", labelName(normalized.patchNames, patches[k], "patch").c_str(),
+      static_cast<long long>(counts[k]));
+  std::printf("\n");
+  return true;
+}
+} // namespace cli
+} // namespace volgrid

@@ -1,0 +1,39 @@
+// Solver mesh readers: a tet mesh with its named boundary patches and regions back into a SolverMesh,
+// so that `volgrid convert`, `refine` and `quality` take a solver's mesh. One format per file
+// (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx,
+// MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx). Errors name the file, the line and the problem.
+#pragma once
+
+#include "SolverMesh.h"
+#include "Status.h"
+
+#include <string>
+
+namespace volgrid
+{
+
+// True when readSolverMesh knows the path's extension.
+bool solverMeshReaderSupports(const std::string& path);
+
+// Reads by extension (.mesh, .msh, .su2, .node/.ele/.face), or an OpenFOAM case directory. The mesh is cleared first.
+Status readSolverMesh(const std::string& path, SolverMesh& mesh);
+
+// Medit .mesh (ASCII): Vertices, Triangles (ref = patch), Tetrahedra (ref = region); other sections
+// skipped. Names from VolGrid's "# VolGrid patch|region LABEL NAME" comment lines.
+Status readMeditVolume(const std::string& path, SolverMesh& mesh);
+
+// gmsh .msh, ASCII 2.2 and 4.1: triangles (patch = physical tag of the entity, else the entity tag)
+// and tets (region likewise); names from $PhysicalNames.
+Status readGmshVolume(const std::string& path, SolverMesh& mesh);
+// SU2 (.su2, ASCII, 3D): tets and triangle markers; marker k (file order) is patch k named by MARKER_TAG.
+Status readSU2(const std::string& path, SolverMesh& mesh);
+// TetGen STEM.node/.ele/.face (`path` any of them or the stem): region = first tet attribute (else 1),
+// patch = face marker (else 1); 0- or 1-based as the first node says. No names.
+Status readTetGenVolume(const std::string& path, SolverMesh& mesh);
+// True when `path` is a directory with constant/polyMesh/faces.
+bool isOpenFoamCase(const std::string& path);
+// OpenFOAM polyMesh of CASE (ASCII, tetrahedral cells): patches labelled 1.. in the boundary file's order
+// with their names, region 1.
+Status readOpenFOAM(const std::string& caseDir, SolverMesh& mesh);
+
+} // namespace volgrid

@@ -1,0 +1,60 @@
+// Solver mesh writers: one format per file (MeshWriterGmsh.cxx, MeshWriterSU2.cxx,
+// MeshWriterOpenFOAM.cxx, MeshWriterMedit.cxx, MeshWriterTetGen.cxx), chosen here by name or extension.
+// Every writer takes a SolverMesh with normalized labels (SolverMesh.h), writes through OutputFile (no
+// partial file on failure) and returns a Status naming the path and the reason.
+#pragma once
+
+#include "SolverMesh.h"
+#include "Status.h"
+
+#include <map>
+#include <string>
+
+namespace volgrid
+{
+
+enum class MeshFormat
+{
+  Unknown,
+  Gmsh41,   // .msh: gmsh 4.1 ASCII with $PhysicalNames and $Entities
+  Gmsh22,   // gmsh 2.2 ASCII (--format gmsh22)
+  SU2,      // .su2: one MARKER_TAG per patch
+  OpenFOAM, // a case directory: CASE/constant/polyMesh/{points,faces,owner,neighbour,boundary}
+  Medit,    // .mesh: refs; names in "# VolGrid patch|region LABEL NAME" comment lines
+  TetGen,   // .node/.ele/.face (the path is any of them or the stem) with region attributes and markers
+};
+
+// By --format name: "gmsh"/"msh"/"gmsh41", "gmsh22", "su2", "openfoam"/"polymesh", "medit"/"mesh",
+// "tetgen". Unknown otherwise.
+MeshFormat meshFormatFromName(const std::string& name);
+// By the path's extension (case-insensitive): .msh .su2 .mesh .node/.ele/.face. Unknown otherwise
+// (OpenFOAM has no extension: it is chosen by name only).
+MeshFormat meshFormatFromPath(const std::string& path);
+const char* meshFormatName(MeshFormat format);
+
+struct MeshWriteOptions
+{
+  // OpenFOAM patch type by patch name (wall, patch, symmetryPlane, ...). Patches not listed get
+  // defaultOpenFoamPatchType(name).
+  std::map<std::string, std::string> openFoamPatchTypes;
+};
+
+// "symmetryPlane" for a name containing "symmetry" (any case), "patch" for one containing "farfield",
+// "inlet" or "outlet", "wall" otherwise.
+std::string defaultOpenFoamPatchType(const std::string& name);
+
+// Writes `mesh` (labels normalized first on a copy when needed) in `format` to `path`.
+Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshFormat format,
+  const MeshWriteOptions& options = MeshWriteOptions());
+
+Status writeGmsh41(const std::string& path, const SolverMesh& mesh);
+Status writeGmsh22(const std::string& path, const SolverMesh& mesh);
+Status writeSU2(const std::string& path, const SolverMesh& mesh);
+Status writeMedit(const std::string& path, const SolverMesh& mesh);
+// `path` names the stem or any of the three files; all three are written (each atomically).
+Status writeTetGen(const std::string& path, const SolverMesh& mesh);
+// `caseDir` must not exist; it is built under a temporary name and renamed when complete. Patch names
+// must be OpenFOAM words.
+Status writeOpenFOAM(const std::string& caseDir, const SolverMesh& mesh, const MeshWriteOptions& options);
+
+} // namespace volgrid

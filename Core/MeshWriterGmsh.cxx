@@ -1,0 +1,152 @@
+// gmsh .msh writers, ASCII 4.1 and 2.2. Each patch is a surface entity and each region a volume entity
+// whose tag equals its label, carrying one physical group of the same tag named in $PhysicalNames.
+// Node and element tags are 1-based; tets keep VolGrid's (and gmsh's) positive vertex order.
+#include "MeshWriter.h"
+#include "OutputFile.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+
+namespace volgrid
+{
+namespace
+{
+void writeHeader(std::FILE* f, const char* version)
+{
+  std::fprintf(f, "$MeshFormat\n%s 0 8\n$EndMeshFormat\n", version);
+}
+
+void writePhysicalNames(std::FILE* f, const std::vector<int32_t>& patches, const std::vector<int32_t>& regions,
+  const SolverMesh& mesh)
+{
+  std::fprintf(f, "$PhysicalNames\n%zu\n", patches.size() + regions.size());
+  for (int32_t p : patches)
+    std::fprintf(f, "2 %d \"%s\"\n", p, labelName(mesh.patchNames, p, "patch").c_str());
+  for (int32_t r : regions)
+    std::fprintf(f, "3 %d \"%s\"\n", r, labelName(mesh.regionNames, r, "region").c_str());
+  std::fprintf(f, "$EndPhysicalNames\n");
+}
+
+// Bounding box of the points of the cells (nv vertices each) carrying `label`.
+void entityBox(const SolverMesh& mesh, const std::vector<int32_t>& cells, int nv, const std::vector<int32_t>& labels,
+  int32_t label, double box[6])
+{
+  for (int k = 0; k < 3; ++k)
+    box[k] = 1e300, box[3 + k] = -1e300;
+  for (size_t c = 0; c < labels.size(); ++c)
+  {
+    if (labels[c] != label)
+      continue;
+    for (int v = 0; v < nv; ++v)
+    {
+      const double* p = mesh.points.data() + 3 * static_cast<size_t>(cells[nv * c + v]);
+      for (int k = 0; k < 3; ++k)
+        box[k] = std::min(box[k], p[k]), box[3 + k] = std::max(box[3 + k], p[k]);
+    }
+  }
+}
+
+void writeEntities(std::FILE* f, const SolverMesh& mesh, const std::vector<int32_t>& patches,
+  const std::vector<int32_t>& regions)
+{
+  std::fprintf(f, "$Entities\n0 0 %zu %zu\n", patches.size(), regions.size());
+  double b[6];
+  for (int32_t p : patches)
+  {
+    entityBox(mesh, mesh.triangles, 3, mesh.trianglePatch, p, b);
+    std::fprintf(f, "%d %.17g %.17g %.17g %.17g %.17g %.17g 1 %d 0\n", p, b[0], b[1], b[2], b[3], b[4], b[5], p);
+  }
+  for (int32_t r : regions)
+  {
+    entityBox(mesh, mesh.tets, 4, mesh.tetRegion, r, b);
+    std::fprintf(f, "%d %.17g %.17g %.17g %.17g %.17g %.17g 1 %d 0\n", r, b[0], b[1], b[2], b[3], b[4], b[5], r);
+  }
+  std::fprintf(f, "$EndEntities\n");
+}
+
+// The elements carrying `label`, numbered from `next`; 2.2 lines also carry the physical and entity tags.
+void writeCells(std::FILE* f, const std::vector<int32_t>& cells, int nv, const std::vector<int32_t>& labels,
+  int32_t label, int64_t& next, bool v22)
+{
+  const int type = nv == 3 ? 2 : 4;
+  for (size_t c = 0; c < labels.size(); ++c)
+  {
+    if (labels[c] != label)
+      continue;
+    if (v22)
+      std::fprintf(f, "%" PRId64 " %d 2 %d %d", next++, type, label, label);
+    else
+      std::fprintf(f, "%" PRId64, next++);
+    for (int v = 0; v < nv; ++v)
+      std::fprintf(f, " %d", cells[nv * c + v] + 1);
+    std::fputc('\n', f);
+  }
+}
+
+Status writeGmsh(const std::string& path, const SolverMesh& mesh, bool v22)
+{
+  OutputFile out;
+  Status s = out.open(path);
+  if (!s.ok())
+    return s;
+  std::FILE* f = out.stream();
+  const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
+  const std::vector<int32_t> regions = distinctLabels(mesh.tetRegion);
+  const std::vector<int64_t> patchCount = labelCounts(mesh.trianglePatch, patches);
+  const std::vector<int64_t> regionCount = labelCounts(mesh.tetRegion, regions);
+  const int64_t np = mesh.numberOfPoints(), ne = mesh.numberOfTriangles() + mesh.numberOfTets();
+  writeHeader(f, v22 ? "2.2" : "4.1");
+  writePhysicalNames(f, patches, regions, mesh);
+  if (!v22)
+  {
+    writeEntities(f, mesh, patches, regions);
+    // All nodes in one block on the first volume entity (their classification does not matter here).
+    std::fprintf(f, "$Nodes\n1 %" PRId64 " 1 %" PRId64 "\n3 %d 0 %" PRId64 "\n", np, np,
+      regions.empty() ? 1 : regions[0], np);
+    for (int64_t i = 0; i < np; ++i)
+      std::fprintf(f, "%" PRId64 "\n", i + 1);
+  }
+  else
+    std::fprintf(f, "$Nodes\n%" PRId64 "\n", np);
+  for (int64_t i = 0; i < np; ++i)
+  {
+    const double* p = mesh.points.data() + 3 * i;
+    if (v22)
+      std::fprintf(f, "%" PRId64 " ", i + 1);
+    std::fprintf(f, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+  }
+  std::fprintf(f, "$EndNodes\n$Elements\n");
+  if (v22)
+    std::fprintf(f, "%" PRId64 "\n", ne);
+  else
+    std::fprintf(f, "%zu %" PRId64 " 1 %" PRId64 "\n", patches.size() + regions.size(), ne, ne);
+  int64_t next = 1;
+  for (size_t k = 0; k < patches.size(); ++k)
+  {
+    if (!v22)
+      std::fprintf(f, "2 %d 2 %" PRId64 "\n", patches[k], patchCount[k]);
+    writeCells(f, mesh.triangles, 3, mesh.trianglePatch, patches[k], next, v22);
+  }
+  for (size_t k = 0; k < regions.size(); ++k)
+  {
+    if (!v22)
+      std::fprintf(f, "3 %d 4 %" PRId64 "\n", regions[k], regionCount[k]);
+    writeCells(f, mesh.tets, 4, mesh.tetRegion, regions[k], next, v22);
+  }
+  std::fprintf(f, "$EndElements\n");
+  return out.commit();
+}
+} // namespace
+
+Status writeGmsh41(const std::string& path, const SolverMesh& mesh)
+{
+  return writeGmsh(path, mesh, false);
+}
+
+Status writeGmsh22(const std::string& path, const SolverMesh& mesh)
+{
+  return writeGmsh(path, mesh, true);
+}
+
+} // namespace volgrid

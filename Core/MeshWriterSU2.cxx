@@ -1,0 +1,49 @@
+// SU2 native mesh writer (.su2, ASCII): NDIME, the tets (VTK type 10, 0-based point ids), the points,
+// and one MARKER_TAG per patch with its boundary triangles (VTK type 5). SU2 has no region names.
+#include "MeshWriter.h"
+#include "OutputFile.h"
+
+#include <cinttypes>
+#include <cstdio>
+
+namespace volgrid
+{
+
+Status writeSU2(const std::string& path, const SolverMesh& mesh)
+{
+  OutputFile out;
+  Status s = out.open(path);
+  if (!s.ok())
+    return s;
+  std::FILE* f = out.stream();
+  std::fprintf(f, "NDIME= 3\nNELEM= %" PRId64 "\n", mesh.numberOfTets());
+  for (int64_t t = 0; t < mesh.numberOfTets(); ++t)
+  {
+    const int32_t* v = mesh.tets.data() + 4 * t;
+    std::fprintf(f, "10 %d %d %d %d %" PRId64 "\n", v[0], v[1], v[2], v[3], t);
+  }
+  std::fprintf(f, "NPOIN= %" PRId64 "\n", mesh.numberOfPoints());
+  for (int64_t i = 0; i < mesh.numberOfPoints(); ++i)
+  {
+    const double* p = mesh.points.data() + 3 * i;
+    std::fprintf(f, "%.17g %.17g %.17g %" PRId64 "\n", p[0], p[1], p[2], i);
+  }
+  const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
+  const std::vector<int64_t> counts = labelCounts(mesh.trianglePatch, patches);
+  std::fprintf(f, "NMARK= %zu\n", patches.size());
+  for (size_t k = 0; k < patches.size(); ++k)
+  {
+    std::fprintf(f, "MARKER_TAG= %s\nMARKER_ELEMS= %" PRId64 "\n",
+      labelName(mesh.patchNames, patches[k], "patch").c_str(), counts[k]);
+    for (int64_t t = 0; t < mesh.numberOfTriangles(); ++t)
+    {
+      if (mesh.trianglePatch[t] != patches[k])
+        continue;
+      const int32_t* v = mesh.triangles.data() + 3 * t;
+      std::fprintf(f, "5 %d %d %d\n", v[0], v[1], v[2]);
+    }
+  }
+  return out.commit();
+}
+
+} // namespace volgrid

@@ -1,0 +1,55 @@
+// Label bookkeeping of SolverMesh: dense positive patch and region labels with their names.
+#include "SolverMesh.h"
+
+#include <algorithm>
+#include <map>
+
+namespace volgrid
+{
+namespace
+{
+void renumber(std::vector<int32_t>& labels, NameTable& names, const char* prefix)
+{
+  const std::vector<int32_t> old = distinctLabels(labels);
+  std::map<int32_t, int32_t> toNew;
+  NameTable renamed;
+  for (size_t k = 0; k < old.size(); ++k)
+  {
+    toNew[old[k]] = static_cast<int32_t>(k + 1);
+    renamed[static_cast<int32_t>(k + 1)] = labelName(names, old[k], prefix);
+  }
+  for (int32_t& l : labels)
+    l = toNew[l];
+  names = renamed;
+}
+} // namespace
+
+std::vector<int32_t> distinctLabels(const std::vector<int32_t>& labels)
+{
+  std::vector<int32_t> d(labels);
+  std::sort(d.begin(), d.end());
+  d.erase(std::unique(d.begin(), d.end()), d.end());
+  return d;
+}
+
+void normalizeLabels(SolverMesh& mesh)
+{
+  mesh.tetRegion.resize(mesh.tets.size() / 4, 0);
+  mesh.trianglePatch.resize(mesh.triangles.size() / 3, 0);
+  renumber(mesh.trianglePatch, mesh.patchNames, "patch");
+  renumber(mesh.tetRegion, mesh.regionNames, "region");
+}
+
+std::vector<int64_t> labelCounts(const std::vector<int32_t>& labels, const std::vector<int32_t>& distinct)
+{
+  std::vector<int64_t> counts(distinct.size(), 0);
+  for (int32_t l : labels)
+  {
+    const auto it = std::lower_bound(distinct.begin(), distinct.end(), l);
+    if (it != distinct.end() && *it == l)
+      ++counts[static_cast<size_t>(it - distinct.begin())];
+  }
+  return counts;
+}
+
+} // namespace volgrid

@@ -1,0 +1,40 @@
+// A tetrahedral mesh as a solver receives it: points, tets with a region label, and the boundary
+// triangles with a patch label, each label with a name. The currency of the solver writers
+// (MeshWriter.h) and their readers. Labels are positive and dense after normalizeLabels() (gmsh
+// physical tags, Medit refs and TetGen markers must be > 0).
+#pragma once
+
+#include "PatchNames.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace volgrid
+{
+
+struct SolverMesh
+{
+  std::vector<double> points;          // 3 per point
+  std::vector<int32_t> tets;           // 4 per tet, positive volume ((b-a)x(c-a).(d-a) > 0)
+  std::vector<int32_t> tetRegion;      // one per tet
+  std::vector<int32_t> triangles;      // boundary triangles, 3 each
+  std::vector<int32_t> trianglePatch;  // one per boundary triangle
+  NameTable patchNames;                // patch label -> name
+  NameTable regionNames;               // region label -> name
+
+  int64_t numberOfPoints() const { return static_cast<int64_t>(points.size() / 3); }
+  int64_t numberOfTets() const { return static_cast<int64_t>(tets.size() / 4); }
+  int64_t numberOfTriangles() const { return static_cast<int64_t>(triangles.size() / 3); }
+};
+
+// The distinct labels in ascending order.
+std::vector<int32_t> distinctLabels(const std::vector<int32_t>& labels);
+
+// Renumbers patch and region labels densely to 1..k in ascending order of the old label; each label
+// keeps its name, or gets "patch<old>" / "region<old>" when it had none. Idempotent.
+void normalizeLabels(SolverMesh& mesh);
+
+// Number of triangles carrying each label, in distinctLabels order.
+std::vector<int64_t> labelCounts(const std::vector<int32_t>& labels, const std::vector<int32_t>& distinct);
+
+} // namespace volgrid

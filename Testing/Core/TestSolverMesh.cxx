@@ -1,0 +1,226 @@
+// Named patches and the solver writers: --patch parsing and relabelling, OpenFOAM words, label
+// normalisation, the all-or-nothing output file, the OpenFOAM face order and orientation, the Medit
+// round trip with names, STL solid names and gmsh $PhysicalNames.
+#include "MeshReader.h"
+#include "MeshWriter.h"
+#include "OutputFile.h"
+#include "PatchNames.h"
+#include "SolverMesh.h"
+#include "SurfaceReader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace volgrid;
+
+namespace
+{
+std::string tempPath(const std::string& name)
+{
+  return ::testing::TempDir() + "volgrid_solver_" + name;
+}
+
+std::string readText(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Two positive tets sharing the face (1 2 3): patch 1 on the three faces of tet 0 other than the shared
+// one, patch 2 on those of tet 1.
+SolverMesh twoTets()
+{
+  SolverMesh m;
+  m.points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1 };
+  m.tets = { 0, 1, 2, 3, 1, 2, 3, 4 };
+  m.tetRegion = { 1, 1 };
+  m.triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 4, 2, 1, 3, 4, 2, 4, 3 };
+  m.trianglePatch = { 1, 1, 1, 2, 2, 2 };
+  m.patchNames = { { 1, "wall_a" }, { 2, "farfield" } };
+  return m;
+}
+} // namespace
+
+TEST(PatchNames, ParsesGroupsAndBareIds)
+{
+  PatchAssignment a;
+  ASSERT_TRUE(parsePatchAssignment("farfield=1,symmetry=2,wing=3,4,5", a).ok());
+  ASSERT_EQ(a.names, (std::vector<std::string>{ "farfield", "symmetry", "wing" }));
+  EXPECT_EQ(a.ids[2], (std::vector<int32_t>{ 3, 4, 5 }));
+  ASSERT_TRUE(parsePatchAssignment("inlet=7", a).ok()); // appends
+  EXPECT_EQ(a.names.size(), 4u);
+  PatchAssignment b;
+  EXPECT_FALSE(parsePatchAssignment("1,2", b).ok());
+  EXPECT_FALSE(parsePatchAssignment("=1", b).ok());
+  EXPECT_FALSE(parsePatchAssignment("wing=x", b).ok());
+  EXPECT_FALSE(parsePatchAssignment("wing=1,", b).ok());
+}
+
+TEST(PatchNames, RelabelsInOrderAndKeepsTheOthers)
+{
+  PatchAssignment a;
+  ASSERT_TRUE(parsePatchAssignment("wing=3,4,farfield=1", a).ok());
+  std::vector<int32_t> labels = { 1, 3, 4, 7, 3 };
+  NameTable names = { { 7, "outlet" } };
+  ASSERT_TRUE(applyPatchAssignment(a, labels, names).ok());
+  EXPECT_EQ(labels, (std::vector<int32_t>{ 2, 1, 1, 3, 1 }));
+  EXPECT_EQ(names, (NameTable{ { 1, "wing" }, { 2, "farfield" }, { 3, "outlet" } }));
+  PatchAssignment twice, missing;
+  ASSERT_TRUE(parsePatchAssignment("a=1,b=1", twice).ok());
+  ASSERT_TRUE(parsePatchAssignment("a=9", missing).ok());
+  std::vector<int32_t> before = labels;
+  EXPECT_FALSE(applyPatchAssignment(twice, labels, names).ok());
+  EXPECT_FALSE(applyPatchAssignment(missing, labels, names).ok());
+  EXPECT_EQ(labels, before);
+}
+
+TEST(PatchNames, OpenFoamWordsAndPatchTypes)
+{
+  EXPECT_TRUE(isOpenFoamWord("wing_upper-1"));
+  for (const char* bad : { "", "bad name", "a;b", "a/b", "a{b", "a(b", "a\"b", "a#b", "a$b" })
+    EXPECT_FALSE(isOpenFoamWord(bad)) << bad;
+  EXPECT_EQ(defaultOpenFoamPatchType("Symmetry_y0"), "symmetryPlane");
+  EXPECT_EQ(defaultOpenFoamPatchType("farfield"), "patch");
+  EXPECT_EQ(defaultOpenFoamPatchType("outlet2"), "patch");
+  EXPECT_EQ(defaultOpenFoamPatchType("wing"), "wall");
+}
+
+TEST(SolverMesh, NormalizeLabelsIsDenseAndNamed)
+{
+  SolverMesh m = twoTets();
+  m.trianglePatch = { 0, 0, 5, 5, 9, 9 };
+  m.patchNames = { { 5, "wing" } };
+  m.tetRegion = { 0, 0 };
+  normalizeLabels(m);
+  EXPECT_EQ(m.trianglePatch, (std::vector<int32_t>{ 1, 1, 2, 2, 3, 3 }));
+  EXPECT_EQ(m.patchNames, (NameTable{ { 1, "patch0" }, { 2, "wing" }, { 3, "patch9" } }));
+  EXPECT_EQ(m.regionNames, (NameTable{ { 1, "region0" } }));
+}
+
+TEST(OutputFile, NoPartialFile)
+{
+  const std::string path = tempPath("partial.txt");
+  std::filesystem::remove(path);
+  {
+    OutputFile f;
+    ASSERT_TRUE(f.open(path).ok());
+    std::fputs("half", f.stream());
+  } // abandoned: nothing appears
+  EXPECT_FALSE(std::filesystem::exists(path));
+  OutputFile g;
+  ASSERT_TRUE(g.open(path).ok());
+  std::fputs("whole", g.stream());
+  ASSERT_TRUE(g.commit().ok());
+  EXPECT_EQ(readText(path), "whole");
+  OutputFile h;
+  const Status s = h.open(tempPath("no-such-dir/x.msh"));
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("no-such-dir/x.msh"), std::string::npos);
+  EXPECT_NE(s.message.find("No such file"), std::string::npos);
+}
+
+TEST(MeshWriterOpenFOAM, UpperTriangularOrderOutwardFacesPatchesByName)
+{
+  const std::string dir = tempPath("foam");
+  std::filesystem::remove_all(dir);
+  ASSERT_TRUE(writeSolverMesh(dir, twoTets(), MeshFormat::OpenFOAM).ok());
+  const std::string owner = readText(dir + "/constant/polyMesh/owner");
+  EXPECT_NE(owner.find("nPoints:5  nCells:2  nFaces:7  nInternalFaces:1"), std::string::npos);
+  EXPECT_NE(owner.find("7\n(\n0\n0\n0\n0\n1\n1\n1\n)"), std::string::npos) << owner;
+  EXPECT_NE(readText(dir + "/constant/polyMesh/neighbour").find("1\n(\n1\n)"), std::string::npos);
+  // The internal face (1 2 3) points from tet 0 to tet 1, i.e. towards point 4 = (1 1 1).
+  const std::string faces = readText(dir + "/constant/polyMesh/faces");
+  EXPECT_NE(faces.find("7\n(\n3(1 2 3)\n"), std::string::npos) << faces;
+  const std::string boundary = readText(dir + "/constant/polyMesh/boundary");
+  EXPECT_NE(boundary.find("wall_a\n    {\n        type            wall;"), std::string::npos) << boundary;
+  EXPECT_NE(boundary.find("farfield\n    {\n        type            patch;"), std::string::npos);
+  EXPECT_NE(boundary.find("nFaces          3;\n        startFace       4;"), std::string::npos);
+  // Read back: the same tets (from the faces) and the patches by name, in the boundary file's order.
+  SolverMesh r;
+  ASSERT_TRUE(readSolverMesh(dir, r).ok());
+  EXPECT_EQ(r.numberOfTets(), 2);
+  EXPECT_EQ(r.points, twoTets().points);
+  EXPECT_EQ(r.patchNames, (NameTable{ { 1, "wall_a" }, { 2, "farfield" } }));
+  EXPECT_EQ(r.trianglePatch, (std::vector<int32_t>{ 1, 1, 1, 2, 2, 2 }));
+  const std::string again = tempPath("foam-again");
+  std::filesystem::remove_all(again);
+  ASSERT_TRUE(writeSolverMesh(again, r, MeshFormat::OpenFOAM).ok());
+  for (const char* f : { "points", "faces", "owner", "neighbour", "boundary" })
+    EXPECT_EQ(readText(dir + "/constant/polyMesh/" + f), readText(again + "/constant/polyMesh/" + f)) << f;
+  // An existing directory is refused; a bad word is refused before anything is written.
+  EXPECT_FALSE(writeSolverMesh(dir, twoTets(), MeshFormat::OpenFOAM).ok());
+  SolverMesh bad = twoTets();
+  bad.patchNames[1] = "a b";
+  const std::string dir2 = tempPath("foam-bad");
+  std::filesystem::remove_all(dir2);
+  EXPECT_FALSE(writeSolverMesh(dir2, bad, MeshFormat::OpenFOAM).ok());
+  EXPECT_FALSE(std::filesystem::exists(dir2));
+}
+
+TEST(MeshWriterMedit, RoundTripKeepsLabelsAndNames)
+{
+  const std::string path = tempPath("two.mesh"), again = tempPath("two-again.mesh");
+  const SolverMesh m = twoTets();
+  ASSERT_TRUE(writeSolverMesh(path, m, MeshFormat::Medit).ok());
+  SolverMesh r;
+  ASSERT_TRUE(readSolverMesh(path, r).ok());
+  EXPECT_EQ(r.points, m.points);
+  EXPECT_EQ(r.tets, m.tets);
+  EXPECT_EQ(r.triangles, m.triangles);
+  EXPECT_EQ(r.trianglePatch, m.trianglePatch);
+  EXPECT_EQ(r.patchNames, m.patchNames);
+  ASSERT_TRUE(writeSolverMesh(again, r, MeshFormat::Medit).ok());
+  EXPECT_EQ(readText(path), readText(again));
+  EXPECT_FALSE(readSolverMesh(tempPath("missing.mesh"), r).ok());
+}
+
+TEST(SurfaceReaderNames, StlSolidNamesAndGmshPhysicalNames)
+{
+  const std::string stl = tempPath("named.stl");
+  std::ofstream(stl) << "solid upper wing\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                        "vertex 0 1 0\nendloop\nendfacet\nendsolid\nsolid tip\nfacet normal 0 0 1\nouter loop\n"
+                        "vertex 0 0 1\nvertex 1 0 1\nvertex 0 1 1\nendloop\nendfacet\nendsolid tip\n";
+  SurfaceMesh s;
+  ASSERT_TRUE(readSurface(stl, s).ok());
+  EXPECT_EQ(s.patchNames, (NameTable{ { 0, "upper wing" }, { 1, "tip" } }));
+  for (MeshFormat f : { MeshFormat::Gmsh22, MeshFormat::Gmsh41 })
+  {
+    const std::string msh = tempPath(f == MeshFormat::Gmsh22 ? "two22.msh" : "two41.msh");
+    ASSERT_TRUE(writeSolverMesh(msh, twoTets(), f).ok());
+    SurfaceMesh g;
+    ASSERT_TRUE(readSurface(msh, g).ok());
+    EXPECT_EQ(g.numberOfTriangles(), 6);
+    EXPECT_EQ(g.patchIds, (std::vector<int32_t>{ 1, 1, 1, 2, 2, 2 }));
+    EXPECT_EQ(g.patchNames, (NameTable{ { 1, "wall_a" }, { 2, "farfield" } }));
+  }
+}
+
+TEST(MeshReaderTetGen, RoundTripAndZeroBasedFilesWithoutFaces)
+{
+  const std::string stem = tempPath("two-tetgen");
+  ASSERT_TRUE(writeSolverMesh(stem + ".node", twoTets(), MeshFormat::TetGen).ok());
+  SolverMesh r;
+  ASSERT_TRUE(readSolverMesh(stem + ".ele", r).ok());
+  const SolverMesh m = twoTets();
+  EXPECT_EQ(r.points, m.points);
+  EXPECT_EQ(r.tets, m.tets);
+  EXPECT_EQ(r.tetRegion, m.tetRegion);
+  EXPECT_EQ(r.triangles, m.triangles);
+  EXPECT_EQ(r.trianglePatch, m.trianglePatch);
+  // TetGen's own numbering may start at 0; without .face there are no boundary triangles.
+  const std::string zero = tempPath("zero");
+  std::ofstream(zero + ".node") << "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n";
+  std::ofstream(zero + ".ele") << "1 4 0\n0 0 1 2 3\n";
+  std::filesystem::remove(zero + ".face");
+  ASSERT_TRUE(readSolverMesh(zero + ".node", r).ok());
+  EXPECT_EQ(r.tets, (std::vector<int32_t>{ 0, 1, 2, 3 }));
+  EXPECT_EQ(r.tetRegion, (std::vector<int32_t>{ 1 }));
+  EXPECT_TRUE(r.triangles.empty());
+  std::ofstream(zero + ".ele") << "1 4 0\n0 0 1 2 9\n";
+  EXPECT_FALSE(readSolverMesh(zero + ".node", r).ok()); // node id out of range
+}
