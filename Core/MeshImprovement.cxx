@@ -407,7 +407,10 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       {
         one.maxPasses = pass == 0 ? std::min(3, maxPasses) : 1;
         OptimizationReport orep;
-        Status os = optimizeMesh(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, one, progress, &orep);
+        // From the second call on, the mesh is the one the previous call summarised.
+        const DihedralSummary previous = stats.after;
+        Status os = optimizeMesh(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, one, progress,
+          &orep, pass == 0 ? nullptr : &previous);
         if (!os.ok())
           return os;
         stats.after = orep.after;

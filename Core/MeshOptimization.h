@@ -15,6 +15,9 @@
 //   3. optionally (vertexRemoval), for the tets still far below target, the collapse of one of their
 //      unlocked vertices onto a neighbour.
 // Stops when nothing changed in a pass, every tet reaches the target, or after maxPasses.
+// Cost: one sweep over the mesh per call (the tets below the target, and the summary before unless the
+// caller passes it); the passes then work on that list and on the tets they change (created by a flip or
+// a collapse, or in the star of a moved vertex), never on the whole mesh again.
 //
 // Constraints: faces without neighbour and faces in `constraints` are never removed (an edge is removed
 // only when its ring is closed and no face around it is constrained; a face is flipped only when not
@@ -80,10 +83,12 @@ struct OptimizationReport
 };
 
 // Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot
-// labels kept in step. Errors: InvalidOption (ghost tets, bad options), Cancelled.
+// labels kept in step. knownBefore: the mesh's current summary when the caller has it (e.g. the `after` of
+// the previous call, nothing changed since), saving a sweep over the mesh. Errors: InvalidOption (ghost
+// tets, bad options), Cancelled.
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
   std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress = nullptr,
-  OptimizationReport* report = nullptr);
+  OptimizationReport* report = nullptr, const DihedralSummary* knownBefore = nullptr);
 
 // Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
 // of the worst tet of the affected region; created receives the new tets.
