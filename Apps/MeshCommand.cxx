@@ -11,6 +11,7 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridWriter.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
@@ -27,10 +28,12 @@ bool readPointsWithArray(const char* command, const std::string& path, const std
 namespace
 {
 const char* kUsage =
-  "usage: volgrid mesh SURFACE OUT.vtu [--json] [--boundary OUT.vtp] [--check]\n"
-  "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [density and quality options]\n"
+  "usage: volgrid mesh SURFACE OUT.{vtu,vtk} [--json] [--boundary OUT.vtp] [--check]\n"
+  "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [--threads N]\n"
+  "                    [density and quality options]\n"
   "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
-  "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region);\n"
+  "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region; OUT.vtk:\n"
+  "  the same, legacy binary VTK);\n"
   "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
   "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
   "Density (field points, paper 7.2; on by default):\n"
@@ -50,7 +53,9 @@ const char* kUsage =
   "Quality (optimisation: flips, edge removal, smoothing; on by default):\n"
   "  --quality            optimise (default)                    --no-optimize    do not\n"
   "  --target-angle DEG   target for min(dihedral, 180 - max dihedral) (default 18)\n"
-  "  --passes N           optimisation pass limit (default 8)   --no-smoothing   flips only\n";
+  "  --passes N           optimisation pass limit (default 8)   --no-smoothing   flips only\n"
+  "Threads:\n"
+  "  --threads N          0 (default) = all cores; the mesh is byte-identical for any N\n";
 
 struct Arguments
 {
@@ -125,6 +130,19 @@ bool parseArguments(int argc, char** argv, Arguments& args)
         std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
         return false;
       }
+    }
+    else if (a == "--threads")
+    {
+      const char* v = value("--threads");
+      long long t = 0;
+      if (!v || !volgrid::cli::parseLong("mesh", "--threads", v, t))
+        return false;
+      if (t < 0 || t > 4096)
+      {
+        std::fprintf(stderr, "volgrid mesh: --threads is 0 (all cores) or a count up to 4096, not %lld\n", t);
+        return false;
+      }
+      args.options.threads = static_cast<int>(t);
     }
     else if (a == "--sizing" || a == "--cluster" || a == "--size-array")
     {
@@ -206,6 +224,21 @@ bool write(const std::string& path, Data* data)
   }
   return true;
 }
+
+// OUT.vtk: the legacy binary format (e.g. for tools whose XML reader trips over raw appended data).
+bool writeLegacy(const std::string& path, vtkUnstructuredGrid* data)
+{
+  vtkNew<vtkUnstructuredGridWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  writer->SetFileTypeToBinary();
+  if (writer->Write() != 1)
+  {
+    std::fprintf(stderr, "volgrid mesh: cannot write '%s'\n", path.c_str());
+    return false;
+  }
+  return true;
+}
 } // namespace
 
 int runMeshCommand(int argc, char** argv)
@@ -249,7 +282,8 @@ int runMeshCommand(int argc, char** argv)
   vtkNew<vtkUnstructuredGrid> volume;
   vtkNew<vtkPolyData> boundarySurface;
   VolGridFillFromMesherResult(result, volume, boundarySurface);
-  if (!write<vtkXMLUnstructuredGridWriter>(args.out, volume.Get()))
+  const bool legacy = args.out.size() > 4 && args.out.compare(args.out.size() - 4, 4, ".vtk") == 0;
+  if (legacy ? !writeLegacy(args.out, volume.Get()) : !write<vtkXMLUnstructuredGridWriter>(args.out, volume.Get()))
     return 1;
   if (!args.boundaryOut.empty() && !write<vtkXMLPolyDataWriter>(args.boundaryOut, boundarySurface.Get()))
     return 1;

@@ -157,6 +157,7 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   std::vector<int32_t> inputToVertex;
   DelaunayOptions dopt;
   dopt.keepGhosts = false;
+  dopt.threads = options.threads;
   Status s = buildDelaunay(xyz.data(), xyz.size() / 3, dopt, mesh, inputToVertex, pr);
   if (!s.ok())
     return s;

@@ -51,7 +51,8 @@ struct MesherOptions
   bool removeBoundarySteiner = true;
   // Check the result (exact orientation, adjacency, boundary = input, volume) and fail on a violation.
   bool verify = false;
-  // Threads for the surface checks (0 = automatic).
+  // Threads (0 = all cores): the surface checks and the Delaunay kernel (which uses at most two). The
+  // mesh does not depend on this value: every threaded step merges its partial results in a fixed order.
   int threads = 0;
   // Grid control and quality after step 5 (MeshImprovement.h): field points, sizing, clustering,
   // optimisation. On by default.

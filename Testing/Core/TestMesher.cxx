@@ -148,3 +148,29 @@ TEST(Mesher, RejectsOpenSurface)
   EXPECT_EQ(st.kind, ErrorKind::OpenSurface) << st.message;
   EXPECT_TRUE(r.tets.empty());
 }
+
+// The thread count (0 = all cores, 1, more threads than cores) does not change the mesh: the same points,
+// bit for bit, and the same tets in the same order (README, "Threads").
+TEST(Mesher, SameMeshForAnyThreadCount)
+{
+  SurfaceMesh s;
+  const double c[3] = { 0, 0, 0 };
+  testshapes::addSphere(s, c, 10.0, 2);
+  testshapes::addSphere(s, c, 1.0, 3);
+  MesherOptions opt;
+  opt.threads = 8;
+  const MesherResult first = meshAndCheck(s, opt);
+  const MesherResult again = meshAndCheck(s, opt);
+  opt.threads = 1;
+  const MesherResult one = meshAndCheck(s, opt);
+  opt.threads = 0;
+  const MesherResult all = meshAndCheck(s, opt);
+  ASSERT_GT(first.tets.size(), 0u);
+  for (const MesherResult* r : { &again, &one, &all })
+  {
+    EXPECT_EQ(r->points, first.points);
+    EXPECT_EQ(r->tets, first.tets);
+    EXPECT_EQ(r->tetRegion, first.tetRegion);
+    EXPECT_EQ(r->boundaryTriangles, first.boundaryTriangles);
+  }
+}
