@@ -302,7 +302,8 @@ int runMeshCommand(int argc, char** argv)
                 "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %.17g, "
                 "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"field_points\": %lld, "
                 "\"cluster_points\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, "
-                "\"share_below_10\": %.6g, \"boundary_forced_below_10\": %lld, \"seconds_improvement\": %.6f, "
+                "\"share_below_10\": %.6g, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
+                "\"seconds_improvement\": %.6f, "
                 "\"seconds\": %.6f, "
                 "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
@@ -313,7 +314,8 @@ int runMeshCommand(int argc, char** argv)
       static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", boundary.tetVolume,
       s.enclosedVolume, boundary.relativeVolumeError, static_cast<long long>(s.improvement.fieldPoints),
       static_cast<long long>(s.improvement.clusterPoints), dihedral.minDihedral, dihedral.maxDihedral,
-      dihedral.shareBelow10(), static_cast<long long>(s.improvement.boundaryForcedBelow10), s.secondsImprovement,
+      dihedral.shareBelow10(), static_cast<long long>(s.improvement.boundaryForcedBelow10),
+      static_cast<long long>(s.forcedTets), s.secondsImprovement,
       seconds, volgrid::cli::peakResidentMiB());
   }
   else
@@ -327,6 +329,10 @@ int runMeshCommand(int argc, char** argv)
                 "under 10 deg\n",
       static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
       dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
+    if (s.forcedTets > 0)
+      std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
+                  "over 170 deg: cell array Forced)\n",
+        static_cast<long long>(s.forcedTets));
     std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
       boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
       boundary.relativeVolumeError);

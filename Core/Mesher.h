@@ -81,6 +81,7 @@ struct MesherStatistics
   // Grid control and quality (field, cluster and split points are not counted in steinerInterior).
   ImprovementStatistics improvement;
   double secondsImprovement = 0;
+  int64_t forcedTets = 0; // tets marked in MesherResult::tetForced
 };
 
 struct MesherResult
@@ -90,6 +91,10 @@ struct MesherResult
   std::vector<int32_t> inputToOutputPoint; // original input point id -> output point id
   std::vector<int32_t> tets;             // 4 per tet, orient3d > 0
   std::vector<int32_t> tetRegion;        // region label per tet (0..regions-1)
+  // Per tet, 1 when the input surface forces its shape: a dihedral angle under 10 or over 170 degrees
+  // (sine quality, TetEditor.h) with all four vertices on the input boundary, so that no flip or move can
+  // change it without changing the boundary; else 0. The cell array Forced; stats.forcedTets counts them.
+  std::vector<uint8_t> tetForced;
   std::vector<int32_t> boundaryTriangles; // 3 per triangle: the input triangles bounding the domain
   std::vector<int32_t> boundaryInputTriangle; // input triangle id of each boundary triangle
   std::vector<int32_t> boundaryPatch;    // PatchId: the input patch id if present, else the shell index

@@ -174,3 +174,25 @@ TEST(Mesher, SameMeshForAnyThreadCount)
     EXPECT_EQ(r->boundaryTriangles, first.boundaryTriangles);
   }
 }
+
+// Tets whose shape the input surface forces are marked per tet: four input (boundary) vertices and a
+// dihedral angle under 10 or over 170 degrees; the count is in the statistics.
+TEST(Mesher, ForcedTetsAreMarked)
+{
+  SurfaceMesh s = testshapes::stripBox(25, 1.0, 10.0, 0.3);
+  const MesherResult r = meshAndCheck(s);
+  ASSERT_EQ(r.tetForced.size() * 4, r.tets.size());
+  int64_t marked = 0;
+  const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
+  for (size_t t = 0; t < r.tetForced.size(); ++t)
+  {
+    const int32_t* v = &r.tets[4 * t];
+    const bool boundary = v[0] < r.numInputPoints && v[1] < r.numInputPoints && v[2] < r.numInputPoints &&
+      v[3] < r.numInputPoints;
+    const bool bad = tetSineQuality(&r.points[3 * static_cast<size_t>(v[0])], &r.points[3 * static_cast<size_t>(v[1])],
+                       &r.points[3 * static_cast<size_t>(v[2])], &r.points[3 * static_cast<size_t>(v[3])]) < q10;
+    EXPECT_EQ(r.tetForced[t] != 0, boundary && bad) << t;
+    marked += r.tetForced[t];
+  }
+  EXPECT_EQ(marked, r.stats.forcedTets);
+}
