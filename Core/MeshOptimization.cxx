@@ -336,6 +336,23 @@ bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* creat
 
 namespace
 {
+// The mesh's smallest dihedral angle as summarizeDihedrals() gives it, from `below` (every tet whose sine
+// quality is under sin(targetDegrees), as optimizeMesh collects them): a tet with an angle under the
+// target is among them, so when their smallest angle is under the target (with a margin far above the
+// rounding of either measure) it is the mesh's. Otherwise a sweep.
+double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees)
+{
+  double m = 180;
+  for (const auto& b : below)
+  {
+    const int32_t* w = mesh.vertices(b.second);
+    double lo, hi;
+    minMaxDihedral(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), lo, hi);
+    m = std::min(m, lo);
+  }
+  return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh).minDihedral;
+}
+
 // Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
 // first strict improvement is kept (created receives the new tets). True when one was made.
 bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options, OptimizationReport& report,
@@ -370,8 +387,7 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
 } // namespace
 
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
-  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress, OptimizationReport* reportOut,
-  const DihedralSummary* knownBefore)
+  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress, OptimizationReport* reportOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (mesh.numGhostTets() > 0)
@@ -381,7 +397,8 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       "Optimisation needs 0 < targetDegrees < 90, maxPasses >= 0 and maxRing >= 3.");
   OptimizationReport local;
   OptimizationReport& report = reportOut ? *reportOut : local;
-  report.before = knownBefore ? *knownBefore : summarizeDihedrals(mesh);
+  if (options.summaries)
+    report.before = summarizeDihedrals(mesh);
   TetEditor editor(mesh, constraints, labels);
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
@@ -419,6 +436,8 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     std::sort(out.begin(), out.end());
   };
   report.belowTargetBefore = static_cast<int64_t>(bad.size());
+  report.minDihedralBefore =
+    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
   for (int pass = 0; pass < options.maxPasses && !bad.empty(); ++pass)
   {
     if (progress)
@@ -494,7 +513,10 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       break;
   }
   report.belowTargetAfter = static_cast<int64_t>(bad.size());
-  report.after = summarizeDihedrals(mesh);
+  if (options.summaries)
+    report.after = summarizeDihedrals(mesh);
+  report.minDihedralAfter =
+    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
   report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return Status::success();
 }

@@ -15,9 +15,9 @@
 //   3. optionally (vertexRemoval), for the tets still far below target, the collapse of one of their
 //      unlocked vertices onto a neighbour.
 // Stops when nothing changed in a pass, every tet reaches the target, or after maxPasses.
-// Cost: one sweep over the mesh per call (the tets below the target, and the summary before unless the
-// caller passes it); the passes then work on that list and on the tets they change (created by a flip or
-// a collapse, or in the star of a moved vertex), never on the whole mesh again.
+// Cost: one sweep over the mesh per call (the tets below the target; plus the summaries unless
+// options.summaries is off); the passes then work on that list and on the tets they change (created by a
+// flip or a collapse, or in the star of a moved vertex), never on the whole mesh again.
 //
 // Constraints: faces without neighbour and faces in `constraints` are never removed (an edge is removed
 // only when its ring is closed and no face around it is constrained; a face is flipped only when not
@@ -53,6 +53,10 @@ struct OptimizationOptions
   // mesh.points, used by no tet (callers that write every point keep it off).
   bool vertexRemoval = false;
   double vertexRemovalDegrees = 5.0;
+  // Whole-mesh summaries before and after (report.before, report.after): two sweeps over the mesh per
+  // call. false leaves them empty; report.minDihedralBefore/After are set either way (from the tets below
+  // the target when the minimum lies among them, else by a sweep).
+  bool summaries = true;
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
 };
 
@@ -72,6 +76,7 @@ DihedralSummary summarizeDihedrals(const TetMesh& mesh);
 struct OptimizationReport
 {
   DihedralSummary before, after;
+  double minDihedralBefore = 180, minDihedralAfter = 180; // the mesh's smallest dihedral angle (degrees)
   int passes = 0;
   int64_t flips23 = 0;
   int64_t edgeRemovals = 0; // of which 3-2 flips:
@@ -83,12 +88,10 @@ struct OptimizationReport
 };
 
 // Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot
-// labels kept in step. knownBefore: the mesh's current summary when the caller has it (e.g. the `after` of
-// the previous call, nothing changed since), saving a sweep over the mesh. Errors: InvalidOption (ghost
-// tets, bad options), Cancelled.
+// labels kept in step. Errors: InvalidOption (ghost tets, bad options), Cancelled.
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
   std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress = nullptr,
-  OptimizationReport* report = nullptr, const DihedralSummary* knownBefore = nullptr);
+  OptimizationReport* report = nullptr);
 
 // Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
 // of the worst tet of the affected region; created receives the new tets.
