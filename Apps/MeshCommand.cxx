@@ -13,6 +13,7 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridWriter.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -27,10 +28,12 @@ bool readPointsWithArray(const char* command, const std::string& path, const std
 namespace
 {
 const char* kUsage =
-  "usage: volgrid mesh SURFACE OUT.vtu|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
-  "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [density and quality options]\n"
+  "usage: volgrid mesh SURFACE OUT.vtu|OUT.vtk|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
+  "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [--threads N]\n"
+  "                    [density and quality options]\n"
   "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
-  "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region);\n"
+  "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region; OUT.vtk:\n"
+  "  the same, legacy binary VTK);\n"
   "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
   "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
   "Density (field points, paper 7.2; on by default):\n"
@@ -50,7 +53,9 @@ const char* kUsage =
   "Quality (optimisation: flips, edge removal, smoothing; on by default):\n"
   "  --quality            optimise (default)                    --no-optimize    do not\n"
   "  --target-angle DEG   target for min(dihedral, 180 - max dihedral) (default 18)\n"
-  "  --passes N           optimisation pass limit (default 8)   --no-smoothing   flips only\n";
+  "  --passes N           optimisation pass limit (default 8)   --no-smoothing   flips only\n"
+  "Threads:\n"
+  "  --threads N          0 (default) = all cores; the mesh is byte-identical for any N\n";
 
 struct Arguments
 {
@@ -126,6 +131,19 @@ bool parseArguments(int argc, char** argv, Arguments& args)
         return false;
       }
     }
+    else if (a == "--threads")
+    {
+      const char* v = value("--threads");
+      long long t = 0;
+      if (!v || !volgrid::cli::parseLong("mesh", "--threads", v, t))
+        return false;
+      if (t < 0 || t > 4096)
+      {
+        std::fprintf(stderr, "volgrid mesh: --threads is 0 (all cores) or a count up to 4096, not %lld\n", t);
+        return false;
+      }
+      args.options.threads = static_cast<int>(t);
+    }
     else if (a == "--sizing" || a == "--cluster" || a == "--size-array")
     {
       const char* v = value(a.c_str());
@@ -192,8 +210,25 @@ bool parseArguments(int argc, char** argv, Arguments& args)
   return true;
 }
 
+// OUT.vtk: the legacy binary format (for tools that read only legacy VTK).
+bool writeLegacy(const std::string& path, vtkUnstructuredGrid* data)
+{
+  vtkNew<vtkUnstructuredGridWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  writer->SetFileTypeToBinary();
+  if (writer->Write() != 1)
+  {
+    std::fprintf(stderr, "volgrid mesh: cannot write '%s'\n", path.c_str());
+    return false;
+  }
+  return true;
+}
+
 bool write(const std::string& path, vtkDataSet* data)
 {
+  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".vtk") == 0 && vtkUnstructuredGrid::SafeDownCast(data))
+    return writeLegacy(path, vtkUnstructuredGrid::SafeDownCast(data));
   std::string error;
   if (!volgrid::cli::writeXmlDataSet(path, data, error))
   {
@@ -277,7 +312,8 @@ int runMeshCommand(int argc, char** argv)
                 "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %.17g, "
                 "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"field_points\": %lld, "
                 "\"cluster_points\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, "
-                "\"share_below_10\": %.6g, \"boundary_forced_below_10\": %lld, \"seconds_improvement\": %.6f, "
+                "\"share_below_10\": %.6g, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
+                "\"seconds_improvement\": %.6f, "
                 "\"seconds\": %.6f, "
                 "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
@@ -288,7 +324,8 @@ int runMeshCommand(int argc, char** argv)
       static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", boundary.tetVolume,
       s.enclosedVolume, boundary.relativeVolumeError, static_cast<long long>(s.improvement.fieldPoints),
       static_cast<long long>(s.improvement.clusterPoints), dihedral.minDihedral, dihedral.maxDihedral,
-      dihedral.shareBelow10(), static_cast<long long>(s.improvement.boundaryForcedBelow10), s.secondsImprovement,
+      dihedral.shareBelow10(), static_cast<long long>(s.improvement.boundaryForcedBelow10),
+      static_cast<long long>(s.forcedTets), s.secondsImprovement,
       seconds, volgrid::cli::peakResidentMiB());
   }
   else
@@ -302,6 +339,10 @@ int runMeshCommand(int argc, char** argv)
                 "under 10 deg\n",
       static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
       dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
+    if (s.forcedTets > 0)
+      std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
+                  "over 170 deg: cell array Forced)\n",
+        static_cast<long long>(s.forcedTets));
     std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
       boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
       boundary.relativeVolumeError);

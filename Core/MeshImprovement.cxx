@@ -400,8 +400,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     OptimizationOptions one = options.optimization;
     one.maxPasses = 1;
     one.vertexRemoval = false; // a second attempt, below
-    // The first call runs up to three passes (each call sweeps the whole mesh for its summaries), then
-    // one pass per call while a pass still pays.
+    one.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
+    // The first call runs up to three passes, then one pass per call while a pass still pays.
     auto optimise = [&](int maxPasses) -> Status {
       for (int pass = 0; pass < maxPasses; pass += one.maxPasses)
       {
@@ -410,12 +410,12 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
         Status os = optimizeMesh(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, one, progress, &orep);
         if (!os.ok())
           return os;
-        stats.after = orep.after;
+        stats.after.minDihedral = orep.minDihedralAfter; // what the rounds below decide on (summary: at the end)
         stats.optimizationPasses += orep.passes;
         stats.flips += orep.flips23 + orep.edgeRemovals;
         stats.smoothMoves += orep.smoothMoves;
         const int64_t gained = orep.belowTargetBefore - orep.belowTargetAfter;
-        const bool minImproved = orep.after.minDihedral > orep.before.minDihedral + 1.0;
+        const bool minImproved = orep.minDihedralAfter > orep.minDihedralBefore + 1.0;
         if (orep.belowTargetAfter == 0 || orep.passes == 0 ||
           (gained <= orep.belowTargetBefore / 50 && !minImproved))
           break;
@@ -575,9 +575,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       const int64_t kept =
         improveWorstByInsertion(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, io);
       stats.splitPoints += kept;
-      if (kept > 0)
-        stats.after = summarizeDihedrals(mesh);
     }
+    stats.after = summarizeDihedrals(mesh);
     stats.secondsOptimization = since(t0);
   }
   else

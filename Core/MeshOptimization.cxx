@@ -334,6 +334,58 @@ bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* creat
   return true;
 }
 
+namespace
+{
+// The mesh's smallest dihedral angle as summarizeDihedrals() gives it, from `below` (every tet whose sine
+// quality is under sin(targetDegrees), as optimizeMesh collects them): a tet with an angle under the
+// target is among them, so when their smallest angle is under the target (with a margin far above the
+// rounding of either measure) it is the mesh's. Otherwise a sweep.
+double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees)
+{
+  double m = 180;
+  for (const auto& b : below)
+  {
+    const int32_t* w = mesh.vertices(b.second);
+    double lo, hi;
+    minMaxDihedral(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), lo, hi);
+    m = std::min(m, lo);
+  }
+  return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh).minDihedral;
+}
+
+// Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
+// first strict improvement is kept (created receives the new tets). True when one was made.
+bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options, OptimizationReport& report,
+  std::vector<int32_t>& created)
+{
+  TetMesh& mesh = editor.mesh;
+  if (options.edgeRemoval)
+  {
+    double s[6];
+    edgeSines(mesh, t, s);
+    int order[6] = { 0, 1, 2, 3, 4, 5 };
+    std::sort(order, order + 6, [&](int a, int b) { return s[a] < s[b]; });
+    const int32_t* w = mesh.vertices(t);
+    const int32_t vv[4] = { w[0], w[1], w[2], w[3] };
+    for (int e = 0; e < 6; ++e)
+      if (tryEdgeRemoval(editor, t, vv[kEdge[order[e]][0]], vv[kEdge[order[e]][1]], options.maxRing, &created))
+      {
+        ++report.edgeRemovals;
+        report.flips32 += created.size() == 2;
+        return true;
+      }
+  }
+  if (options.flips)
+    for (int f = 0; f < 4; ++f)
+      if (tryFlip23(editor, t, f, &created))
+      {
+        ++report.flips23;
+        return true;
+      }
+  return false;
+}
+} // namespace
+
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
   std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress, OptimizationReport* reportOut)
 {
@@ -345,26 +397,47 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       "Optimisation needs 0 < targetDegrees < 90, maxPasses >= 0 and maxRing >= 3.");
   OptimizationReport local;
   OptimizationReport& report = reportOut ? *reportOut : local;
-  report.before = summarizeDihedrals(mesh);
+  if (options.summaries)
+    report.before = summarizeDihedrals(mesh);
   TetEditor editor(mesh, constraints, labels);
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
     for (size_t v = 0; v < lock.size() && v < locked->size(); ++v)
       lock[v] |= (*locked)[v];
   const double qT = std::sin(options.targetDegrees * 3.14159265358979323846 / 180.0);
-  std::vector<std::pair<double, int32_t>> bad;
-  std::vector<int32_t> queue, created, verts;
-  auto collectBad = [&]() {
-    bad.clear();
-    mesh.forEachTet([&](int32_t t) {
-      const double q = tetQ(mesh, t);
-      if (q < qT)
-        bad.emplace_back(q, t);
-    });
-    std::sort(bad.begin(), bad.end());
-    return static_cast<int64_t>(bad.size());
+  // The pass works on a worklist, not on the whole mesh: the tets below the target at the start of the
+  // call are collected once; from then on the only tets whose quality can have changed are those created
+  // by flips, edge removals and collapses and those in the star of a moved vertex (`touched`). The tets
+  // below a limit are therefore found among the last collection and the touched tets: the same set, in
+  // the same (quality, slot) order, as a sweep over the whole mesh, at a cost proportional to the work.
+  std::vector<std::pair<double, int32_t>> bad, worst;
+  std::vector<int32_t> queue, created, verts, touched, candidates, star;
+  mesh.forEachTet([&](int32_t t) {
+    const double q = tetQ(mesh, t);
+    if (q < qT)
+      bad.emplace_back(q, t);
+  });
+  std::sort(bad.begin(), bad.end());
+  auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out) {
+    candidates.clear();
+    for (const auto& b : bad)
+      candidates.push_back(b.second);
+    candidates.insert(candidates.end(), touched.begin(), touched.end());
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    out.clear();
+    for (int32_t t : candidates)
+      if (!mesh.isFree(t))
+      {
+        const double q = tetQ(mesh, t);
+        if (q < qLimit)
+          out.emplace_back(q, t);
+      }
+    std::sort(out.begin(), out.end());
   };
-  report.belowTargetBefore = collectBad();
+  report.belowTargetBefore = static_cast<int64_t>(bad.size());
+  report.minDihedralBefore =
+    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
   for (int pass = 0; pass < options.maxPasses && !bad.empty(); ++pass)
   {
     if (progress)
@@ -374,6 +447,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       progress->report(double(pass) / options.maxPasses, "Optimising");
     }
     int64_t changes = 0;
+    touched.clear();
     queue.clear();
     for (const auto& b : bad)
       queue.push_back(b.second);
@@ -382,36 +456,10 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       const int32_t t = queue[k];
       if (mesh.isFree(t) || tetQ(mesh, t) >= qT)
         continue;
-      bool done = false;
-      if (options.edgeRemoval)
-      {
-        double s[6];
-        edgeSines(mesh, t, s);
-        int order[6] = { 0, 1, 2, 3, 4, 5 };
-        std::sort(order, order + 6, [&](int a, int b) { return s[a] < s[b]; });
-        const int32_t* w = mesh.vertices(t);
-        const int32_t vv[4] = { w[0], w[1], w[2], w[3] };
-        for (int e = 0; e < 6 && !done; ++e)
-        {
-          const int32_t x = vv[kEdge[order[e]][0]], y = vv[kEdge[order[e]][1]];
-          if (tryEdgeRemoval(editor, t, x, y, options.maxRing, &created))
-          {
-            done = true;
-            ++report.edgeRemovals;
-            report.flips32 += created.size() == 2;
-          }
-        }
-      }
-      if (!done && options.flips)
-        for (int f = 0; f < 4 && !done; ++f)
-          if (tryFlip23(editor, t, f, &created))
-          {
-            done = true;
-            ++report.flips23;
-          }
-      if (done)
+      if (tryFlipsOf(editor, t, options, report, created))
       {
         ++changes;
+        touched.insert(touched.end(), created.begin(), created.end());
         for (int32_t u : created)
           if (tetQ(mesh, u) < qT)
             queue.push_back(u);
@@ -419,12 +467,11 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     }
     if (options.smoothing)
     {
+      collectBelow(qT, worst);
       verts.clear();
-      mesh.forEachTet([&](int32_t t) {
-        if (tetQ(mesh, t) < qT)
-          for (int i = 0; i < 4; ++i)
-            verts.push_back(mesh.vertex(t, i));
-      });
+      for (const auto& w : worst)
+        for (int i = 0; i < 4; ++i)
+          verts.push_back(mesh.vertex(w.second, i));
       std::sort(verts.begin(), verts.end());
       verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
       for (int32_t v : verts)
@@ -432,6 +479,8 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
         {
           ++report.smoothMoves;
           ++changes;
+          editor.star(v, star);
+          touched.insert(touched.end(), star.begin(), star.end());
         }
     }
     // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
@@ -440,13 +489,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     {
       const double qR =
         std::sin(std::min(options.targetDegrees, options.vertexRemovalDegrees) * 3.14159265358979323846 / 180.0);
-      std::vector<std::pair<double, int32_t>> worst;
-      mesh.forEachTet([&](int32_t t) {
-        const double q = tetQ(mesh, t);
-        if (q < qR)
-          worst.emplace_back(q, t);
-      });
-      std::sort(worst.begin(), worst.end());
+      collectBelow(qR, worst);
       for (const auto& w : worst)
       {
         const int32_t t = w.second;
@@ -455,21 +498,25 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
         const int32_t* x = mesh.vertices(t);
         const int32_t vv[4] = { x[0], x[1], x[2], x[3] };
         for (int i = 0; i < 4; ++i)
-          if (!lock[vv[i]] && tryVertexCollapse(editor, vv[i], nullptr))
+          if (!lock[vv[i]] && tryVertexCollapse(editor, vv[i], &created))
           {
             ++report.vertexRemovals;
             ++changes;
+            touched.insert(touched.end(), created.begin(), created.end());
             break;
           }
       }
     }
     report.passes = pass + 1;
-    collectBad();
+    collectBelow(qT, bad);
     if (changes == 0)
       break;
   }
   report.belowTargetAfter = static_cast<int64_t>(bad.size());
-  report.after = summarizeDihedrals(mesh);
+  if (options.summaries)
+    report.after = summarizeDihedrals(mesh);
+  report.minDihedralAfter =
+    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
   report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return Status::success();
 }

@@ -15,6 +15,9 @@
 //   3. optionally (vertexRemoval), for the tets still far below target, the collapse of one of their
 //      unlocked vertices onto a neighbour.
 // Stops when nothing changed in a pass, every tet reaches the target, or after maxPasses.
+// Cost: one sweep over the mesh per call (the tets below the target; plus the summaries unless
+// options.summaries is off); the passes then work on that list and on the tets they change (created by a
+// flip or a collapse, or in the star of a moved vertex), never on the whole mesh again.
 //
 // Constraints: faces without neighbour and faces in `constraints` are never removed (an edge is removed
 // only when its ring is closed and no face around it is constrained; a face is flipped only when not
@@ -50,6 +53,10 @@ struct OptimizationOptions
   // mesh.points, used by no tet (callers that write every point keep it off).
   bool vertexRemoval = false;
   double vertexRemovalDegrees = 5.0;
+  // Whole-mesh summaries before and after (report.before, report.after): two sweeps over the mesh per
+  // call. false leaves them empty; report.minDihedralBefore/After are set either way (from the tets below
+  // the target when the minimum lies among them, else by a sweep).
+  bool summaries = true;
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
 };
 
@@ -69,6 +76,7 @@ DihedralSummary summarizeDihedrals(const TetMesh& mesh);
 struct OptimizationReport
 {
   DihedralSummary before, after;
+  double minDihedralBefore = 180, minDihedralAfter = 180; // the mesh's smallest dihedral angle (degrees)
   int passes = 0;
   int64_t flips23 = 0;
   int64_t edgeRemovals = 0; // of which 3-2 flips:

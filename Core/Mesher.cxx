@@ -57,6 +57,27 @@ std::vector<int32_t> shellsOf(const SurfaceMesh& s, int32_t* count)
   return shell;
 }
 
+// MesherResult::tetForced: the output tets whose four vertices are input points (all on the boundary)
+// with a sine quality under 10 degrees.
+void markForcedTets(MesherResult& result)
+{
+  const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
+  const size_t nt = result.tets.size() / 4;
+  result.tetForced.assign(nt, 0);
+  const int32_t* tet = result.tets.data();
+  for (size_t t = 0; t < nt; ++t, tet += 4)
+  {
+    if (tet[0] >= result.numInputPoints || tet[1] >= result.numInputPoints || tet[2] >= result.numInputPoints ||
+      tet[3] >= result.numInputPoints)
+      continue;
+    const double* p = result.points.data();
+    const bool forced = tetSineQuality(p + 3 * static_cast<size_t>(tet[0]), p + 3 * static_cast<size_t>(tet[1]),
+                          p + 3 * static_cast<size_t>(tet[2]), p + 3 * static_cast<size_t>(tet[3])) < q10;
+    result.tetForced[t] = forced;
+    result.stats.forcedTets += forced;
+  }
+}
+
 } // namespace
 
 Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, MesherResult& result, Progress* progress)
@@ -157,6 +178,7 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   std::vector<int32_t> inputToVertex;
   DelaunayOptions dopt;
   dopt.keepGhosts = false;
+  dopt.threads = options.threads;
   Status s = buildDelaunay(xyz.data(), xyz.size() / 3, dopt, mesh, inputToVertex, pr);
   if (!s.ok())
     return s;
@@ -291,6 +313,7 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
       result.tets.push_back(outId[mesh.vertex(t, i)]);
     result.tetRegion.push_back(regions.tetRegion[t]);
   });
+  markForcedTets(result);
   // Boundary triangles: input triangles that are faces of the mesh (all of them unless keep-all
   // interfaces... which are faces too), found by one sweep over the tets.
   BoundaryCensus inputFaces;

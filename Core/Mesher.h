@@ -51,7 +51,8 @@ struct MesherOptions
   bool removeBoundarySteiner = true;
   // Check the result (exact orientation, adjacency, boundary = input, volume) and fail on a violation.
   bool verify = false;
-  // Threads for the surface checks (0 = automatic).
+  // Threads (0 = all cores): the surface checks and the Delaunay kernel (which uses at most two). The
+  // mesh does not depend on this value: every threaded step merges its partial results in a fixed order.
   int threads = 0;
   // Grid control and quality after step 5 (MeshImprovement.h): field points, sizing, clustering,
   // optimisation. On by default.
@@ -80,6 +81,7 @@ struct MesherStatistics
   // Grid control and quality (field, cluster and split points are not counted in steinerInterior).
   ImprovementStatistics improvement;
   double secondsImprovement = 0;
+  int64_t forcedTets = 0; // tets marked in MesherResult::tetForced
 };
 
 struct MesherResult
@@ -89,6 +91,10 @@ struct MesherResult
   std::vector<int32_t> inputToOutputPoint; // original input point id -> output point id
   std::vector<int32_t> tets;             // 4 per tet, orient3d > 0
   std::vector<int32_t> tetRegion;        // region label per tet (0..regions-1)
+  // Per tet, 1 when the input surface forces its shape: a dihedral angle under 10 or over 170 degrees
+  // (sine quality, TetEditor.h) with all four vertices on the input boundary, so that no flip or move can
+  // change it without changing the boundary; else 0. The cell array Forced; stats.forcedTets counts them.
+  std::vector<uint8_t> tetForced;
   std::vector<int32_t> boundaryTriangles; // 3 per triangle: the input triangles bounding the domain
   std::vector<int32_t> boundaryInputTriangle; // input triangle id of each boundary triangle
   std::vector<int32_t> boundaryPatch;    // PatchId: the input patch id if present, else the shell index

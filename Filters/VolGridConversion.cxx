@@ -5,6 +5,7 @@
 #include "vtkCellData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkPolyData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
@@ -99,6 +100,16 @@ void VolGridFillFromMesherResult(
   volume->SetCells(VTK_TETRA, fixedSizeCells(result.tets, 4));
   volume->GetCellData()->RemoveArray("Region");
   volume->GetCellData()->AddArray(intArray("Region", result.tetRegion));
+  volume->GetCellData()->RemoveArray("Forced");
+  if (result.tetForced.size() == result.tetRegion.size())
+  {
+    auto forced = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    forced->SetName("Forced");
+    forced->SetNumberOfValues(static_cast<vtkIdType>(result.tetForced.size()));
+    for (size_t i = 0; i < result.tetForced.size(); ++i)
+      forced->SetValue(static_cast<vtkIdType>(i), result.tetForced[i]);
+    volume->GetCellData()->AddArray(forced);
+  }
   if (boundary)
   {
     boundary->SetPoints(points);

@@ -26,9 +26,10 @@ struct SolverMesh;
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillUnstructuredGrid(
   const volgrid::TetMesh& mesh, const std::vector<int32_t>& keptVertices, vtkUnstructuredGrid* grid);
 
-// Fills `volume` with the mesher's points and tets (cell array Region) and `boundary` (may be null) with
+// Fills `volume` with the mesher's points and tets (cell arrays Region and Forced) and `boundary` (may be null) with
 // the same points and the boundary triangles (cell array PatchId). Replaces their points, cells and the
-// named arrays; other arrays are left to the caller.
+// named arrays; other arrays are left to the caller. Forced (unsigned char): 1 where the input surface
+// forces the tet's shape (MesherResult::tetForced).
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromMesherResult(
   const volgrid::MesherResult& result, vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 

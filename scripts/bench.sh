@@ -6,6 +6,9 @@
 #   2. Grid quality (all metrics) vs vtkMeshQuality       BUILD_DIR/bin/volgrid_bench_quality
 #   3. Boundary-conforming meshing vs TetGen -pY           scripts/bench_mesher.sh BUILD_DIR
 #   4. Element quality vs TetGen -pYq1.414 and Gmsh HXT    Testing/Benchmarks/bench_quality_mesh.sh BUILD_DIR
+#   5. Scale: ONERA M6 (default, ~1M, ~5M tets), sphere-in-sphere, a wing at ~10M tets; VolGrid (1 and all
+#      threads), TetGen -pYq1.414a, Gmsh HXT                Testing/Benchmarks/bench_scale.sh BUILD_DIR
+#      (--quick: the two default cases only)
 # Results go to BUILD_DIR/bench/. Timings are wall-clock on this machine: run on an idle machine.
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -52,4 +55,11 @@ echo
 echo
 echo "=== 4. Element quality with default settings: VolGrid vs TetGen -pYq1.414 vs Gmsh HXT ==="
 bash "$root/Testing/Benchmarks/bench_quality_mesh.sh" "$build" || status=1
+echo
+echo "=== 5. Scale: VolGrid (1 and all threads) vs TetGen -pYq1.414a vs Gmsh HXT, up to ~10M tets ==="
+if [ "$quick" -eq 1 ]; then
+  bash "$root/Testing/Benchmarks/bench_scale.sh" "$build" --cases m6-default,sis || status=1
+else
+  bash "$root/Testing/Benchmarks/bench_scale.sh" "$build" || status=1
+fi
 exit $status

@@ -148,3 +148,51 @@ TEST(Mesher, RejectsOpenSurface)
   EXPECT_EQ(st.kind, ErrorKind::OpenSurface) << st.message;
   EXPECT_TRUE(r.tets.empty());
 }
+
+// The thread count (0 = all cores, 1, more threads than cores) does not change the mesh: the same points,
+// bit for bit, and the same tets in the same order (README, "Threads").
+TEST(Mesher, SameMeshForAnyThreadCount)
+{
+  SurfaceMesh s;
+  const double c[3] = { 0, 0, 0 };
+  testshapes::addSphere(s, c, 10.0, 2);
+  testshapes::addSphere(s, c, 1.0, 3);
+  MesherOptions opt;
+  opt.threads = 8;
+  const MesherResult first = meshAndCheck(s, opt);
+  const MesherResult again = meshAndCheck(s, opt);
+  opt.threads = 1;
+  const MesherResult one = meshAndCheck(s, opt);
+  opt.threads = 0;
+  const MesherResult all = meshAndCheck(s, opt);
+  ASSERT_GT(first.tets.size(), 0u);
+  for (const MesherResult* r : { &again, &one, &all })
+  {
+    EXPECT_EQ(r->points, first.points);
+    EXPECT_EQ(r->tets, first.tets);
+    EXPECT_EQ(r->tetRegion, first.tetRegion);
+    EXPECT_EQ(r->boundaryTriangles, first.boundaryTriangles);
+  }
+}
+
+// Tets whose shape the input surface forces are marked per tet: four input (boundary) vertices and a
+// dihedral angle under 10 or over 170 degrees; the count is in the statistics.
+TEST(Mesher, ForcedTetsAreMarked)
+{
+  SurfaceMesh s = testshapes::stripBox(25, 1.0, 10.0, 0.3);
+  const MesherResult r = meshAndCheck(s);
+  ASSERT_EQ(r.tetForced.size() * 4, r.tets.size());
+  int64_t marked = 0;
+  const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
+  for (size_t t = 0; t < r.tetForced.size(); ++t)
+  {
+    const int32_t* v = &r.tets[4 * t];
+    const bool boundary = v[0] < r.numInputPoints && v[1] < r.numInputPoints && v[2] < r.numInputPoints &&
+      v[3] < r.numInputPoints;
+    const bool bad = tetSineQuality(&r.points[3 * static_cast<size_t>(v[0])], &r.points[3 * static_cast<size_t>(v[1])],
+                       &r.points[3 * static_cast<size_t>(v[2])], &r.points[3 * static_cast<size_t>(v[3])]) < q10;
+    EXPECT_EQ(r.tetForced[t] != 0, boundary && bad) << t;
+    marked += r.tetForced[t];
+  }
+  EXPECT_EQ(marked, r.stats.forcedTets);
+}
