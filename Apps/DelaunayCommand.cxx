@@ -215,8 +215,8 @@ int runDelaunayCommand(int argc, char** argv)
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     writer->SetFileName(args.out.c_str());
     writer->SetInputData(grid);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
+    // Binary (base64 inline), not raw appended: Debian 12's ParaView 5.11 cannot read raw appended data back.
+    writer->SetDataModeToBinary();
     if (writer->Write() != 1)
     {
       std::fprintf(stderr, "volgrid delaunay: cannot write '%s'\n", args.out.c_str());

@@ -197,8 +197,8 @@ bool write(const std::string& path, Data* data)
   vtkNew<Writer> writer;
   writer->SetFileName(path.c_str());
   writer->SetInputData(data);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
+  // Binary (base64 inline), not raw appended: Debian 12's ParaView 5.11 cannot read raw appended data back.
+  writer->SetDataModeToBinary();
   if (writer->Write() != 1)
   {
     std::fprintf(stderr, "volgrid mesh: cannot write '%s'\n", path.c_str());

@@ -308,8 +308,8 @@ int runRefineCommand(int argc, char** argv)
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetFileName(positional[1].c_str());
   writer->SetInputData(out);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
+  // Binary (base64 inline), not raw appended: Debian 12's ParaView 5.11 cannot read raw appended data back.
+  writer->SetDataModeToBinary();
   if (writer->Write() != 1)
   {
     std::fprintf(stderr, "volgrid refine: cannot write '%s'\n", positional[1].c_str());

@@ -270,7 +270,8 @@ bool writeSurfaceFile(const std::string& path, vtkPolyData* surface, std::string
     vtkNew<vtkXMLPolyDataWriter> w;
     w->SetFileName(path.c_str());
     w->SetInputData(surface);
-    w->SetDataModeToAppended();
+    // Binary (base64 inline), not raw appended: Debian 12's ParaView 5.11 cannot read raw appended data back.
+    w->SetDataModeToBinary();
     ok = w->Write();
   }
   else if (ext == "vtk")
