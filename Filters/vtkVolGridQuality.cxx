@@ -535,6 +535,10 @@ int vtkVolGridQuality::RequestData(
     output->Initialize();
     table->Initialize();
   }
+  if (controller && controller->GetLocalProcessId() != 0 && input->GetNumberOfCells() == 0)
+  {
+    table->Initialize(); // an empty piece adds no histogram rows to the ranks' tables ParaView appends
+  }
   return 1;
 }
 

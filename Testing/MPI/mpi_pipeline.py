@@ -51,6 +51,9 @@ table = servermanager.Fetch(quality, idx=1)
 figures["quality_table"] = {
     table.GetColumnName(c): [table.GetValue(r, c).ToDouble() for r in range(table.GetNumberOfRows())]
     for c in range(table.GetNumberOfColumns())}
+boundary_quality = VolGridQuality(Input=OutputPort(mesh, 1))  # the Boundary lives on rank 0 only
+boundary_quality.UpdatePipeline()
+figures["boundary_quality_rows"] = servermanager.Fetch(boundary_quality, idx=1).GetNumberOfRows()
 stats = table.GetFieldData().GetArray("MinDihedralAngleStatistics")
 figures["min_dihedral_statistics"] = list(stats.GetTuple(0)) if stats else None
 if figures["tets"]:

@@ -47,7 +47,7 @@ def run(ranks, surface, extra):
 
 
 def same_mesh(one, many, label):
-    for key in ("prep_triangles", "tets", "boundary_faces", "slice_cells", "crinkle_clip_cells", "pvtu_cells",
+    for key in ("prep_triangles", "tets", "boundary_faces", "boundary_quality_rows", "slice_cells", "crinkle_clip_cells", "pvtu_cells",
                 "min_dihedral_statistics", "quality_table"):
         check(one.get(key) == many.get(key), "%s: %s differs: %s vs %s" % (
             label, key, str(one.get(key))[:200], str(many.get(key))[:200]))
