@@ -29,4 +29,16 @@ private:
   double End;
 };
 
+/**
+ * After a run that was aborted (AbortExecute set, from Python or a GUI): clears the flag, so that the next
+ * run (the next Apply) meshes normally instead of failing at once with "cancelled".
+ */
+inline void VolGridConsumeAbort(vtkAlgorithm* algorithm)
+{
+  if (algorithm->GetAbortExecute())
+  {
+    algorithm->SetAbortExecute(0);
+  }
+}
+
 #endif

@@ -5,6 +5,8 @@
 #include "CfdQuality.h"
 #include "QualityStatistics.h"
 
+#include "VolGridParallel.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -16,6 +18,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -547,6 +550,43 @@ int vtkVolGridQuality::RequestData(
     vtkErrorMacro("Missing input or output.");
     return 0;
   }
+  // Under MPI, a grid with global ids (VolGrid Tetrahedralize's pieces) is measured whole on rank 0 and the
+  // per-cell results go back to the ranks: values, statistics and histogram are the one-process ones.
+  vtkMultiProcessController* controller = VolGridParallelController();
+  vtkSmartPointer<vtkUnstructuredGrid> whole;
+  std::vector<std::vector<vtkIdType>> cellsOfRank;
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  if (controller && grid && VolGridGatherGrid(controller, grid, whole, cellsOfRank))
+  {
+    auto wholeResult = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    const bool root = controller->GetLocalProcessId() == 0;
+    const bool ok = VolGridBroadcastFlag(controller, root ? this->ExecuteThreaded(whole, wholeResult, table) : true);
+    if (!root || !ok)
+    {
+      table->Initialize(); // the statistics live on rank 0 only (ParaView appends the ranks' tables)
+    }
+    output->ShallowCopy(input);
+    if (ok)
+    {
+      VolGridScatterCellArrays(controller, wholeResult, table->GetFieldData(), cellsOfRank, output);
+      output->GetCellData()->SetActiveScalars("Quality");
+    }
+    return 1;
+  }
+  if (!this->ExecuteThreaded(input, output, table))
+  {
+    output->Initialize();
+    table->Initialize();
+  }
+  if (controller && controller->GetLocalProcessId() != 0 && input->GetNumberOfCells() == 0)
+  {
+    table->Initialize(); // an empty piece adds no histogram rows to the ranks' tables ParaView appends
+  }
+  return 1;
+}
+
+bool vtkVolGridQuality::ExecuteThreaded(vtkDataSet* input, vtkDataSet* output, vtkTable* table)
+{
   bool ok = false;
   auto run = [&]() { ok = this->Execute(input, output, table); };
   // ParaView's VTK defaults to the Sequential backend: run threaded unless the user pinned a backend.
@@ -558,12 +598,7 @@ int vtkVolGridQuality::RequestData(
   {
     run();
   }
-  if (!ok)
-  {
-    output->Initialize();
-    table->Initialize();
-  }
-  return 1;
+  return ok;
 }
 
 bool vtkVolGridQuality::Execute(vtkDataSet* input, vtkDataSet* output, vtkTable* table)

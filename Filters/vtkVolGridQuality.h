@@ -25,6 +25,10 @@
  * measured cells). Its field data carries the same summary arrays as port 0, including the index of the
  * worst cell per metric.
  *
+ * Under MPI, a vtkUnstructuredGrid carrying GlobalPointIds and GlobalCellIds (VolGrid Tetrahedralize's
+ * pieces) is put back together on rank 0 and measured there: every per-cell value (VolumeGradient across
+ * piece borders too), the statistics and the histogram equal the one-process ones; the table is on rank 0.
+ *
  * The metric definitions and their values for degenerate elements are those of Core/Quality.h; the
  * statistics are those of Core/QualityStatistics.h. The loops run with vtkSMPTools; all results are
  * bit-identical for any number of threads. If the process uses the Sequential SMP backend (the default
@@ -104,6 +108,7 @@ private:
 
   struct Internals;
   friend struct Internals;
+  bool ExecuteThreaded(class vtkDataSet* input, class vtkDataSet* output, class vtkTable* table);
   bool Execute(class vtkDataSet* input, class vtkDataSet* output, class vtkTable* table);
 };
 

@@ -4,6 +4,7 @@
 #include "VolGridConversion.h"
 
 #include "VolGridFilterProgress.h"
+#include "VolGridParallel.h"
 #include "VolGridSurfaceConversion.h"
 
 #include "vtkCellArray.h"
@@ -18,6 +19,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLogger.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -204,6 +206,17 @@ int vtkVolGridSurfacePrep::FillOutputPortInformation(int port, vtkInformation* i
 int vtkVolGridSurfacePrep::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  vtkMultiProcessController* controller = VolGridParallelController();
+  const int ok = this->Prepare(inputVector, outputVector, controller);
+  VolGridConsumeAbort(this);
+  // Under MPI every rank reports rank 0's outcome, so that all ranks run (or skip) the filters downstream
+  // together.
+  return controller ? (VolGridBroadcastFlag(controller, ok != 0) ? 1 : 0) : ok;
+}
+
+int vtkVolGridSurfacePrep::Prepare(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector, vtkMultiProcessController* controller)
+{
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkTable* table = vtkTable::GetData(outputVector, 1);
   vtkPolyData* edges = vtkPolyData::GetData(outputVector, 2);
@@ -219,12 +232,25 @@ int vtkVolGridSurfacePrep::RequestData(
   int32_t nextPatch = 0;
   int64_t parts = 0;
   VolGridSurfaceConversionInfo conversion;
-  auto addPart = [&](vtkDataSet* part) {
-    if (!part || part->GetNumberOfCells() == 0)
+  // A part is one input connection or one leaf of a composite input; under MPI, the pieces of a part on
+  // all ranks are gathered onto rank 0, which prepares the whole surface (the other ranks output nothing).
+  auto addPart = [&](const std::vector<vtkSmartPointer<vtkDataSet>>& pieces) {
+    bool hasCells = false, hasPatchArray = false;
+    for (vtkDataSet* piece : pieces)
+    {
+      hasCells = hasCells || (piece && piece->GetNumberOfCells() > 0);
+      hasPatchArray = hasPatchArray || (piece && piece->GetCellData()->GetArray("PatchId"));
+    }
+    if (!hasCells)
       return;
-    const bool hasPatchArray = part->GetCellData()->GetArray("PatchId") != nullptr;
     const int32_t before = mesh.numberOfTriangles();
-    if (!VolGridAppendSurface(part, mesh, "PatchId", nextPatch, nextPatch, &conversion))
+    bool appended = false;
+    for (vtkDataSet* piece : pieces)
+    {
+      if (piece && piece->GetNumberOfCells() > 0)
+        appended = VolGridAppendSurface(piece, mesh, "PatchId", nextPatch, nextPatch, &conversion) || appended;
+    }
+    if (!appended)
     {
       vtkWarningMacro(<< "Part " << parts << " has no triangles, quads or polygons: skipped.");
       ++parts;
@@ -247,6 +273,7 @@ int vtkVolGridSurfacePrep::RequestData(
   };
   vtkInformationVector* inputs = inputVector[0];
   const int connections = inputs ? inputs->GetNumberOfInformationObjects() : 0;
+  std::vector<vtkDataSet*> leaves;
   for (int c = 0; c < connections; ++c)
   {
     vtkDataObject* object = inputs->GetInformationObject(c)->Get(vtkDataObject::DATA_OBJECT());
@@ -254,14 +281,29 @@ int vtkVolGridSurfacePrep::RequestData(
     {
       vtkSmartPointer<vtkCompositeDataIterator> it;
       it.TakeReference(composite->NewIterator());
-      it->SkipEmptyNodesOn();
+      it->SkipEmptyNodesOff(); // the same slots on every rank, even where a rank's block is empty
       for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-        addPart(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
+        leaves.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
     }
     else
     {
-      addPart(vtkDataSet::SafeDownCast(object));
+      leaves.push_back(vtkDataSet::SafeDownCast(object));
     }
+  }
+  if (controller)
+  {
+    const auto gathered = VolGridGatherParts(controller, leaves);
+    if (controller->GetLocalProcessId() != 0)
+    {
+      return 1;
+    }
+    for (const auto& part : gathered)
+      addPart(part);
+  }
+  else
+  {
+    for (vtkDataSet* leaf : leaves)
+      addPart({ leaf });
   }
   if (conversion.skippedCells > 0 || conversion.invalidCells > 0)
   {
@@ -270,7 +312,9 @@ int vtkVolGridSurfacePrep::RequestData(
   }
   if (connections > 0 && mesh.numberOfTriangles() == 0)
   {
-    vtkWarningMacro(<< "The input has no surface triangles.");
+    // Never an enclosure around nothing: a connected but empty input is an error.
+    vtkErrorMacro(<< "VolGrid Surface Prep: the input has no surface triangles (on any rank); nothing to prepare.");
+    return 0;
   }
   this->UpdateProgress(0.05);
 
@@ -378,7 +422,7 @@ int vtkVolGridSurfacePrep::RequestData(
     patches->FillValue(0);
     cd->AddArray(patches);
   }
-  if (static_cast<int32_t>(report.triangleFlags.size()) == mesh.numberOfTriangles())
+  if (this->DiagnosticArrays && static_cast<int32_t>(report.triangleFlags.size()) == mesh.numberOfTriangles())
   {
     auto flags = vtkSmartPointer<vtkUnsignedCharArray>::New();
     flags->SetName("DefectFlags");
@@ -390,7 +434,6 @@ int vtkVolGridSurfacePrep::RequestData(
     cd->AddArray(flagArray("SelfIntersecting", report.triangleFlags,
       volgrid::TriangleSelfIntersecting | volgrid::TriangleShellIntersecting));
     cd->AddArray(flagArray("Degenerate", report.triangleFlags, volgrid::TriangleDegenerate));
-    cd->SetActiveScalars("DefectFlags");
   }
   if (static_cast<int32_t>(report.triangleShell.size()) == mesh.numberOfTriangles())
   {
@@ -400,7 +443,8 @@ int vtkVolGridSurfacePrep::RequestData(
     std::copy(report.triangleShell.begin(), report.triangleShell.end(), shells->GetPointer(0));
     cd->AddArray(shells);
   }
-  if (static_cast<int32_t>(report.pointNonManifold.size()) == mesh.numberOfPoints())
+  cd->SetActiveScalars("PatchId");
+  if (this->DiagnosticArrays && static_cast<int32_t>(report.pointNonManifold.size()) == mesh.numberOfPoints())
   {
     output->GetPointData()->AddArray(flagArray("NonManifoldVertex", report.pointNonManifold, 1));
   }
@@ -432,18 +476,20 @@ int vtkVolGridSurfacePrep::RequestData(
   category->SetName("Category");
   auto item = vtkSmartPointer<vtkStringArray>::New();
   item->SetName("Item");
-  auto inputCount = vtkSmartPointer<vtkIdTypeArray>::New();
+  // Text columns, so that a count that was not measured says so in words.
+  auto inputCount = vtkSmartPointer<vtkStringArray>::New();
   inputCount->SetName("Input");
-  auto outputCount = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto outputCount = vtkSmartPointer<vtkStringArray>::New();
   outputCount->SetName("Output");
+  auto words = [](int64_t v) { return v < 0 ? std::string("not computed") : std::to_string(v); };
   auto firstIds = vtkSmartPointer<vtkStringArray>::New();
   firstIds->SetName("FirstIds");
   for (const Row& row : rows)
   {
     category->InsertNextValue(row.category);
     item->InsertNextValue(row.item);
-    inputCount->InsertNextValue(row.input);
-    outputCount->InsertNextValue(row.output);
+    inputCount->InsertNextValue(words(row.input));
+    outputCount->InsertNextValue(words(row.output));
     firstIds->InsertNextValue(row.firstIds);
   }
   table->AddColumn(category);
@@ -511,6 +557,7 @@ void vtkVolGridSurfacePrep::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxHoleEdges: " << this->MaxHoleEdges << "\n";
   os << indent << "OrientShells: " << this->OrientShells << "\n";
   os << indent << "CheckIntersections: " << this->CheckIntersections << "\n";
+  os << indent << "DiagnosticArrays: " << this->DiagnosticArrays << "\n";
   os << indent << "Enclosure: " << this->Enclosure << "\n";
   os << indent << "EnclosureScale: " << this->EnclosureScale << "\n";
   os << indent << "ExplicitEnclosure: " << this->ExplicitEnclosure << "\n";

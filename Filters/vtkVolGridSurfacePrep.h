@@ -112,6 +112,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Add the diagnostic arrays to the surface: cell arrays DefectFlags (bit mask), OpenEdge,
+   * NonManifoldEdge, SelfIntersecting, Degenerate and the point array NonManifoldVertex. Default off: they
+   * diagnose this surface only, and would otherwise ride on into the volume mesh and every export.
+   * ShellId and PatchId are always there; PatchId is the active scalar.
+   */
+  vtkSetMacro(DiagnosticArrays, bool);
+  vtkGetMacro(DiagnosticArrays, bool);
+  vtkBooleanMacro(DiagnosticArrays, bool);
+  ///@}
+
+  ///@{
   /** The far-field enclosure added around the input (default ENCLOSURE_NONE). */
   vtkSetClampMacro(Enclosure, int, ENCLOSURE_NONE, ENCLOSURE_ELLIPSOID);
   vtkGetMacro(Enclosure, int);
@@ -166,6 +178,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The filter's work; under MPI (controller set) the parts are gathered and only rank 0 works on them.
+  int Prepare(vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+    class vtkMultiProcessController* controller);
 
   double MergeTolerance = 1.0e-6;
   bool ExactMergeOnly = false;
@@ -175,6 +190,7 @@ protected:
   int MaxHoleEdges = 200;
   bool OrientShells = true;
   bool CheckIntersections = true;
+  bool DiagnosticArrays = false;
   int Enclosure = ENCLOSURE_NONE;
   double EnclosureScale = 10.0;
   bool ExplicitEnclosure = false;

@@ -4,6 +4,8 @@
 
 #include "VolGridConversion.h"
 #include "VolGridFilterProgress.h"
+#include "VolGridMesherProgress.h"
+#include "VolGridParallel.h"
 #include "VolGridSurfaceConversion.h"
 
 #include "vtkCellArray.h"
@@ -11,6 +13,8 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkObjectFactory.h"
@@ -97,6 +101,19 @@ bool hasSurfaceCells(vtkPointSet* input)
   return false;
 }
 
+// BlockId = Region + 1 (1 without regions): the EnSight writer needs it (one EnSight part per region).
+void addBlockIds(vtkUnstructuredGrid* mesh)
+{
+  vtkDataArray* region = mesh->GetCellData()->GetArray("Region");
+  auto block = vtkSmartPointer<vtkIntArray>::New();
+  block->SetName("BlockId");
+  block->SetNumberOfValues(mesh->GetNumberOfCells());
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    block->SetValue(c, region ? static_cast<int>(region->GetComponent(c, 0)) + 1 : 1);
+  }
+  mesh->GetCellData()->AddArray(block);
+}
 } // namespace
 
 int vtkVolGridTetrahedralize::RequestData(
@@ -107,6 +124,37 @@ int vtkVolGridTetrahedralize::RequestData(
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   output->Initialize();
   boundary->Initialize();
+  vtkDataSet* sources = this->GetNumberOfInputConnections(1) > 0 ? vtkDataSet::GetData(inputVector[1]) : nullptr;
+  vtkMultiProcessController* controller = VolGridParallelController();
+  if (!controller)
+  {
+    const int ok = this->Execute(input, sources, output, boundary);
+    VolGridConsumeAbort(this);
+    return ok;
+  }
+  // Several ranks: the whole input is meshed once on rank 0 (the boundary stays there), and the tets are
+  // handed out in compact pieces with global ids. A rank's empty piece is normal; an empty whole is an error.
+  vtkSmartPointer<vtkPointSet> whole = VolGridGatherPointSet(controller, input);
+  vtkSmartPointer<vtkDataSet> wholeSources;
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    wholeSources = VolGridGatherPointSet(controller, sources);
+  }
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  const bool root = controller->GetLocalProcessId() == 0;
+  const int ok = root ? this->Execute(whole, wholeSources, mesh, boundary) : 1;
+  VolGridConsumeAbort(this);
+  if (!VolGridBroadcastFlag(controller, ok != 0))
+  {
+    return 0; // on every rank, so that no rank runs the filters downstream alone
+  }
+  VolGridDistributeCells(controller, mesh, output);
+  return 1;
+}
+
+int vtkVolGridTetrahedralize::Execute(
+  vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary)
+{
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro(<< "VolGrid Tetrahedralize: the input is empty (no points).");
@@ -114,9 +162,13 @@ int vtkVolGridTetrahedralize::RequestData(
   }
   const bool surface = this->InputMode == SURFACE ||
     (this->InputMode == AUTOMATIC && hasSurfaceCells(input));
-  vtkDataSet* sources = this->GetNumberOfInputConnections(1) > 0 ? vtkDataSet::GetData(inputVector[1]) : nullptr;
-  return surface ? this->MeshSurface(input, sources, output, boundary)
-                 : this->TetrahedralizePoints(input, output);
+  const int ok = surface ? this->MeshSurface(input, sources, output, boundary)
+                         : this->TetrahedralizePoints(input, output);
+  if (ok)
+  {
+    addBlockIds(output);
+  }
+  return ok;
 }
 
 int vtkVolGridTetrahedralize::MeshSurface(
@@ -194,7 +246,7 @@ int vtkVolGridTetrahedralize::MeshSurface(
     }
   }
   volgrid::MesherResult result;
-  VolGridFilterProgress progress(this);
+  VolGridMesherProgress progress(this);
   const volgrid::Status status = volgrid::meshSurface(surface, options, result, &progress);
   if (!status.ok())
   {
@@ -261,6 +313,15 @@ int vtkVolGridTetrahedralize::MeshSurface(
     outCD->RemoveArray("PatchId");
     outCD->AddArray(patch);
   }
+  // Surface Prep's diagnostic arrays describe its surface, not the mesh: they stop here.
+  for (const char* name : { "DefectFlags", "OpenEdge", "NonManifoldEdge", "SelfIntersecting", "Degenerate" })
+  {
+    boundary->GetCellData()->RemoveArray(name);
+  }
+  outPD->RemoveArray("NonManifoldVertex");
+  boundary->GetPointData()->RemoveArray("NonManifoldVertex");
+  output->GetCellData()->SetActiveScalars("Region");
+  boundary->GetCellData()->SetActiveScalars("PatchId");
   this->UpdateProgress(1.0);
   return 1;
 }

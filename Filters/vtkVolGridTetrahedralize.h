@@ -6,7 +6,8 @@
  * volume enclosed by one or more closed shells, nested to any depth (e.g. an aircraft inside a far-field
  * sphere), is tetrahedralized so that the boundary of the mesh is exactly the input: same points, same
  * triangles, no point added on the boundary (interior Steiner points may be added and are counted).
- * Output port 0: the tets with the cell array `Region`; input point i (after exact merging) is output
+ * Output port 0: the tets with the cell array `Region` (active scalars) and `BlockId` = Region + 1 (for the
+ * EnSight writer); input point i (after exact merging) is output
  * point i, added points follow; input point data is passed for the input points. Output port 1: the
  * boundary triangles on the same points with `PatchId` (the input's PatchId cell array, else the shell
  * index) and the input's cell data when the input was all triangles.
@@ -28,6 +29,11 @@
  *  - Quality: optimisation (flips, edge removal and smoothing that never touch the boundary) towards a
  *    minimum dihedral angle TargetMinDihedral, at most MaxPasses passes.
  * The boundary stays exactly the input's in every case.
+ *
+ * Under MPI (pvbatch --mpi, pvserver with several ranks) the pieces of the input on all ranks are gathered
+ * onto rank 0 and meshed there once; the tets are then handed out to the ranks in spatially compact pieces
+ * with the point array GlobalPointIds and the cell array GlobalCellIds (ids in the one-process mesh), so
+ * that downstream filters run in parallel on exactly the one-process mesh. Port 1 stays on rank 0.
  *
  * Bad input (no points, NaN/Inf, all points coplanar; open or self-intersecting surfaces, non-manifold
  * edges, degenerate or duplicate triangles, intersecting shells) gives an error that names the defect,
@@ -241,6 +247,8 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  // The serial run on a whole input (every rank's part gathered when there are several ranks).
+  int Execute(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary);
   int TetrahedralizePoints(vtkPointSet* input, vtkUnstructuredGrid* output);
   int MeshSurface(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary);
 

@@ -9,13 +9,17 @@ level="${1:-build}"
 
 # ParaView 5.11's CMake package needs MPI, double-conversion and utfcpp headers, and python3-paraview
 # (its targets name the vtkmodules .so files). Never add libvtk9-dev: it removes python3-paraview/pvpython.
-# zlib1g-dev: Core reads gzip-compressed surfaces (.stl.gz ...).
+# zlib1g-dev: Core reads gzip-compressed surfaces (.stl.gz ...). qttools5-dev(-tools), qtxmlpatterns5-dev-tools:
+# Qt5Help, qhelpgenerator and xmlpatterns, for the plugin's XML documentation (the "?" button of each filter's panel).
 packages=(build-essential cmake pkg-config libgtest-dev
   paraview paraview-dev python3-paraview libopenmpi-dev libdouble-conversion-dev libutfcpp-dev
-  zlib1g-dev)
+  zlib1g-dev qttools5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools)
 case "$level" in
   build) ;;
-  test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev gmsh python3-gmsh python3-meshio openfoam) ;;
+  # openmpi-bin: the pvbatch tests under mpiexec; xvfb, xauth: the ParaView GUI test on a headless machine;
+  # gmsh, python3-gmsh, python3-meshio, openfoam: independent readers of the solver formats.
+  test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev openmpi-bin xvfb xauth
+    gmsh python3-gmsh python3-meshio openfoam) ;;
   bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac

@@ -152,6 +152,8 @@ TEST(VolGridSurfacePrep, StlSoupsBecomeClosedManifoldsWithTheSameGeometry)
     ASSERT_EQ(soup->GetNumberOfPoints(), 3 * soup->GetNumberOfCells());
 
     vtkNew<vtkVolGridSurfacePrep> prep;
+
+    prep->DiagnosticArraysOn();
     prep->SetInputConnection(reader->GetOutputPort());
     prep->Update();
     vtkPolyData* out = prep->GetOutput();
@@ -178,6 +180,7 @@ TEST(VolGridSurfacePrep, BunnyScanHolesAreFilled)
   reader->Update();
   ASSERT_GT(reader->GetOutput()->GetNumberOfCells(), 60000);
   vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->DiagnosticArraysOn();
   prep->SetInputConnection(reader->GetOutputPort());
   prep->Update();
   vtkPolyData* out = prep->GetOutput();
@@ -209,6 +212,7 @@ TEST(VolGridSurfacePrep, CorpusOrientationAndStitching)
   VOLGRID_SKIP_WITHOUT_CORPUS_FILE("/aero-gmsh/InitialMeshFalcon.msh");
   // casting.off: closed but inward: flipped outward.
   vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->DiagnosticArraysOn();
   prep->SetInputData(readCore("/tetgen-tests/meshlab/casting.off"));
   prep->Update();
   vtkPolyData* out = prep->GetOutput();
@@ -235,6 +239,7 @@ TEST(VolGridSurfacePrep, CorpusOrientationAndStitching)
   // seams; the opening at the symmetry plane (more edges than MaxHoleEdges) stays open and is reported.
   vtkSmartPointer<vtkPolyData> falcon = readCore("/aero-gmsh/InitialMeshFalcon.msh", false);
   vtkNew<vtkVolGridSurfacePrep> stitch;
+  stitch->DiagnosticArraysOn();
   stitch->SetInputData(falcon);
   stitch->Update();
   out = stitch->GetOutput();
@@ -257,6 +262,7 @@ TEST(VolGridSurfacePrep, NonManifoldEdgeIsReportedAndTheSurfaceStillOutput)
   vtkNew<vtkCubeSource> b;
   b->SetBounds(1, 2, 1, 2, 0, 1);
   vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->DiagnosticArraysOn();
   prep->AddInputData(triangulated(a));
   prep->AddInputData(triangulated(b));
   prep->Update();
@@ -297,6 +303,7 @@ TEST(VolGridSurfacePrep, SelfIntersectionsAndOverlappingShellsAreReported)
       points->SetPoint(i, 0.0, 0.0, -0.8);
   }
   vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->DiagnosticArraysOn();
   prep->SetInputData(dented);
   prep->Update();
   vtkPolyData* out = prep->GetOutput();
@@ -313,6 +320,7 @@ TEST(VolGridSurfacePrep, SelfIntersectionsAndOverlappingShellsAreReported)
   other->SetCenter(0.3, 0, 0);
   other->Update();
   vtkNew<vtkVolGridSurfacePrep> overlap;
+  overlap->DiagnosticArraysOn();
   overlap->AddInputConnection(sphere->GetOutputPort());
   overlap->AddInputConnection(other->GetOutputPort());
   overlap->Update();
@@ -342,7 +350,8 @@ TEST(VolGridSurfacePrep, EveryEnclosureIsClosedManifoldOutwardWithTheExactVolume
   for (const Case& c : cases)
   {
     SCOPED_TRACE(c.type);
-    vtkNew<vtkVolGridSurfacePrep> source; // no input: a source
+    vtkNew<vtkVolGridSurfacePrep> source;
+    source->DiagnosticArraysOn(); // no input: a source
     source->SetEnclosure(c.type);
     source->SetEnclosureCenter(1, -2, 3);
     source->SetEnclosureDimensions(c.dims[0], c.dims[1] > 0 ? c.dims[1] : 1, c.dims[2] > 0 ? c.dims[2] : 1);
@@ -365,6 +374,7 @@ TEST(VolGridSurfacePrep, BodyInsideASphereEnclosure)
   vtkNew<vtkSTLReader> reader;
   reader->SetFileName(VOLGRID_SHARED_DATA_DIR "/aero-gmsh/falcon1.stl");
   vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->DiagnosticArraysOn();
   prep->SetInputConnection(reader->GetOutputPort());
   prep->SetEnclosure(vtkVolGridSurfacePrep::ENCLOSURE_SPHERE);
   prep->SetEnclosureScale(10);
@@ -412,6 +422,8 @@ TEST(VolGridSurfacePrep, PartsAndCompositeBlocksGetTheirOwnPatchIds)
   blocks->SetBlock(1, own);
 
   vtkNew<vtkVolGridSurfacePrep> prep;
+
+  prep->DiagnosticArraysOn();
   prep->AddInputConnection(s0->GetOutputPort());
   prep->AddInputConnection(s1->GetOutputPort());
   prep->AddInputData(blocks);
@@ -442,6 +454,7 @@ TEST(VolGridSurfacePrep, PartsAndCompositeBlocksGetTheirOwnPatchIds)
 TEST(VolGridSurfacePrep, OptionsAreClampedAndTheSummaryTableIsComplete)
 {
   vtkNew<vtkVolGridSurfacePrep> prep;
+  prep->DiagnosticArraysOn();
   prep->SetMergeTolerance(1.0);
   EXPECT_EQ(prep->GetMergeTolerance(), 0.01);
   prep->SetEnclosure(42);
@@ -455,6 +468,7 @@ TEST(VolGridSurfacePrep, OptionsAreClampedAndTheSummaryTableIsComplete)
 
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkVolGridSurfacePrep> run;
+  run->DiagnosticArraysOn();
   run->SetInputConnection(sphere->GetOutputPort());
   run->Update();
   vtkTable* table = vtkTable::SafeDownCast(run->GetOutputDataObject(1));
@@ -483,6 +497,8 @@ TEST(VolGridSurfacePrep, QuadsAndStripsAreTriangulatedAndProgressIsReported)
   ASSERT_GT(strips->GetOutput()->GetNumberOfStrips(), 0);
 
   vtkNew<vtkVolGridSurfacePrep> prep;
+
+  prep->DiagnosticArraysOn();
   prep->AddInputConnection(cube->GetOutputPort());
   prep->AddInputConnection(strips->GetOutputPort());
   std::vector<double> progress;
@@ -506,6 +522,7 @@ TEST(VolGridSurfacePrep, QuadsAndStripsAreTriangulatedAndProgressIsReported)
 
   // Abort at the first progress report: the filter stops and leaves the output empty.
   vtkNew<vtkVolGridSurfacePrep> abort;
+  abort->DiagnosticArraysOn();
   abort->AddInputConnection(cube->GetOutputPort());
   abort->AddInputConnection(strips->GetOutputPort());
   vtkNew<vtkCallbackCommand> stopper;

@@ -62,8 +62,17 @@ if patch is not None:
     check(values == {0, 1}, "two PatchId values, wing 0 and enclosure 1 (%s)" % sorted(values))
     wing_patch = sum(1 for i in range(patch.GetNumberOfTuples()) if patch.GetValue(i) == 0)
     check(wing_patch == wing_cells, "the wing keeps its %d triangles (%d)" % (wing_cells, wing_patch))
+check(surface.GetCellData().GetArray("ShellId") is not None, "cell array ShellId")
+check(surface.GetCellData().GetScalars() is not None and surface.GetCellData().GetScalars().GetName() == "PatchId",
+      "coloured by PatchId")
+for name in ["DefectFlags", "OpenEdge", "NonManifoldEdge", "SelfIntersecting", "Degenerate"]:
+    check(surface.GetCellData().GetArray(name) is None, "no diagnostic cell array %s unless asked" % name)
+check(surface.GetPointData().GetArray("NonManifoldVertex") is None, "no NonManifoldVertex unless asked")
+prep.DiagnosticArrays = 1
+diagnosed = fetch(prep, 0)
 for name in ["DefectFlags", "OpenEdge", "NonManifoldEdge", "SelfIntersecting", "Degenerate", "ShellId"]:
-    check(surface.GetCellData().GetArray(name) is not None, "cell array %s" % name)
+    check(diagnosed.GetCellData().GetArray(name) is not None, "cell array %s on request" % name)
+prep.DiagnosticArrays = 0
 check(field(surface, "Meshable") == 1, "meshable")
 check(field(surface, "Shells") == 2, "two shells (%s)" % field(surface, "Shells"))
 check(field(surface, "InwardShells") == 1, "the wing faces away from the domain (inward shells %s)"
@@ -81,6 +90,10 @@ if table is not None and table.IsA("vtkTable"):
     items = table.GetColumnByName("Item")
     names = [items.GetValue(i) for i in range(items.GetNumberOfValues())] if items else []
     check("Self-intersecting pairs" in names and "Open edges" in names, "summary defect rows")
+    inputs = table.GetColumnByName("Input")
+    parts_row = names.index("Parts") if "Parts" in names else -1
+    check(inputs is not None and parts_row >= 0 and inputs.GetValue(parts_row) == "not computed",
+          "a count that was not measured says so in words, not -1")
 edges = fetch(prep, 2)
 check(edges.GetNumberOfCells() == 0, "no defective edge (%d)" % edges.GetNumberOfCells())
 
