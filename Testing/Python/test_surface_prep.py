@@ -168,11 +168,12 @@ with tempfile.TemporaryDirectory() as tmp:
         check(data.GetCellData().GetArray("PatchId") is not None, "the written file has PatchId")
         check(boundary_edges(written) == 0, "the written file is closed")
 
-    closed_bunny = os.path.join(tmp, "bunny.off")
-    code, out, err = run("prep", bunny, closed_bunny, "--json")
-    check(code == 0, "volgrid prep closes the bunny (%d: %s)" % (code, err))
-    code, out, err = run("check", closed_bunny, "--json")
-    check(code == 0, "the prepared bunny checks clean (%d: %s)" % (code, out))
+    if os.path.isfile(bunny):
+        closed_bunny = os.path.join(tmp, "bunny.off")
+        code, out, err = run("prep", bunny, closed_bunny, "--json")
+        check(code == 0, "volgrid prep closes the bunny (%d: %s)" % (code, err))
+        code, out, err = run("check", closed_bunny, "--json")
+        check(code == 0, "the prepared bunny checks clean (%d: %s)" % (code, out))
 
     code, out, err = run("prep", WING, os.path.join(tmp, "x.vtp"), "--enclosure", "torus")
     check(code == 2, "volgrid prep with a bad enclosure exits 2 (%d)" % code)
