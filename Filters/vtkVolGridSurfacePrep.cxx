@@ -257,9 +257,10 @@ int vtkVolGridSurfacePrep::Prepare(
       return;
     }
     // Names: the part's PatchNames (shifted like its ids), else "part<k>" for a part without patches.
-    for (const auto& name : VolGridReadLabelNames(part, "PatchNames"))
-      if (hasPatchArray)
-        mesh.patchNames[name.first + nextPatch] = name.second;
+    for (vtkDataSet* piece : pieces)
+      if (piece && hasPatchArray)
+        for (const auto& name : VolGridReadLabelNames(piece, "PatchNames"))
+          mesh.patchNames[name.first + nextPatch] = name.second;
     if (!hasPatchArray)
       mesh.patchNames[nextPatch] = "part" + std::to_string(parts);
     int32_t maxPatch = nextPatch;
