@@ -19,9 +19,11 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "AvailableMemory.h"
 #include "Delaunay.h"
 #include "MeshChecker.h"
 #include "Mesher.h"
+#include "SizeEstimate.h"
 #include "SurfaceMesh.h"
 
 #include <cstdint>
@@ -189,6 +191,16 @@ int vtkVolGridTetrahedralize::MeshSurface(
       im.clusterPoints = std::move(xyz);
       im.clusterSizes = std::move(sizes);
     }
+  }
+  // Absurd sizes are refused before any work (not after running out of memory).
+  const volgrid::SizeEstimate estimate = volgrid::estimateMeshSize(surface, options.improvement);
+  if (estimate.bytes > volgrid::availableMemoryBytes())
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: these sizes would make about " << estimate.tets << " tets on "
+                  << estimate.points << " points, needing about " << estimate.bytes / 1073741824.0
+                  << " GiB of memory, more than the " << volgrid::availableMemoryBytes() / 1073741824.0
+                  << " GiB available: refused before any work (choose a larger MaxEdgeLength, MaxVolume or SizeScale).");
+    return 0;
   }
   volgrid::MesherResult result;
   VolGridFilterProgress progress(this);
