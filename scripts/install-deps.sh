@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages VolGrid needs, only those missing (idempotent, quiet when all are there).
 #   scripts/install-deps.sh build   what `make build` needs: compilers, CMake, ParaView's SDK, GoogleTest
-#   scripts/install-deps.sh test    + what the tests compare against (TetGen, CGAL)
+#   scripts/install-deps.sh test    + what the tests compare against (TetGen, CGAL) and clang for the fuzzers
 #   scripts/install-deps.sh bench   + what the benchmarks compare against
 set -euo pipefail
 level="${1:-build}"
@@ -14,7 +14,8 @@ packages=(build-essential cmake pkg-config libgtest-dev
   zlib1g-dev)
 case "$level" in
   build) ;;
-  test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev) ;;
+  # clang, libclang-rt-14-dev: the libFuzzer reader targets (Testing/Fuzz, -fsanitize=fuzzer,address,undefined).
+  test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev clang libclang-rt-14-dev) ;;
   bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac
