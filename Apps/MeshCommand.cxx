@@ -40,7 +40,7 @@ const char* kUsage =
   "Density (field points, paper 7.2; on by default):\n"
   "  --alpha A            eq. 4: a tet gets a point when its centroid is farther than A*h from its vertices\n"
   "                       (default 0.75: mean edge length close to h; smaller = more points)\n"
-  "  --beta B             eq. 5: no two field points closer than B*h (default 0.4)\n"
+  "  --beta B             eq. 5: no two field points closer than B*h (default 0.4; 0: no minimum spacing)\n"
   "  --size-scale S       h at the boundary = S x the boundary's point spacing (default 1)\n"
   "  --gradation G        size growth between neighbours, h(v) <= h(u) + (G-1)|uv|; away from the boundary\n"
   "                       h grows at that rate (default 1.5; smaller = finer)\n"

@@ -44,6 +44,8 @@ const char* kUsage =
   "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n"
   "  --passes N      optimisation pass limit, an integer (default 8; 0: no optimisation passes)\n"
   "  --gradation G   > 1 grades the targets over the mesh edges first (default 0: no grading)\n"
+  "  --alpha A       field point density as for mesh (default 0.75; smaller = more points)\n"
+  "  --beta B        minimum spacing of new points in units of the target (default 0.55; 0: none)\n"
   "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
   "                  the available memory holds)\n"
   "  OUT.vtu is replaced atomically, only when it was written whole.\n";
