@@ -263,6 +263,14 @@ int vtkVolGridTetrahedralize::MeshSurface(
 int vtkVolGridTetrahedralize::TetrahedralizePoints(vtkPointSet* input, vtkUnstructuredGrid* output)
 {
   const vtkIdType numInput = input->GetNumberOfPoints();
+  const volgrid::SizeEstimate estimate = volgrid::estimateDelaunaySize(static_cast<double>(numInput));
+  if (estimate.bytes > volgrid::availableMemoryBytes())
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: " << numInput << " points would make about " << estimate.tets
+                  << " tets, needing about " << estimate.bytes / 1073741824.0 << " GiB of memory, more than the "
+                  << volgrid::availableMemoryBytes() / 1073741824.0 << " GiB available: refused before any work.");
+    return 0;
+  }
   std::vector<double> xyz(3 * static_cast<size_t>(numInput));
   for (vtkIdType i = 0; i < numInput; ++i)
   {
