@@ -22,6 +22,11 @@ std::string count(double n)
   std::snprintf(buffer, sizeof buffer, "%.2g", n);
   return buffer;
 }
+// "about 1.4e+10", but "more than 1e+308" as it is.
+std::string about(const std::string& figure)
+{
+  return figure.compare(0, 9, "more than") == 0 ? figure : "about " + figure;
+}
 } // namespace
 
 bool parseMaxTets(const char* command, const char* text, long long& maxTets)
@@ -64,9 +69,10 @@ bool refuseIfTooLarge(const char* command, const SizeEstimate& e, long long maxT
       humanBytes(available).c_str());
   limit = buffer;
   std::fprintf(stderr,
-    "volgrid %s: %s would make about %s tets on %s points, needing about %s of memory; that exceeds the "
+    "volgrid %s: %s would make %s tets on %s points, needing %s of memory; that exceeds the "
     "limit of %s. Refused before any work: %s.\n",
-    command, cause.c_str(), count(e.tets).c_str(), count(e.points).c_str(), humanBytes(e.bytes).c_str(),
+    command, cause.c_str(), about(count(e.tets)).c_str(), about(count(e.points)).c_str(),
+    about(humanBytes(e.bytes)).c_str(),
     limit.c_str(), e.driver == SizeDriver::PointCount ? "use fewer points" : "choose a coarser size");
   return true;
 }
