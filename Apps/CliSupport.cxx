@@ -44,6 +44,15 @@ double peakResidentMiB()
   return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux reports KiB
 }
 
+std::string jsonNumber(double v, const char* format)
+{
+  if (!std::isfinite(v))
+    return "null";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, v);
+  return buffer;
+}
+
 std::string jsonString(const std::string& s)
 {
   std::string out = "\"";

@@ -15,6 +15,10 @@ bool parseDouble(const char* command, const char* option, const char* text, doub
 // Peak resident memory of this process so far, in MiB.
 double peakResidentMiB();
 
+// A JSON number printed with `format` ("%.17g", "%.4f" ...), or null when v is NaN or infinite (JSON has no
+// spelling for those).
+std::string jsonNumber(double v, const char* format = "%.17g");
+
 // A JSON string literal for s (quotes and escapes included).
 std::string jsonString(const std::string& s);
 

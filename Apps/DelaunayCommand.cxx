@@ -2,6 +2,8 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "NodeFile.h"
+#include "OutputPaths.h"
+#include "SizeLimit.h"
 #include "VolGridConversion.h"
 #include "XmlDataFiles.h"
 
@@ -27,7 +29,9 @@ const char* kUsage =
   "                        [--threads 0|1|2]\n"
   "  Tetrahedralizes the points exactly (Delaunay, symbolic tie-breaking). Exactly coincident points\n"
   "  are merged. --check verifies orientation, adjacency, empty spheres and the hull (exit 1 if not).\n"
-  "  --threads: 0 (default) = all cores, at most 2; the output is the same for any value.\n";
+  "  --threads: 0 (default) = all cores, at most 2; the output is the same for any value.\n"
+  "  --max-tets N: refuse before any work when about N tets would be exceeded (default: what the available\n"
+  "  memory holds); at most 67108864 points are supported. --out FILE.vtu is replaced atomically.\n";
 
 struct Arguments
 {
@@ -36,6 +40,7 @@ struct Arguments
   long long seed = 1;
   bool check = false;
   bool json = false;
+  long long maxTets = 0;
   std::string out;
   volgrid::DelaunayOptions options;
 };
@@ -63,6 +68,12 @@ bool parseArguments(int argc, char** argv, Arguments& args)
         std::fprintf(stderr, "volgrid delaunay: --random needs a non-negative count\n");
         return false;
       }
+    }
+    else if (a == "--max-tets")
+    {
+      const char* v = value("--max-tets");
+      if (!v || !volgrid::cli::parseMaxTets("delaunay", v, args.maxTets))
+        return false;
     }
     else if (a == "--seed")
     {
@@ -138,6 +149,14 @@ bool parseArguments(int argc, char** argv, Arguments& args)
   return true;
 }
 
+// The Delaunay kernel's own limit (Delaunay.cxx: 2^29 / 8 points).
+constexpr long long kMaxPoints = (1ll << 29) / 8;
+
+bool refuseIfTooLarge(const Arguments& args, double points, const std::string& cause)
+{
+  return volgrid::cli::refuseIfTooLarge("delaunay", volgrid::estimateDelaunaySize(points), args.maxTets, cause);
+}
+
 // Uniform random points in the unit cube, the same for a given seed on every run.
 std::vector<double> randomPoints(long long n, long long seed)
 {
@@ -158,6 +177,11 @@ int runDelaunayCommand(int argc, char** argv)
   {
     return 2;
   }
+  if (!args.out.empty())
+  {
+    if (const int code = volgrid::cli::checkOutputPath("delaunay", "--out", args.out, { "vtu" }, { args.nodeFile }))
+      return code;
+  }
   std::vector<double> xyz;
   if (!args.nodeFile.empty())
   {
@@ -170,9 +194,20 @@ int runDelaunayCommand(int argc, char** argv)
   }
   else
   {
+    if (args.randomCount > kMaxPoints)
+    {
+      std::fprintf(stderr, "volgrid delaunay: --random %lld: at most %lld points are supported (that many would "
+                           "make about %.2g tets); nothing was done\n",
+        args.randomCount, kMaxPoints, volgrid::estimateDelaunaySize(static_cast<double>(args.randomCount)).tets);
+      return 1;
+    }
+    if (refuseIfTooLarge(args, static_cast<double>(args.randomCount), "--random " + std::to_string(args.randomCount)))
+      return 1;
     xyz = randomPoints(args.randomCount, args.seed);
   }
   const size_t n = xyz.size() / 3;
+  if (!args.nodeFile.empty() && refuseIfTooLarge(args, static_cast<double>(n), "'" + args.nodeFile + "' (" + std::to_string(n) + " points)"))
+    return 1;
 
   volgrid::TetMesh mesh;
   std::vector<int32_t> inputToVertex;
@@ -196,7 +231,10 @@ int runDelaunayCommand(int argc, char** argv)
     checkSeconds = checkWatch.seconds();
   }
 
-  if (!args.out.empty())
+  if (args.check && !check.valid)
+    std::fprintf(stderr, "volgrid delaunay: check failed: %s%s\n", check.summary().c_str(),
+      args.out.empty() ? "" : " (nothing written)");
+  else if (!args.out.empty())
   {
     std::vector<int32_t> kept;
     for (size_t i = 0; i < n; ++i)

@@ -2,12 +2,16 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "MeshExport.h"
+#include "OutputPaths.h"
+#include "SizeLimit.h"
 #include "SurfaceFile.h"
 #include "VolGridConversion.h"
 #include "XmlDataFiles.h"
 
 #include "BoundaryCheck.h"
+#include "CoordinateRange.h"
 #include "Mesher.h"
+#include "SizeEstimate.h"
 #include "SurfaceMesh.h"
 
 #include "vtkNew.h"
@@ -18,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 // Defined in RefineCommand.cxx: the points of a data set (VTK XML or legacy, or text "x y z [v]" lines)
@@ -39,11 +44,12 @@ const char* kUsage =
   "Density (field points, paper 7.2; on by default):\n"
   "  --alpha A            eq. 4: a tet gets a point when its centroid is farther than A*h from its vertices\n"
   "                       (default 0.75: mean edge length close to h; smaller = more points)\n"
-  "  --beta B             eq. 5: no two field points closer than B*h (default 0.4)\n"
+  "  --beta B             eq. 5: no two field points closer than B*h (default 0.4; 0: no minimum spacing)\n"
   "  --size-scale S       h at the boundary = S x the boundary's point spacing (default 1)\n"
   "  --gradation G        size growth between neighbours, h(v) <= h(u) + (G-1)|uv|; away from the boundary\n"
   "                       h grows at that rate (default 1.5; smaller = finer)\n"
-  "  --max-edge L         global cap on the target edge length       --max-volume V   cap on tet volume\n"
+  "  --max-edge L         global cap on the target edge length (default 0: no cap)\n"
+  "  --max-volume V       cap on tet volume (default 0: no cap)\n"
   "  --no-field-points    boundary points (and recovery's interior points) only\n"
   "Clustering and sizing:\n"
   "  --sizing FILE        a data set (.vtu .vtp .vtk, or text 'x y z size' lines) whose point array\n"
@@ -53,9 +59,13 @@ const char* kUsage =
   "Quality (optimisation: flips, edge removal, smoothing; on by default):\n"
   "  --quality            optimise (default)                    --no-optimize    do not\n"
   "  --target-angle DEG   target for min(dihedral, 180 - max dihedral) (default 18)\n"
-  "  --passes N           optimisation pass limit (default 8)   --no-smoothing   flips only\n"
-  "Threads:\n"
-  "  --threads N          0 (default) = all cores; the mesh is byte-identical for any N\n";
+  "  --passes N           optimisation pass limit, an integer (default 8; 0: no optimisation passes)\n"
+  "  --no-smoothing       flips only\n"
+  "Limits:\n"
+  "  --max-tets N         refuse before any work when the mesh is estimated to exceed N tets (default:\n"
+  "                       what the available memory holds)\n"
+  "  --threads N          0 (default) = all cores; the mesh is byte-identical for any N\n"
+  "Writes are atomic: OUT is replaced only when the whole file was written, never on failure.\n";
 
 struct Arguments
 {
@@ -66,6 +76,8 @@ struct Arguments
   bool check = false;
   std::string sizingFile, clusterFile, sizeArray;
   double clusterSize = 0;
+  long long maxTets = 0;
+  std::map<std::string, std::string> given; // option -> its text, to name it in messages
   volgrid::MesherOptions options;
 };
 
@@ -98,13 +110,35 @@ bool parseArguments(int argc, char** argv, Arguments& args)
       args.options.improvement.optimize = false;
     else if (a == "--no-smoothing")
       args.options.improvement.optimization.smoothing = false;
+    else if (a == "--passes" || a == "--threads" || a == "--max-tets")
+    {
+      const char* v = value(a.c_str());
+      long long n = 0;
+      if (!v || !volgrid::cli::parseLong("mesh", a.c_str(), v, n))
+        return false;
+      if (a == "--max-tets")
+      {
+        if (!volgrid::cli::parseMaxTets("mesh", v, args.maxTets))
+          return false;
+      }
+      else if (n < 0 || n > (a == "--passes" ? 1000 : 1024))
+      {
+        std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
+        return false;
+      }
+      else if (a == "--passes")
+        args.options.improvement.optimization.maxPasses = static_cast<int>(n);
+      else
+        args.options.threads = static_cast<int>(n);
+    }
     else if (a == "--alpha" || a == "--beta" || a == "--gradation" || a == "--max-edge" || a == "--max-volume" ||
-      a == "--target-angle" || a == "--passes" || a == "--cluster-size" || a == "--size-scale")
+      a == "--target-angle" || a == "--cluster-size" || a == "--size-scale")
     {
       const char* v = value(a.c_str());
       double x = 0;
       if (!v || !volgrid::cli::parseDouble("mesh", a.c_str(), v, x))
         return false;
+      args.given[a] = v;
       volgrid::ImprovementOptions& im = args.options.improvement;
       bool ok = true;
       if (a == "--alpha")
@@ -121,8 +155,6 @@ bool parseArguments(int argc, char** argv, Arguments& args)
         ok = x >= 0, im.fieldPointOptions.maxVolume = x;
       else if (a == "--target-angle")
         ok = x > 0 && x < 60, im.optimization.targetDegrees = x;
-      else if (a == "--passes")
-        ok = x >= 0 && x <= 1000, im.optimization.maxPasses = static_cast<int>(x);
       else
         ok = x > 0, args.clusterSize = x;
       if (!ok)
@@ -130,19 +162,6 @@ bool parseArguments(int argc, char** argv, Arguments& args)
         std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
         return false;
       }
-    }
-    else if (a == "--threads")
-    {
-      const char* v = value("--threads");
-      long long t = 0;
-      if (!v || !volgrid::cli::parseLong("mesh", "--threads", v, t))
-        return false;
-      if (t < 0 || t > 4096)
-      {
-        std::fprintf(stderr, "volgrid mesh: --threads is 0 (all cores) or a count up to 4096, not %lld\n", t);
-        return false;
-      }
-      args.options.threads = static_cast<int>(t);
     }
     else if (a == "--sizing" || a == "--cluster" || a == "--size-array")
     {
@@ -225,6 +244,23 @@ bool writeLegacy(const std::string& path, vtkUnstructuredGrid* data)
   return true;
 }
 
+// The option (with its value) that drives the estimate, as the user typed it.
+std::string sizeCause(const Arguments& args, volgrid::SizeDriver driver)
+{
+  auto named = [&](const char* option) {
+    const auto it = args.given.find(option);
+    return std::string(option) + " " + (it == args.given.end() ? std::string("(default)") : it->second);
+  };
+  switch (driver)
+  {
+    case volgrid::SizeDriver::MaxEdge: return named("--max-edge");
+    case volgrid::SizeDriver::MaxVolume: return named("--max-volume");
+    case volgrid::SizeDriver::SizeScale: return named("--size-scale");
+    case volgrid::SizeDriver::Alpha: return named("--alpha");
+    default: return "the surface's point spacing of '" + args.surface + "'";
+  }
+}
+
 bool write(const std::string& path, vtkDataSet* data)
 {
   if (path.size() > 4 && path.compare(path.size() - 4, 4, ".vtk") == 0 && vtkUnstructuredGrid::SafeDownCast(data))
@@ -251,6 +287,20 @@ int runMeshCommand(int argc, char** argv)
   bool vtkOutput = true;
   if (!volgrid::cli::chooseFormat("mesh", args.out, exportRequest, format, vtkOutput))
     return 2;
+  const std::vector<std::string> inputs = { args.surface, args.sizingFile, args.clusterFile };
+  // chooseFormat accepted OUT's format; an OpenFOAM case is a directory, checked by its writer.
+  const std::vector<std::string> outExtensions =
+    vtkOutput ? std::vector<std::string>{ "vtu", "vtk" } : std::vector<std::string>{ volgrid::surfaceFileExtension(args.out) };
+  if (format != volgrid::MeshFormat::OpenFOAM)
+    if (const int code = volgrid::cli::checkOutputPath("mesh", "OUT", args.out, outExtensions, inputs))
+      return code;
+  if (!args.boundaryOut.empty())
+  {
+    std::vector<std::string> notThese = inputs;
+    notThese.push_back(args.out);
+    if (const int code = volgrid::cli::checkOutputPath("mesh", "--boundary", args.boundaryOut, { "vtp" }, notThese))
+      return code;
+  }
 
   volgrid::SurfaceMesh surface;
   std::string readInfo;
@@ -261,6 +311,16 @@ int runMeshCommand(int argc, char** argv)
     std::fprintf(stderr, "volgrid mesh: %s\n", read.message.c_str());
     return 1;
   }
+
+  const volgrid::Status range = volgrid::checkCoordinateRange(surface, args.surface);
+  if (!range.ok())
+  {
+    std::fprintf(stderr, "volgrid mesh: %s\n", range.message.c_str());
+    return 1;
+  }
+  const volgrid::SizeEstimate estimate = volgrid::estimateMeshSize(surface, args.options.improvement);
+  if (volgrid::cli::refuseIfTooLarge("mesh", estimate, args.maxTets, sizeCause(args, estimate.driver)))
+    return 1;
 
   args.options.verify = args.check;
   volgrid::MesherResult result;
@@ -287,16 +347,21 @@ int runMeshCommand(int argc, char** argv)
   volgrid::SolverMesh solverMesh; // named patches; --patch applied to result.boundaryPatch too
   if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh, !vtkOutput))
     return 1;
-  vtkNew<vtkUnstructuredGrid> volume;
-  vtkNew<vtkPolyData> boundarySurface;
-  VolGridFillFromMesherResult(result, volume, boundarySurface);
-  VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, volume, boundarySurface);
-  if (!vtkOutput && !volgrid::cli::writeSolverOutput("mesh", args.out, format, solverMesh, exportRequest, args.json))
-    return 1;
-  if (vtkOutput && !write(args.out, volume.Get()))
-    return 1;
-  if (!args.boundaryOut.empty() && !write(args.boundaryOut, boundarySurface.Get()))
-    return 1;
+  // A failed --check leaves the earlier output files as they were.
+  const bool checkFailed = args.check && !(boundaryPreserved && boundary.relativeVolumeError <= 1e-9);
+  if (!checkFailed)
+  {
+    vtkNew<vtkUnstructuredGrid> volume;
+    vtkNew<vtkPolyData> boundarySurface;
+    VolGridFillFromMesherResult(result, volume, boundarySurface);
+    VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, volume, boundarySurface);
+    if (!vtkOutput && !volgrid::cli::writeSolverOutput("mesh", args.out, format, solverMesh, exportRequest, args.json))
+      return 1;
+    if (vtkOutput && !write(args.out, volume.Get()))
+      return 1;
+    if (!args.boundaryOut.empty() && !write(args.boundaryOut, boundarySurface.Get()))
+      return 1;
+  }
 
   const volgrid::MesherStatistics& s = result.stats;
   // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
@@ -306,13 +371,14 @@ int runMeshCommand(int argc, char** argv)
     dihedral = volgrid::summarizeDihedrals(outMesh);
   if (args.json)
   {
+    const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
     std::printf("{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
                 "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
                 "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
-                "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %.17g, "
-                "\"enclosed_volume\": %.17g, \"volume_relative_error\": %.3g, \"field_points\": %lld, "
-                "\"cluster_points\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, "
-                "\"share_below_10\": %.6g, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
+                "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %s, "
+                "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
+                "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
+                "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
                 "\"seconds_improvement\": %.6f, "
                 "\"seconds\": %.6f, "
                 "\"peak_rss_mb\": %.1f}\n",
@@ -321,10 +387,11 @@ int runMeshCommand(int argc, char** argv)
       static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
       static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets),
       static_cast<long long>(s.flips), s.recoveryAttempts, static_cast<long long>(s.steinerInterior),
-      static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", boundary.tetVolume,
-      s.enclosedVolume, boundary.relativeVolumeError, static_cast<long long>(s.improvement.fieldPoints),
-      static_cast<long long>(s.improvement.clusterPoints), dihedral.minDihedral, dihedral.maxDihedral,
-      dihedral.shareBelow10(), static_cast<long long>(s.improvement.boundaryForcedBelow10),
+      static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", json(boundary.tetVolume).c_str(),
+      json(s.enclosedVolume).c_str(), json(boundary.relativeVolumeError, "%.3g").c_str(),
+      static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
+      json(dihedral.minDihedral, "%.4f").c_str(), json(dihedral.maxDihedral, "%.4f").c_str(),
+      json(dihedral.shareBelow10(), "%.6g").c_str(), static_cast<long long>(s.improvement.boundaryForcedBelow10),
       static_cast<long long>(s.forcedTets), s.secondsImprovement,
       seconds, volgrid::cli::peakResidentMiB());
   }
@@ -347,9 +414,9 @@ int runMeshCommand(int argc, char** argv)
       boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
       boundary.relativeVolumeError);
   }
-  if (args.check && !(boundaryPreserved && boundary.relativeVolumeError <= 1e-9))
+  if (checkFailed)
   {
-    std::fprintf(stderr, "volgrid mesh: check failed: %s\n", boundary.summary().c_str());
+    std::fprintf(stderr, "volgrid mesh: check failed (nothing written): %s\n", boundary.summary().c_str());
     return 1;
   }
   return 0;

@@ -6,6 +6,7 @@
 // output is still written) or a file cannot be read or written, 2 for bad arguments.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "OutputPaths.h"
 #include "SurfaceFile.h"
 
 #include "VolGridSurfaceConversion.h"
@@ -38,8 +39,9 @@ const char* kUsage =
   "  --center X,Y,Z --dimensions A[,B[,C]]   explicit enclosure (then no input is needed): box edges;\n"
   "                        sphere, hemisphere radius; cylinder radius, height; ellipsoid semi-axes\n"
   "  --axis x|y|z          cylinder / hemisphere axis (default z)\n"
-  "  --edge-length L       target edge length of the enclosure (default: 1/16 of its size)\n"
-  "  --merge-tolerance T   weld points closer than T * bounding-box diagonal (default 1e-6)\n"
+  "  --edge-length L       target edge length of the enclosure (default 0: 1/16 of its size)\n"
+  "  --merge-tolerance T   weld points closer than T * bounding-box diagonal (default 1e-6; 0: exactly\n"
+  "                        coincident points only, like --exact)\n"
   "  --exact               merge exactly coincident points only\n"
   "  --fill-holes N        fill holes of at most N edges (default 200; 0: leave holes open)\n"
   "  --no-orient           keep the triangles' orientation\n"
@@ -251,9 +253,8 @@ int runPrepCommand(int argc, char** argv)
     return usage("missing OUT");
   const std::string out = files.back();
   files.pop_back();
-  const std::string outExt = volgrid::surfaceFileExtension(out);
-  if (outExt != "vtp" && outExt != "vtk" && outExt != "stl" && outExt != "off")
-    return usage("OUT must end in .vtp, .vtk, .stl or .off: '" + out + "'");
+  if (const int code = volgrid::cli::checkOutputPath("prep", "OUT", out, { "vtp", "vtk", "stl", "off" }, files))
+    return code;
   if (haveCenter != haveDimensions)
     return usage("--center and --dimensions go together");
   if (haveCenter)

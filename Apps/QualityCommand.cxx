@@ -1,11 +1,15 @@
 // volgrid quality MESH [--json] [--bins N] [--metric NAME] [--threads N]
-// Runs vtkVolGridQuality on a volume grid (.vtu, .vtk) or a surface (.vtp, .vtk, .stl, .obj, .ply) and
+// Runs vtkVolGridQuality on a volume grid (.vtu, .vtk) or a surface (.vtp, .vtk, or any surface file that
+// `volgrid mesh` reads, through the same Core readers) and
 // prints a summary table, or with --json one JSON line. Errors go to stderr with a non-zero exit code:
 // 2 for bad arguments, 1 for unreadable input.
 #include "MeshReader.h"
 #include "VolGridConversion.h"
 #include "Commands.h"
+#include "SurfaceFile.h"
 #include "XmlDataFiles.h"
+
+#include "VolGridSurfaceConversion.h"
 
 #include "vtkVolGridQuality.h"
 
@@ -15,17 +19,15 @@
 #include "vtkDataSetReader.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,31 +36,58 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
+
 namespace
 {
 int usage(const char* problem)
 {
   std::fprintf(stderr, "volgrid quality: %s\n", problem);
   std::fprintf(stderr,
-    "usage: volgrid quality MESH.{vtu,vtk,vtp,stl,obj,ply} [--json] [--bins N] [--metric NAME] [--threads N]\n"
+    "usage: volgrid quality MESH.{vtu,vtk,vtp} | SURFACE [--json] [--bins N] [--metric NAME] [--threads N]\n"
+    "  SURFACE: any file `volgrid mesh` reads (.stl .obj .ply .off .mesh .poly .smesh .msh, also .gz)\n"
     "  --bins N      histogram bins per metric (1..10000, default 20)\n"
     "  --metric NAME metric copied to the Quality array (AspectRatio, MinDihedralAngle, ...)\n"
-    "  --threads N   threads (default: all cores)\n");
+    "  --threads N   threads (default 0: all cores)\n");
   return 2;
 }
 
-std::string lowerExtension(const std::string& path)
+// A legacy .vtk data set (VTK's reader, after checking that the path is a regular file).
+vtkSmartPointer<vtkDataSet> readLegacy(const std::string& path)
 {
-  const size_t dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? std::string() : path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
+  struct stat st{};
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+  {
+    std::fprintf(stderr, "volgrid quality: '%s' is not a readable file\n", path.c_str());
+    return nullptr;
+  }
+  vtkNew<vtkDataSetReader> r;
+  r->SetFileName(path.c_str());
+  r->Update();
+  return vtkDataSet::SafeDownCast(r->GetOutput());
+}
+
+// A surface through the hardened Core readers that `volgrid mesh` uses (strict numbers, bounded counts,
+// bounded gzip), as poly data with its PatchId.
+vtkSmartPointer<vtkDataSet> readSurfaceFile(const std::string& path)
+{
+  volgrid::SurfaceMesh surface;
+  std::string info;
+  const volgrid::Status status = volgrid::readAnySurface(path, surface, info, true);
+  if (!status.ok())
+  {
+    std::fprintf(stderr, "volgrid quality: %s\n", status.message.c_str());
+    return nullptr;
+  }
+  vtkNew<vtkPolyData> poly;
+  VolGridSurfaceMeshToPolyData(surface, poly, "PatchId");
+  return poly.Get();
 }
 
 // Reads the file into a vtkUnstructuredGrid or vtkPolyData; nullptr (with a message) on failure.
 vtkSmartPointer<vtkDataSet> readMesh(const std::string& path)
 {
-  const std::string ext = lowerExtension(path);
+  const std::string ext = volgrid::surfaceFileExtension(path);
   vtkSmartPointer<vtkDataSet> data;
   if (volgrid::solverMeshReaderSupports(path)) // a solver's tet mesh (.mesh): Core's reader
   {
@@ -75,44 +104,28 @@ vtkSmartPointer<vtkDataSet> readMesh(const std::string& path)
   }
   if (volgrid::cli::isXmlDataExtension(ext))
   {
-    std::string ignored; // the message below names the file
-    data = volgrid::cli::readXmlDataSet(path, ignored);
+    std::string error;
+    data = volgrid::cli::readXmlDataSet(path, error);
+    if (!data)
+    {
+      std::fprintf(stderr, "volgrid quality: %s\n", error.c_str());
+      return nullptr;
+    }
   }
   else if (ext == "vtk")
-  {
-    vtkNew<vtkDataSetReader> r;
-    r->SetFileName(path.c_str());
-    r->Update();
-    data = r->GetOutput();
-  }
-  else if (ext == "stl")
-  {
-    vtkNew<vtkSTLReader> r; // merges coincident points: the surface topology is meaningful
-    r->SetFileName(path.c_str());
-    r->Update();
-    data = r->GetOutput();
-  }
-  else if (ext == "obj")
-  {
-    vtkNew<vtkOBJReader> r;
-    r->SetFileName(path.c_str());
-    r->Update();
-    data = r->GetOutput();
-  }
-  else if (ext == "ply")
-  {
-    vtkNew<vtkPLYReader> r;
-    r->SetFileName(path.c_str());
-    r->Update();
-    data = r->GetOutput();
-  }
+    data = readLegacy(path);
+  else if (volgrid::surfaceFileSupported(path))
+    data = readSurfaceFile(path);
   else
   {
-    std::fprintf(stderr, "volgrid quality: unknown file type '.%s' (expected vtu, vtk, vtp, stl, obj or ply)\n",
-      ext.c_str());
+    std::fprintf(stderr, "volgrid quality: '%s': unknown file type '.%s' (expected .vtu, .vtk, .vtp or a surface: "
+                         ".stl .obj .ply .off .mesh .poly .smesh .msh, each also as .gz)\n",
+      path.c_str(), ext.c_str());
     return nullptr;
   }
-  if (!data || (!vtkUnstructuredGrid::SafeDownCast(data) && !vtkPolyData::SafeDownCast(data)))
+  if (!data)
+    return nullptr;
+  if (!vtkUnstructuredGrid::SafeDownCast(data) && !vtkPolyData::SafeDownCast(data))
   {
     std::fprintf(stderr, "volgrid quality: '%s' is neither an unstructured grid nor a surface\n", path.c_str());
     return nullptr;
@@ -189,8 +202,9 @@ int runQualityCommand(int argc, char** argv)
       if (!v)
         return 2;
       char* end = nullptr;
+      errno = 0;
       const long n = std::strtol(v, &end, 10);
-      if (*end != '\0' || n < (arg == "--bins" ? 1 : 0) || n > 10000)
+      if (end == v || *end != '\0' || errno != 0 || n < (arg == "--bins" ? 1 : 0) || n > 10000)
         return usage((arg + " needs an integer" + (arg == "--bins" ? " in 1..10000" : " >= 0")).c_str());
       (arg == "--bins" ? bins : threads) = static_cast<int>(n);
     }
@@ -217,11 +231,6 @@ int runQualityCommand(int argc, char** argv)
   }
   if (path.empty())
     return usage("no input file");
-  if (!std::ifstream(path).good())
-  {
-    std::fprintf(stderr, "volgrid quality: cannot open '%s'\n", path.c_str());
-    return 1;
-  }
   vtkSmartPointer<vtkDataSet> mesh = readMesh(path);
   if (!mesh)
     return 1;

@@ -4,6 +4,8 @@
 // the cell array Region, if present) is kept exactly.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "OutputPaths.h"
+#include "SizeLimit.h"
 #include "VolGridConversion.h"
 #include "XmlDataFiles.h"
 
@@ -25,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -38,7 +41,14 @@ const char* kUsage =
   "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
   "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
   "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
-  "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n";
+  "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n"
+  "  --passes N      optimisation pass limit, an integer (default 8; 0: no optimisation passes)\n"
+  "  --gradation G   > 1 grades the targets over the mesh edges first (default 0: no grading)\n"
+  "  --alpha A       field point density as for mesh (default 0.75; smaller = more points)\n"
+  "  --beta B        minimum spacing of new points in units of the target (default 0.55; 0: none)\n"
+  "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
+  "                  the available memory holds)\n"
+  "  OUT.vtu is replaced atomically, only when it was written whole.\n";
 
 bool endsWith(const std::string& s, const std::string& e)
 {
@@ -78,6 +88,19 @@ std::set<std::array<int32_t, 3>> boundaryFaces(const volgrid::TetMesh& mesh)
       }
   });
   return faces;
+}
+// The smallest valid target, as text ("none" when there is none).
+std::string smallestTarget(const std::vector<double>& target)
+{
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const double t : target)
+    if (t > 0 && std::isfinite(t))
+      smallest = std::min(smallest, t);
+  if (!std::isfinite(smallest))
+    return "none";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", smallest);
+  return buffer;
 }
 } // namespace
 
@@ -157,6 +180,7 @@ int runRefineCommand(int argc, char** argv)
   std::vector<std::string> positional;
   std::string arrayName;
   bool json = false;
+  long long maxTets = 0;
   volgrid::RefineOptions options;
   options.fieldPointOptions.alpha = volgrid::ImprovementOptions().fieldPointOptions.alpha;
   options.optimization = volgrid::ImprovementOptions().optimization;
@@ -172,8 +196,30 @@ int runRefineCommand(int argc, char** argv)
       json = true;
     else if (a == "--no-optimize")
       options.optimize = false;
-    else if (a == "--size-array" || a == "--alpha" || a == "--beta" || a == "--gradation" || a == "--target-angle" ||
-      a == "--passes")
+    else if (a == "--passes" || a == "--max-tets")
+    {
+      long long n = 0;
+      if (i + 1 >= argc || !volgrid::cli::parseLong("refine", a.c_str(), argv[i + 1], n))
+      {
+        if (i + 1 >= argc)
+          std::fprintf(stderr, "volgrid refine: %s needs a value\n", a.c_str());
+        return 2;
+      }
+      const char* v = argv[++i];
+      if (a == "--max-tets")
+      {
+        if (!volgrid::cli::parseMaxTets("refine", v, maxTets))
+          return 2;
+      }
+      else if (n < 0 || n > 1000)
+      {
+        std::fprintf(stderr, "volgrid refine: --passes is out of range (0..1000): %s\n", v);
+        return 2;
+      }
+      else
+        options.optimization.maxPasses = static_cast<int>(n);
+    }
+    else if (a == "--size-array" || a == "--alpha" || a == "--beta" || a == "--gradation" || a == "--target-angle")
     {
       if (i + 1 >= argc)
       {
@@ -196,10 +242,8 @@ int runRefineCommand(int argc, char** argv)
         ok = x >= 0, options.fieldPointOptions.beta = x;
       else if (a == "--gradation")
         ok = x >= 1, options.gradation = x;
-      else if (a == "--target-angle")
-        ok = x > 0 && x < 60, options.optimization.targetDegrees = x;
       else
-        ok = x >= 0 && x <= 1000, options.optimization.maxPasses = static_cast<int>(x);
+        ok = x > 0 && x < 60, options.optimization.targetDegrees = x;
       if (!ok)
       {
         std::fprintf(stderr, "volgrid refine: %s is out of range: %s\n", a.c_str(), v);
@@ -220,6 +264,8 @@ int runRefineCommand(int argc, char** argv)
     return 2;
   }
 
+  if (const int code = volgrid::cli::checkOutputPath("refine", "OUT", positional[1], { "vtu" }, { positional[0] }))
+    return code;
   vtkSmartPointer<vtkDataSet> data = readDataSet(positional[0]);
   auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
   if (!grid || grid->GetNumberOfCells() == 0)
@@ -262,6 +308,12 @@ int runRefineCommand(int argc, char** argv)
     for (vtkIdType c = 0; c < nc; ++c)
       regions[c] = static_cast<int32_t>(regionArray->GetComponent(c, 0));
 
+  const volgrid::SizeEstimate estimate =
+    volgrid::estimateRefineSize(points, tets, target, options.fieldPointOptions.alpha);
+  if (volgrid::cli::refuseIfTooLarge("refine", estimate, maxTets,
+        "the target sizes of point array '" + arrayName + "' (smallest " + smallestTarget(target) + ")"))
+    return 1;
+
   volgrid::TetMesh mesh;
   volgrid::Status s = volgrid::tetMeshFromTets(points, tets, mesh);
   if (!s.ok())
@@ -303,19 +355,23 @@ int runRefineCommand(int argc, char** argv)
   mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
   out->GetCellData()->AddArray(region);
   std::string writeError;
-  if (!volgrid::cli::writeXmlDataSet(positional[1], out, writeError))
+  if (!boundaryIdentical)
+    std::fprintf(stderr, "volgrid refine: the boundary changed (a bug: please report it); '%s' not written\n",
+      positional[1].c_str());
+  else if (!volgrid::cli::writeXmlDataSet(positional[1], out, writeError))
   {
     std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());
     return 1;
   }
   if (json)
     std::printf("{\"input\": %s, \"points_before\": %lld, \"tets_before\": %lld, \"points\": %d, \"tets\": %d, "
-                "\"inserted\": %lld, \"passes\": %d, \"boundary_identical\": %s, \"min_dihedral\": %.4f, "
-                "\"max_dihedral\": %.4f, \"share_below_10\": %.6g, \"seconds\": %.6f}\n",
+                "\"inserted\": %lld, \"passes\": %d, \"boundary_identical\": %s, \"min_dihedral\": %s, "
+                "\"max_dihedral\": %s, \"share_below_10\": %s, \"seconds\": %.6f}\n",
       volgrid::cli::jsonString(positional[0]).c_str(), static_cast<long long>(np), static_cast<long long>(nc),
       mesh.numVertices(), mesh.numFiniteTets(), static_cast<long long>(report.inserted), report.passes,
-      boundaryIdentical ? "true" : "false", report.after.minDihedral, report.after.maxDihedral,
-      report.after.shareBelow10(), seconds);
+      boundaryIdentical ? "true" : "false", volgrid::cli::jsonNumber(report.after.minDihedral, "%.4f").c_str(),
+      volgrid::cli::jsonNumber(report.after.maxDihedral, "%.4f").c_str(),
+      volgrid::cli::jsonNumber(report.after.shareBelow10(), "%.6g").c_str(), seconds);
   else
     std::printf("%s: %lld points, %lld tets -> %d points, %d tets (%lld inserted) in %.3f s; dihedral angles "
                 "%.2f..%.2f deg; boundary %s\n",

@@ -4,6 +4,7 @@
 #include "VolGridSurfaceConversion.h"
 #include "XmlDataFiles.h"
 
+#include "AtomicFile.h"
 #include "GzipFile.h"
 #include "SurfaceReader.h"
 
@@ -21,27 +22,38 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace volgrid
 {
 namespace
 {
-bool fileReadable(const std::string& path)
+// Empty when `path` is a regular file that opens; otherwise the reason, in the user's terms.
+std::string unreadableReason(const std::string& path)
 {
+  struct stat st{};
+  if (::stat(path.c_str(), &st) != 0)
+    return std::string("cannot open the file: ") + std::strerror(errno);
+  if (S_ISDIR(st.st_mode))
+    return "is a directory, not a surface file";
+  if (!S_ISREG(st.st_mode))
+    return "is not a regular file (a device, pipe or socket)";
   std::ifstream in(path, std::ios::binary);
-  return static_cast<bool>(in);
+  return in ? std::string() : std::string("cannot open the file: ") + std::strerror(errno);
 }
 
 bool vtkReadFormat(const std::string& ext)
 {
-  return ext == "obj" || ext == "ply" || ext == "vtp" || ext == "vtk";
+  return ext == "vtp" || ext == "vtk";
 }
 
 // VTK's readers want a file name: a compressed .obj/.vtp/.vtk is decompressed into a private temporary
@@ -60,9 +72,26 @@ public:
     if (fd < 0)
       return Status::failure(ErrorKind::InvalidOption, gzPath + ": cannot create a temporary file to decompress into");
     Path = name;
-    const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
-    if (::close(fd) != 0 || !written)
-      return Status::failure(ErrorKind::InvalidOption, gzPath + ": writing the decompressed temporary file failed");
+    // write() moves at most about 2 GiB per call: loop until everything is written.
+    size_t done = 0;
+    int writeErrno = 0;
+    while (done < text.size())
+    {
+      const ssize_t n = ::write(fd, text.data() + done, std::min<size_t>(text.size() - done, size_t(1) << 30));
+      if (n < 0 && errno == EINTR)
+        continue;
+      if (n <= 0)
+      {
+        writeErrno = n < 0 ? errno : EIO;
+        break;
+      }
+      done += static_cast<size_t>(n);
+    }
+    if (::close(fd) != 0 && writeErrno == 0)
+      writeErrno = errno;
+    if (writeErrno != 0)
+      return Status::failure(ErrorKind::InvalidOption, gzPath + ": writing the decompressed temporary file '" + name +
+          "' failed: " + std::strerror(writeErrno));
     return Status::success();
   }
   ~DecompressedCopy()
@@ -137,40 +166,72 @@ Status readWithVtk(const std::string& path, const std::string& readPath, const s
   return Status::success();
 }
 
+// OFF text (points and polygons), built in memory and written atomically.
 bool writeOff(const std::string& path, vtkPolyData* surface, std::string& error)
 {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f)
-  {
-    error = "cannot open '" + path + "' for writing";
-    return false;
-  }
+  std::ostringstream os;
+  os.precision(17);
   vtkPoints* points = surface->GetPoints();
   const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
   vtkCellArray* polys = surface->GetPolys();
-  std::fprintf(f, "OFF\n%lld %lld 0\n", static_cast<long long>(np), static_cast<long long>(polys->GetNumberOfCells()));
+  os << "OFF\n" << np << " " << polys->GetNumberOfCells() << " 0\n";
   for (vtkIdType i = 0; i < np; ++i)
   {
     double p[3];
     points->GetPoint(i, p);
-    std::fprintf(f, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+    os << p[0] << " " << p[1] << " " << p[2] << "\n";
   }
   vtkIdType n;
   const vtkIdType* ids;
   for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
   {
-    std::fprintf(f, "%lld", static_cast<long long>(n));
+    os << n;
     for (vtkIdType k = 0; k < n; ++k)
-      std::fprintf(f, " %lld", static_cast<long long>(ids[k]));
-    std::fprintf(f, "\n");
+      os << " " << ids[k];
+    os << "\n";
   }
-  const bool ok = std::ferror(f) == 0;
-  if (std::fclose(f) != 0 || !ok)
+  return writeFileAtomically(path, os.str(), error);
+}
+
+// Legacy VTK (binary), built in memory and written atomically.
+bool writeLegacyVtk(const std::string& path, vtkPolyData* surface, std::string& error)
+{
+  vtkNew<vtkPolyDataWriter> w;
+  w->WriteToOutputStringOn();
+  w->SetInputData(surface);
+  w->SetFileTypeToBinary();
+  if (w->Write() != 1)
   {
-    error = "writing '" + path + "' failed";
+    error = "cannot write '" + path + "': VTK could not encode the surface";
     return false;
   }
-  return true;
+  const std::string bytes(w->GetOutputString(), static_cast<size_t>(w->GetOutputStringLength()));
+  return writeFileAtomically(path, bytes, error);
+}
+
+// Binary STL: vtkSTLWriter writes the temporary by name; its size (84 + 50 per triangle) is checked.
+bool writeBinaryStl(const std::string& path, vtkPolyData* surface, std::string& error)
+{
+  AtomicFile file;
+  if (!file.open(path, error))
+    return false;
+  vtkNew<vtkSTLWriter> w;
+  w->SetFileName(file.temporaryPath().c_str());
+  w->SetInputData(surface);
+  w->SetFileTypeToBinary();
+  if (w->Write() != 1 || w->GetErrorCode() != 0)
+  {
+    error = "writing '" + path + "' failed (disk full or not writable?); the earlier file, if any, is unchanged";
+    return false;
+  }
+  long long triangles = 0;
+  bool allTriangles = surface->GetNumberOfStrips() == 0;
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkCellArray* polys = surface->GetPolys();
+  for (polys->InitTraversal(); allTriangles && polys->GetNextCell(n, ids);)
+    allTriangles = n == 3, ++triangles;
+  return file.commit(error, allTriangles ? 84 + 50 * triangles : -1);
 }
 } // namespace
 
@@ -205,9 +266,10 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
       path + ": unknown surface file type (expected .off .mesh .poly .smesh .msh .stl .obj .ply .vtp .vtk, or one "
              "of them gzip-compressed as .gz)");
   }
-  if (!fileReadable(path))
+  const std::string unreadable = unreadableReason(path);
+  if (!unreadable.empty())
   {
-    return Status::failure(ErrorKind::InvalidOption, path + ": cannot open the file");
+    return Status::failure(ErrorKind::InvalidOption, path + ": " + unreadable);
   }
   if (surfaceReaderSupports(path))
   {
@@ -263,41 +325,15 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
 bool writeSurfaceFile(const std::string& path, vtkPolyData* surface, std::string& error)
 {
   const std::string ext = surfaceFileExtension(path);
-  int ok = 0;
   if (ext == "vtp")
-  {
     return cli::writeXmlDataSet(path, surface, error);
-  }
-  else if (ext == "vtk")
-  {
-    vtkNew<vtkPolyDataWriter> w;
-    w->SetFileName(path.c_str());
-    w->SetInputData(surface);
-    w->SetFileTypeToBinary();
-    ok = w->Write();
-  }
-  else if (ext == "stl")
-  {
-    vtkNew<vtkSTLWriter> w;
-    w->SetFileName(path.c_str());
-    w->SetInputData(surface);
-    w->SetFileTypeToBinary();
-    ok = w->Write();
-  }
-  else if (ext == "off")
-  {
+  if (ext == "vtk")
+    return writeLegacyVtk(path, surface, error);
+  if (ext == "stl")
+    return writeBinaryStl(path, surface, error);
+  if (ext == "off")
     return writeOff(path, surface, error);
-  }
-  else
-  {
-    error = "unknown output type '." + ext + "' (expected vtp, vtk, stl or off)";
-    return false;
-  }
-  if (!ok)
-  {
-    error = "writing '" + path + "' failed";
-    return false;
-  }
-  return true;
+  error = "unknown output type '." + ext + "' (expected vtp, vtk, stl or off)";
+  return false;
 }
 } // namespace volgrid

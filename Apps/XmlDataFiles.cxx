@@ -10,6 +10,8 @@
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
+#include "AtomicFile.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -40,15 +42,22 @@ vtkSmartPointer<vtkDataSet> readWith(const std::string& path)
   return reader->GetOutput();
 }
 
-// Inline binary: every DataArray carries its own base64 text, so no <AppendedData> block exists.
+// Inline binary: every DataArray carries its own base64 text, so no <AppendedData> block exists. The
+// document is built in memory and then written atomically (AtomicFile.h): a failed write never leaves a
+// cut file or destroys the earlier one.
 template <class Writer>
-bool writeWith(const std::string& path, vtkDataSet* data)
+bool writeWith(const std::string& path, vtkDataSet* data, std::string& error)
 {
   vtkNew<Writer> writer;
-  writer->SetFileName(path.c_str());
+  writer->WriteToOutputStringOn();
   writer->SetInputData(data);
   writer->SetDataModeToBinary();
-  return writer->Write() == 1;
+  if (writer->Write() != 1)
+  {
+    error = "cannot write '" + path + "': VTK could not encode the data set";
+    return false;
+  }
+  return volgrid::writeFileAtomically(path, writer->GetOutputString(), error);
 }
 } // namespace
 
@@ -78,19 +87,12 @@ vtkSmartPointer<vtkDataSet> readXmlDataSet(const std::string& path, std::string&
 bool writeXmlDataSet(const std::string& path, vtkDataSet* data, std::string& error)
 {
   const std::string ext = lowerExtension(path);
-  bool written = false;
   if (ext == "vtu" && vtkUnstructuredGrid::SafeDownCast(data))
-    written = writeWith<vtkXMLUnstructuredGridWriter>(path, data);
-  else if (ext == "vtp" && vtkPolyData::SafeDownCast(data))
-    written = writeWith<vtkXMLPolyDataWriter>(path, data);
-  else
-  {
-    error = path + ": a " + (vtkPolyData::SafeDownCast(data) ? "surface is written as .vtp" : "volume mesh is written as .vtu");
-    return false;
-  }
-  if (!written)
-    error = "cannot write '" + path + "'";
-  return written;
+    return writeWith<vtkXMLUnstructuredGridWriter>(path, data, error);
+  if (ext == "vtp" && vtkPolyData::SafeDownCast(data))
+    return writeWith<vtkXMLPolyDataWriter>(path, data, error);
+  error = path + ": a " + (vtkPolyData::SafeDownCast(data) ? "surface is written as .vtp" : "volume mesh is written as .vtu");
+  return false;
 }
 } // namespace cli
 } // namespace volgrid

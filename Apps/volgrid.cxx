@@ -1,8 +1,10 @@
 // volgrid: the command-line face of VolGrid. `volgrid help` lists the sub-commands.
 #include "Commands.h"
 
+#include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <new>
 #include <string>
 
 int runRefineCommand(int argc, char** argv); // RefineCommand.cxx: volgrid refine MESH.vtu OUT.vtu --size-array NAME
@@ -44,6 +46,9 @@ int printUsage(FILE* out)
 
 int main(int argc, char** argv)
 {
+  // Past a file size limit (ulimit -f), write() then fails with EFBIG and the writers report it, instead of
+  // the process being killed by SIGXFSZ with a cut temporary file.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2)
   {
     return printUsage(stderr);
@@ -61,9 +66,16 @@ int main(int argc, char** argv)
       {
         return c.run(argc - 1, argv + 1);
       }
+      catch (const std::bad_alloc&)
+      {
+        std::fprintf(stderr, "volgrid %s: out of memory (the size estimate did not foresee this run: try a coarser "
+                             "size or --max-tets, and please report the command)\n", c.name);
+        return 3;
+      }
       catch (const std::exception& e)
       {
-        std::fprintf(stderr, "volgrid %s: internal error: %s\n", c.name, e.what());
+        std::fprintf(stderr, "volgrid %s: internal error: %s (a bug: please report it with the command and the "
+                             "input file)\n", c.name, e.what());
         return 3;
       }
     }

@@ -2,6 +2,8 @@
 
 #include <zlib.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
@@ -22,6 +24,11 @@ bool hasGzipMagic(const std::string& data, size_t at)
 {
   return data.size() >= at + 2 && static_cast<unsigned char>(data[at]) == 0x1f &&
     static_cast<unsigned char>(data[at + 1]) == 0x8b;
+}
+bool withinBounds(size_t output, size_t input)
+{
+  const double out = static_cast<double>(output);
+  return out <= kGzipMaxBytes && (out <= kGzipRatioFreeBytes || out <= kGzipMaxRatio * static_cast<double>(input));
 }
 } // namespace
 
@@ -87,6 +94,15 @@ Status gunzip(const std::string& compressed, const std::string& path, std::strin
         zs.avail_out = sizeof(buffer);
         rc = inflate(&zs, Z_NO_FLUSH);
         text.append(buffer, sizeof(buffer) - zs.avail_out);
+        if (!withinBounds(text.size(), compressed.size()))
+        {
+          inflateEnd(&zs);
+          return gzipError(path, "refused: it decompresses to more than " + std::to_string(text.size()) +
+              " bytes from " + std::to_string(compressed.size()) + " (limits: " +
+              std::to_string(static_cast<long long>(kGzipMaxRatio)) + " times the compressed size past " +
+              std::to_string(static_cast<long long>(kGzipRatioFreeBytes / 1048576)) + " MiB, " +
+              std::to_string(static_cast<long long>(kGzipMaxBytes / 1073741824)) + " GiB in all; a gzip bomb?)");
+        }
         if (rc == Z_STREAM_END)
         {
           break;
@@ -121,6 +137,11 @@ Status gunzip(const std::string& compressed, const std::string& path, std::strin
 
 Status readGzipFile(const std::string& path, std::string& text)
 {
+  struct stat st{};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+  {
+    return gzipError(path, S_ISDIR(st.st_mode) ? "is a directory, not a file" : "is not a regular file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {

@@ -65,6 +65,11 @@ Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   {
     return sc.error("binary OFF is not supported");
   }
+  else
+  {
+    return sc.error("not an OFF file: the first line must be the header 'OFF' (or COFF, NOFF, STOFF ...), got '" +
+      std::string(key.substr(0, 40)) + "'");
+  }
   (void)hasNormals;
   (void)hasColors;
   (void)hasTex;

@@ -1,9 +1,8 @@
-// OutputFile: temporary file beside the target, renamed over it when complete.
+// OutputFile: a C stream over AtomicFile's temporary file.
 #include "OutputFile.h"
 
 #include <cerrno>
 #include <cstring>
-#include <unistd.h>
 
 namespace volgrid
 {
@@ -17,21 +16,17 @@ OutputFile::~OutputFile()
 {
   if (File)
     std::fclose(File);
-  if (!Committed && !TempPath.empty())
-    std::remove(TempPath.c_str());
 }
 
 Status OutputFile::open(const std::string& path)
 {
   Path = path;
-  TempPath = path + ".volgrid-tmp-" + std::to_string(static_cast<long>(getpid()));
-  File = std::fopen(TempPath.c_str(), "wb");
+  std::string error;
+  if (!Atomic.open(path, error))
+    return Status::failure(ErrorKind::InvalidOption, error);
+  File = std::fopen(Atomic.temporaryPath().c_str(), "wb");
   if (!File)
-  {
-    const Status s = fileError("write", path);
-    TempPath.clear();
-    return s;
-  }
+    return fileError("write", path);
   return Status::success();
 }
 
@@ -41,16 +36,17 @@ Status OutputFile::commit()
     return Status::failure(ErrorKind::InvalidOption, "cannot write '" + Path + "': not open");
   const bool bad = std::fflush(File) != 0 || std::ferror(File) != 0;
   const int savedErrno = errno;
+  const long size = bad ? -1 : std::ftell(File);
   const bool closeFailed = std::fclose(File) != 0;
   File = nullptr;
-  if (bad || closeFailed)
+  if (bad || closeFailed || size < 0)
   {
     errno = bad ? savedErrno : errno;
     return fileError("write", Path);
   }
-  if (std::rename(TempPath.c_str(), Path.c_str()) != 0)
-    return fileError("rename the temporary file to", Path);
-  Committed = true;
+  std::string error;
+  if (!Atomic.commit(error, size))
+    return Status::failure(ErrorKind::InvalidOption, error);
   return Status::success();
 }
 

@@ -1,8 +1,10 @@
-// An output file that appears only when complete: written to a temporary file beside the target,
-// renamed over it on commit(). A failed or abandoned write removes the temporary file and leaves no
-// partial file; errors name the path and the operating system's reason.
+// An output file written through a C stream that appears only when complete: the stream fills
+// AtomicFile's temporary beside the target, and commit() checks every write, then renames it over the
+// target. A failed or abandoned write leaves no partial file and the earlier file untouched; errors name
+// the path and the operating system's reason. For writers that print text (the solver formats).
 #pragma once
 
+#include "AtomicFile.h"
 #include "Status.h"
 
 #include <cstdio>
@@ -17,18 +19,17 @@ public:
   OutputFile() = default;
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
-  ~OutputFile(); // removes the temporary file unless committed
+  ~OutputFile(); // closes the stream; AtomicFile removes the temporary unless committed
 
-  // Opens "<path>.volgrid-tmp-<pid>" for writing.
   Status open(const std::string& path);
   std::FILE* stream() { return File; }
-  // Flushes, closes, checks for write errors and renames the temporary file to the target.
+  // Flushes and closes the stream (checking both), then commits the temporary (size checked).
   Status commit();
 
 private:
-  std::string Path, TempPath;
+  std::string Path;
+  AtomicFile Atomic;
   std::FILE* File = nullptr;
-  bool Committed = false;
 };
 
 // The error for `path`: "cannot <what> '<path>': <strerror(errno)>".

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -69,9 +70,13 @@ public:
       std::string token;
       if (!(in_ >> token))
         return false;
-      char* end = nullptr;
-      value = std::strtod(token.c_str(), &end);
-      return end != token.c_str();
+      // The whole token must be a number ("1x", "abc" are errors; nan/inf are caught by the finite check).
+      if (!detail::parseDouble(token, value))
+      {
+        BadToken = token.substr(0, 40);
+        return false;
+      }
+      return true;
     }
     const int size = typeSize(type);
     unsigned char bytes[8];
@@ -84,6 +89,8 @@ public:
     value = decode(type, bytes);
     return true;
   }
+  // The last ASCII token that was not a number (empty when the input simply ended).
+  std::string BadToken;
 
 private:
   static bool isLittleEndianHost()
@@ -122,6 +129,16 @@ private:
   Encoding encoding_;
 };
 
+// Fewest bytes one element can take: binary, the fixed sizes (lists at least their count); ASCII, two
+// characters per property (a digit and a separator).
+double minimumBytes(const Element& e, Encoding encoding)
+{
+  double bytes = 0;
+  for (const Property& p : e.properties)
+    bytes += encoding == Encoding::Ascii ? 2 : typeSize(p.countType.empty() ? p.type : p.countType);
+  return bytes;
+}
+
 Status plyError(const std::string& path, const std::string& what)
 {
   return Status::failure(ErrorKind::InvalidOption, path + ": " + what);
@@ -149,11 +166,15 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   }
   else
   {
+    const Status regular = detail::checkRegularFile(path);
+    if (!regular.ok())
+      return regular;
     file.open(path, std::ios::binary);
     if (!file)
       return plyError(path, "cannot open the file");
   }
   std::istream& in = gzip ? static_cast<std::istream&>(unpacked) : file;
+  const double fileBytes = gzip ? static_cast<double>(unpacked.str().size()) : static_cast<double>(detail::fileSize(path));
 
   // Header.
   std::string line;
@@ -218,8 +239,22 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
     return plyError(path, "the header has no end_header line");
   info.format = encoding == Encoding::Ascii ? "PLY ascii" : "PLY binary";
 
+  // Counts the file cannot hold are refused before anything is allocated.
+  for (const Element& e : elements)
+  {
+    const double least = static_cast<double>(e.count) * minimumBytes(e, encoding);
+    if (least > fileBytes || (e.name == "vertex" && e.count > INT32_MAX))
+      return plyError(path, "element '" + e.name + "' claims " + std::to_string(e.count) +
+          " entries, more than the file's " + std::to_string(static_cast<long long>(fileBytes)) + " bytes can hold");
+  }
+
   // Body.
   BodyReader body(in, encoding);
+  auto endsInside = [&](const Element& e, int64_t i) {
+    return plyError(path, body.BadToken.empty()
+        ? "the file ends inside element '" + e.name + "' " + std::to_string(i)
+        : "element '" + e.name + "' " + std::to_string(i) + ": '" + body.BadToken + "' is not a number");
+  };
   std::vector<int32_t> list, triangles;
   int32_t vertexCount = 0;
   for (const Element& e : elements)
@@ -246,7 +281,7 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
         if (p.countType.empty())
         {
           if (!body.read(p.type, value))
-            return plyError(path, "the file ends inside element '" + e.name + "' " + std::to_string(i));
+            return endsInside(e, i);
           if (isVertex && (p.name == "x" || p.name == "y" || p.name == "z"))
             xyz[p.name[0] - 'x'] = value;
           continue;
@@ -259,7 +294,14 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
         for (int64_t k = 0; k < static_cast<int64_t>(countValue); ++k)
         {
           if (!body.read(p.type, value))
-            return plyError(path, "the file ends inside element '" + e.name + "' " + std::to_string(i));
+            return endsInside(e, i);
+          if (indices && !(value >= -1 && value < vertexCount && value == std::floor(value)))
+          {
+            char id[32];
+            std::snprintf(id, sizeof id, "%.17g", value);
+            return plyError(path, e.name + " " + std::to_string(i) + " refers to vertex " + id + " (the file has " +
+                std::to_string(vertexCount) + ")");
+          }
           if (indices)
             list.push_back(static_cast<int32_t>(value));
         }

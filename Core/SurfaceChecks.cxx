@@ -271,68 +271,91 @@ std::vector<int64_t> toIds(const std::vector<int32_t>& v)
 }
 } // namespace
 
-Status surfaceStatus(const SurfaceCheckReport& r)
+// Every defect class present, in the order the mesher cares about (the first decides the error kind).
+static std::vector<Status> defectStatuses(const SurfaceCheckReport& r)
 {
+  std::vector<Status> found;
   if (r.triangles == 0)
   {
-    return Status::failure(ErrorKind::EmptyInput, "The surface has no triangles.");
+    found.push_back(Status::failure(ErrorKind::EmptyInput, "The surface has no triangles."));
+    return found;
   }
   if (r.invalidTriangles > 0)
   {
-    return Status::failure(ErrorKind::InvalidOption,
+    found.push_back(Status::failure(ErrorKind::InvalidOption,
       std::to_string(r.invalidTriangles) + " triangle(s) refer to point ids that do not exist; first triangles: " +
         idList(r.firstInvalidTriangles) + ".",
-      toIds(r.firstInvalidTriangles));
+      toIds(r.firstInvalidTriangles)));
   }
   if (r.nonFinitePoints > 0)
   {
-    return Status::failure(ErrorKind::NonFinitePoint,
-      std::to_string(r.nonFinitePoints) + " point(s) have NaN or infinite coordinates.");
+    found.push_back(Status::failure(ErrorKind::NonFinitePoint,
+      std::to_string(r.nonFinitePoints) + " point(s) have NaN or infinite coordinates."));
   }
   if (r.degenerateTriangles > 0)
   {
-    return Status::failure(ErrorKind::DegenerateTriangle,
+    found.push_back(Status::failure(ErrorKind::DegenerateTriangle,
       std::to_string(r.degenerateTriangles) + " degenerate (zero-area) triangle(s); first triangles: " +
         idList(r.firstDegenerateTriangles) + ".",
-      toIds(r.firstDegenerateTriangles));
+      toIds(r.firstDegenerateTriangles)));
   }
   if (r.duplicateTriangles > 0)
   {
-    return Status::failure(ErrorKind::DuplicateTriangle,
+    found.push_back(Status::failure(ErrorKind::DuplicateTriangle,
       std::to_string(r.duplicateTriangles) + " duplicate triangle(s) (same three points as an earlier triangle); first triangles: " +
         idList(r.firstDuplicateTriangles) + ".",
-      toIds(r.firstDuplicateTriangles));
+      toIds(r.firstDuplicateTriangles)));
   }
   if (r.nonManifoldEdges > 0)
   {
-    return Status::failure(ErrorKind::NonManifoldEdge,
+    found.push_back(Status::failure(ErrorKind::NonManifoldEdge,
       std::to_string(r.nonManifoldEdges) + " non-manifold edge(s) (used by more than two triangles); first edges (points): " +
         edgeList(r, r.firstNonManifoldEdges) + "; first triangles: " + idList(r.firstNonManifoldEdgeTriangles) + ".",
-      toIds(r.firstNonManifoldEdgeTriangles));
+      toIds(r.firstNonManifoldEdgeTriangles)));
   }
   if (r.boundaryEdges > 0)
   {
-    return Status::failure(ErrorKind::OpenSurface,
+    found.push_back(Status::failure(ErrorKind::OpenSurface,
       "The surface is open: " + std::to_string(r.boundaryEdges) + " boundary edge(s) in " +
         std::to_string(r.boundaryLoops) + " boundary loop(s); first edges (points): " + edgeList(r, r.firstBoundaryEdges) +
         "; first triangles: " + idList(r.firstBoundaryEdgeTriangles) + ".",
-      toIds(r.firstBoundaryEdgeTriangles));
+      toIds(r.firstBoundaryEdgeTriangles)));
   }
   if (r.selfIntersectingPairs > 0)
   {
-    return Status::failure(ErrorKind::SelfIntersection,
+    found.push_back(Status::failure(ErrorKind::SelfIntersection,
       std::to_string(r.selfIntersectingPairs) + " pair(s) of triangles intersect or overlap; first pairs: " +
         pairList(r.firstSelfIntersectingPairs) + ".",
-      toIds(r.firstSelfIntersectingPairs));
+      toIds(r.firstSelfIntersectingPairs)));
   }
   if (r.shellIntersectingPairs > 0)
   {
-    return Status::failure(ErrorKind::IntersectingShells,
+    found.push_back(Status::failure(ErrorKind::IntersectingShells,
       std::to_string(r.shellIntersectingPairs) + " pair(s) of triangles from different shells intersect; first pairs: " +
         pairList(r.firstShellIntersectingPairs) + ".",
-      toIds(r.firstShellIntersectingPairs));
+      toIds(r.firstShellIntersectingPairs)));
   }
-  return Status::success();
+  return found;
+}
+
+Status surfaceStatus(const SurfaceCheckReport& r)
+{
+  const std::vector<Status> found = defectStatuses(r);
+  if (found.empty())
+  {
+    return Status::success();
+  }
+  // All classes are named, not just the first: "3 degenerate ... ; 59 non-manifold edge(s) ...".
+  Status first = found.front();
+  for (size_t k = 1; k < found.size(); ++k)
+  {
+    first.message += " " + found[k].message;
+  }
+  if (found.size() > 1)
+  {
+    first.message = std::to_string(found.size()) + " kinds of defect: " + first.message;
+  }
+  return first;
 }
 
 std::string formatSurfaceReport(const SurfaceCheckReport& r)

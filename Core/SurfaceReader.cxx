@@ -16,7 +16,7 @@ bool surfaceReaderSupports(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
   return ext == "off" || ext == "mesh" || ext == "poly" || ext == "smesh" || ext == "msh" || ext == "stl" ||
-    ext == "ply";
+    ext == "ply" || ext == "obj";
 }
 
 Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info,
@@ -47,9 +47,13 @@ Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* 
   {
     return readPLY(path, mesh, info, options);
   }
+  if (ext == "obj")
+  {
+    return readOBJ(path, mesh, info, options);
+  }
   return readError(
     path, 0, "unsupported file extension '." + ext +
-      "' (supported: .off .mesh .poly .smesh .msh .stl .ply, each also gzip-compressed as .gz)");
+      "' (supported: .off .mesh .poly .smesh .msh .stl .ply .obj, each also gzip-compressed as .gz)");
 }
 
 } // namespace volgrid

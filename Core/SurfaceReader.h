@@ -4,7 +4,7 @@
 //   clipping in the facet plane, facets with several polygons and hole points as planar regions with
 //   holes; nodes from the sibling .node file when the node list is empty),
 //   gmsh .msh (ASCII v2.x and v4.x; triangles and quadrangles), .stl (ASCII and binary; lenient ASCII:
-//   several solids, text after the last `endsolid`).
+//   several solids, text after the last `endsolid`), .ply (ASCII and binary, strips), .obj.
 // Each format may be gzip-compressed: "name.stl.gz" is decompressed in memory and read as .stl.
 // Every error is a Status whose message names the file, the line and the problem; a malformed file
 // never crashes the reader. Status.h has no dedicated I/O kind: unreadable/malformed files use
@@ -60,6 +60,9 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
 Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
   const SurfaceReadOptions& options = SurfaceReadOptions());
 Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
+  const SurfaceReadOptions& options = SurfaceReadOptions());
+// Wavefront OBJ (ObjReader.cxx): strict numbers, every bad face reference counted and the first named.
+Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
   const SurfaceReadOptions& options = SurfaceReadOptions());
 // PLY, ASCII or binary, with faces and triangle strips (PlyReader.cxx).
 Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,

@@ -2,8 +2,14 @@
 
 #include "GzipFile.h"
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
+#include <new>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -40,8 +46,37 @@ Status readError(const std::string& path, int64_t line, const std::string& what)
   return Status::failure(ErrorKind::InvalidOption, os.str());
 }
 
+Status checkRegularFile(const std::string& path)
+{
+  struct stat st{};
+  if (::stat(path.c_str(), &st) != 0)
+  {
+    return readError(path, 0, std::string("cannot open the file: ") + std::strerror(errno));
+  }
+  if (S_ISDIR(st.st_mode))
+  {
+    return readError(path, 0, "is a directory, not a file");
+  }
+  if (!S_ISREG(st.st_mode))
+  {
+    return readError(path, 0, "is not a regular file (a device, pipe or socket)");
+  }
+  return Status::success();
+}
+
+int64_t fileSize(const std::string& path)
+{
+  struct stat st{};
+  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) ? static_cast<int64_t>(st.st_size) : -1;
+}
+
 Status loadFile(const std::string& path, std::string& text)
 {
+  Status s = checkRegularFile(path);
+  if (!s.ok())
+  {
+    return s;
+  }
   if (isGzipPath(path))
   {
     return readGzipFile(path, text);
@@ -49,19 +84,31 @@ Status loadFile(const std::string& path, std::string& text)
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
-    return readError(path, 0, "cannot open file");
+    return readError(path, 0, std::string("cannot open the file: ") + std::strerror(errno));
   }
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
+  const int64_t size = fileSize(path);
   if (size < 0)
   {
     return readError(path, 0, "cannot determine the file size");
   }
-  in.seekg(0, std::ios::beg);
-  text.resize(static_cast<size_t>(size));
-  if (size > 0 && !in.read(&text[0], size))
+  try
   {
-    return readError(path, 0, "read error");
+    text.resize(static_cast<size_t>(size));
+  }
+  catch (const std::bad_alloc&)
+  {
+    return readError(path, 0, "not enough memory to load the file (" + std::to_string(size) + " bytes)");
+  }
+  // istream::read takes a streamsize: read in pieces, so that files over 2 GiB load whole.
+  size_t done = 0;
+  while (done < text.size())
+  {
+    const size_t piece = std::min<size_t>(text.size() - done, size_t(1) << 30);
+    if (!in.read(&text[done], static_cast<std::streamsize>(piece)))
+    {
+      return readError(path, 0, "read error after " + std::to_string(done + in.gcount()) + " bytes");
+    }
+    done += piece;
   }
   return Status::success();
 }

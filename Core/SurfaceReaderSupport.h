@@ -23,6 +23,13 @@ std::string lowerExtension(const std::string& path);
 // "path:line: what" as an ErrorKind::InvalidOption status (line <= 0: no line number).
 Status readError(const std::string& path, int64_t line, const std::string& what);
 
+// Success when `path` is a regular file that can be opened; otherwise names the problem ("is a
+// directory", "does not exist", the OS reason).
+Status checkRegularFile(const std::string& path);
+
+// Size in bytes of a regular file (-1 when it cannot be determined).
+int64_t fileSize(const std::string& path);
+
 // Reads the whole file (binary mode) into text; a file whose name ends in ".gz" is decompressed.
 Status loadFile(const std::string& path, std::string& text);
 

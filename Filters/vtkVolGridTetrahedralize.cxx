@@ -25,9 +25,11 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "AvailableMemory.h"
 #include "Delaunay.h"
 #include "MeshChecker.h"
 #include "Mesher.h"
+#include "SizeEstimate.h"
 #include "SurfaceMesh.h"
 
 #include <cstdint>
@@ -245,6 +247,16 @@ int vtkVolGridTetrahedralize::MeshSurface(
       im.clusterSizes = std::move(sizes);
     }
   }
+  // Absurd sizes are refused before any work (not after running out of memory).
+  const volgrid::SizeEstimate estimate = volgrid::estimateMeshSize(surface, options.improvement);
+  if (estimate.bytes > volgrid::availableMemoryBytes())
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: these sizes would make about " << estimate.tets << " tets on "
+                  << estimate.points << " points, needing about " << estimate.bytes / 1073741824.0
+                  << " GiB of memory, more than the " << volgrid::availableMemoryBytes() / 1073741824.0
+                  << " GiB available: refused before any work (choose a larger MaxEdgeLength, MaxVolume or SizeScale).");
+    return 0;
+  }
   volgrid::MesherResult result;
   VolGridMesherProgress progress(this);
   const volgrid::Status status = volgrid::meshSurface(surface, options, result, &progress);
@@ -329,6 +341,14 @@ int vtkVolGridTetrahedralize::MeshSurface(
 int vtkVolGridTetrahedralize::TetrahedralizePoints(vtkPointSet* input, vtkUnstructuredGrid* output)
 {
   const vtkIdType numInput = input->GetNumberOfPoints();
+  const volgrid::SizeEstimate estimate = volgrid::estimateDelaunaySize(static_cast<double>(numInput));
+  if (estimate.bytes > volgrid::availableMemoryBytes())
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: " << numInput << " points would make about " << estimate.tets
+                  << " tets, needing about " << estimate.bytes / 1073741824.0 << " GiB of memory, more than the "
+                  << volgrid::availableMemoryBytes() / 1073741824.0 << " GiB available: refused before any work.");
+    return 0;
+  }
   std::vector<double> xyz(3 * static_cast<size_t>(numInput));
   for (vtkIdType i = 0; i < numInput; ++i)
   {

@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages VolGrid needs, only those missing (idempotent, quiet when all are there).
 #   scripts/install-deps.sh build   what `make build` needs: compilers, CMake, ParaView's SDK, GoogleTest
 #   scripts/install-deps.sh test    + what the tests compare against (TetGen, CGAL) and the independent
-#                                   readers of the solver formats (gmsh, meshio, OpenFOAM)
+#                                   readers of the solver formats (gmsh, meshio, OpenFOAM), clang for the fuzzers
 #   scripts/install-deps.sh bench   + what the benchmarks compare against
 set -euo pipefail
 level="${1:-build}"
@@ -17,9 +17,10 @@ packages=(build-essential cmake pkg-config libgtest-dev
 case "$level" in
   build) ;;
   # openmpi-bin: the pvbatch tests under mpiexec; xvfb, xauth: the ParaView GUI test on a headless machine;
-  # gmsh, python3-gmsh, python3-meshio, openfoam: independent readers of the solver formats.
+  # gmsh, python3-gmsh, python3-meshio, openfoam: independent readers of the solver formats;
+  # clang, libclang-rt-14-dev: the libFuzzer reader targets (Testing/Fuzz, -fsanitize=fuzzer,address,undefined).
   test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev openmpi-bin xvfb xauth
-    gmsh python3-gmsh python3-meshio openfoam) ;;
+    gmsh python3-gmsh python3-meshio openfoam clang libclang-rt-14-dev) ;;
   bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac
