@@ -1,5 +1,6 @@
 #include "SurfaceFile.h"
-#include "ObjGroups.h"
+
+#include "CliSupport.h"
 
 #include "VolGridSurfaceConversion.h"
 #include "XmlDataFiles.h"
@@ -12,7 +13,6 @@
 #include "vtkDataSet.h"
 #include "vtkGenericDataObjectReader.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -56,7 +56,7 @@ bool vtkReadFormat(const std::string& ext)
   return ext == "vtp" || ext == "vtk";
 }
 
-// VTK's readers want a file name: a compressed .obj/.vtp/.vtk is decompressed into a private temporary
+// VTK's readers want a file name: a compressed .vtp/.vtk is decompressed into a private temporary
 // file with the same inner extension, removed when this goes out of scope.
 class DecompressedCopy
 {
@@ -111,16 +111,7 @@ Status readWithVtk(const std::string& path, const std::string& readPath, const s
 {
   vtkSmartPointer<vtkDataObject> data;
   std::string format;
-  if (ext == "obj")
-  {
-    vtkNew<vtkOBJReader> r;
-    r->SetFileName(readPath.c_str());
-    r->Update();
-    objGroupsToPatches(readPath, r->GetOutput()); // `g` groups become named patches
-    data = r->GetOutput();
-    format = "OBJ";
-  }
-  else if (ext == "ply")
+  if (ext == "ply")
   {
     vtkNew<vtkPLYReader> r;
     r->SetFileName(readPath.c_str());
@@ -237,13 +228,7 @@ bool writeBinaryStl(const std::string& path, vtkPolyData* surface, std::string& 
 
 std::string surfaceFileExtension(const std::string& path)
 {
-  const size_t slash = path.find_last_of("/\\");
-  const size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return std::string();
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
+  return cli::lowerExtension(path);
 }
 
 bool surfaceFileSupported(const std::string& path)

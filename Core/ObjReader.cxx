@@ -1,12 +1,15 @@
 // Wavefront OBJ reader: `v` lines (x y z, an optional w or colour ignored), `f` lines (polygons of
 // v, v/t, v/t/n or v//n references; negative references count back from the last vertex), polygons
-// triangulated by ear clipping; texture coordinates, normals, groups, materials and lines are ignored.
+// triangulated by ear clipping; `g` groups become named patches (one per distinct name, in order of first
+// appearance; faces before the first `g` are in "default"); texture coordinates, normals, materials and
+// lines are ignored.
 // Strict: every coordinate is a whole finite number ("nan", "1x", "abc" are errors naming the line), and
 // every face reference must name an existing vertex (all bad references are counted, the first named).
 #include "SurfaceReader.h"
 #include "SurfaceReaderSupport.h"
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +26,28 @@ struct ObjFaces
   std::vector<int64_t> refs;    // vertex references, 1-based after resolving negatives (0: unresolvable)
   std::vector<size_t> starts;   // first ref of each face, plus the end
   std::vector<int64_t> lines;   // line of each face
+  std::vector<int32_t> groups;  // group of each face (-1: before any `g` statement)
+};
+
+// `g` statements: the group of the faces that follow, by name.
+struct ObjGroups
+{
+  std::map<std::string, int32_t> idOfName;
+  int32_t current = -1;
+
+  void start(const std::vector<std::string_view>& toks, SurfaceMesh& mesh)
+  {
+    std::string name;
+    for (size_t k = 1; k < toks.size(); ++k)
+      name += (k > 1 ? " " : "") + std::string(toks[k]);
+    current = id(name.empty() ? "default" : name, mesh);
+  }
+  int32_t id(const std::string& name, SurfaceMesh& mesh)
+  {
+    const auto it = idOfName.emplace(name, static_cast<int32_t>(idOfName.size())).first;
+    mesh.patchNames[it->second] = name;
+    return it->second;
+  }
 };
 
 // "12", "12/3", "12/3/4", "12//4" -> 12; false when the vertex part is not an integer.
@@ -52,7 +77,8 @@ Status readVertex(Scanner& sc, const std::vector<std::string_view>& toks, Surfac
   return Status::success();
 }
 
-Status readFace(Scanner& sc, const std::vector<std::string_view>& toks, int64_t vertices, ObjFaces& faces)
+Status readFace(Scanner& sc, const std::vector<std::string_view>& toks, int64_t vertices, int32_t group,
+  ObjFaces& faces)
 {
   if (toks.size() < 4)
   {
@@ -70,6 +96,7 @@ Status readFace(Scanner& sc, const std::vector<std::string_view>& toks, int64_t 
   }
   faces.starts.push_back(faces.refs.size());
   faces.lines.push_back(sc.line());
+  faces.groups.push_back(group);
   return Status::success();
 }
 
@@ -108,13 +135,16 @@ Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   Scanner sc(text, path, true);
   std::vector<std::string_view> toks;
   ObjFaces faces;
+  ObjGroups groups;
   faces.starts.push_back(0);
   while (sc.nextLine(toks))
   {
     if (toks[0] == "v")
       s = readVertex(sc, toks, mesh);
     else if (toks[0] == "f" || toks[0] == "fo")
-      s = readFace(sc, toks, mesh.numberOfPoints(), faces);
+      s = readFace(sc, toks, mesh.numberOfPoints(), groups.current, faces);
+    else if (toks[0] == "g")
+      groups.start(toks, mesh);
     else if (toks[0] == "l" || toks[0] == "p")
       ++info.skippedElements;
     if (!s.ok())
@@ -125,6 +155,7 @@ Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   s = checkReferences(path, faces, vertices);
   if (!s.ok())
     return s;
+  const bool grouped = !groups.idOfName.empty();
   std::vector<int32_t> loop, scratch;
   for (size_t f = 0; f + 1 < faces.starts.size(); ++f)
   {
@@ -132,7 +163,8 @@ Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
     for (size_t k = faces.starts[f]; k < faces.starts[f + 1]; ++k)
       loop.push_back(static_cast<int32_t>(faces.refs[k] - 1));
     ++info.fileFaces;
-    addPolygon(mesh, loop, -1, info, scratch);
+    const int32_t patch = !grouped ? -1 : faces.groups[f] >= 0 ? faces.groups[f] : groups.id("default", mesh);
+    addPolygon(mesh, loop, patch, info, scratch);
   }
   fanFallbackWarning(info);
   return finish(path, mesh, &info, options.mergeCoincidentPoints);
