@@ -12,6 +12,9 @@ namespace cli
 bool parseLong(const char* command, const char* option, const char* text, long long& value);
 bool parseDouble(const char* command, const char* option, const char* text, double& value);
 
+// The extension of a file name, lower case, without the dot ("" when there is none): "A/b.STL" -> "stl".
+std::string lowerExtension(const std::string& path);
+
 // Peak resident memory of this process so far, in MiB.
 double peakResidentMiB();
 

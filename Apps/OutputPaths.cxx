@@ -1,5 +1,7 @@
 #include "OutputPaths.h"
 
+#include "CliSupport.h"
+
 #include "AtomicFile.h"
 
 #include <algorithm>
@@ -14,17 +16,6 @@ namespace cli
 {
 namespace
 {
-std::string lowerExtension(const std::string& path)
-{
-  const size_t slash = path.find_last_of('/');
-  const size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return std::string();
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 std::string list(const std::vector<std::string>& extensions)
 {
   std::string s;

@@ -1,5 +1,7 @@
 #include "XmlDataFiles.h"
 
+#include "CliSupport.h"
+
 #include "vtkVolGridXMLPolyDataReader.h"
 #include "vtkVolGridXMLUnstructuredGridReader.h"
 
@@ -21,14 +23,6 @@ namespace cli
 {
 namespace
 {
-std::string lowerExtension(const std::string& path)
-{
-  const size_t dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? std::string() : path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 template <class Reader>
 vtkSmartPointer<vtkDataSet> readWith(const std::string& path)
 {

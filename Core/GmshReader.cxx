@@ -1,6 +1,7 @@
 // gmsh .msh reader (ASCII, versions 2.x and 4.x): triangles and quadrangles (physical or entity tags
 // become patch ids); other element types are skipped.
 #include "SurfaceReader.h"
+#include "GmshPhysicalNames.h"
 #include "SurfaceReaderSupport.h"
 
 #include <algorithm>
@@ -34,30 +35,10 @@ Status skipSection(Scanner& sc, std::string_view name)
 // the physical tag as the patch id, and VolGrid's writer gives each entity its physical group's tag).
 Status readPhysicalNames(Scanner& sc, SurfaceMesh& mesh)
 {
-  int64_t count = 0;
-  Status s = sc.readCount(count, "the physical name count", 1 << 24);
-  std::vector<std::string_view> toks;
-  for (int64_t k = 0; k < count && s.ok(); ++k)
-  {
-    int64_t dim = 0, tag = 0;
-    if (!sc.nextLine(toks) || toks.size() < 3 || !parseInt(toks[0], dim) || !parseInt(toks[1], tag))
-    {
-      return sc.error("bad $PhysicalNames line");
-    }
-    std::string name;
-    for (size_t t = 2; t < toks.size(); ++t)
-    {
-      name += (t > 2 ? " " : "") + std::string(toks[t]);
-    }
-    if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
-    {
-      name = name.substr(1, name.size() - 2);
-    }
+  Status s = readGmshPhysicalNames(sc, [&](int64_t dim, int64_t tag, std::string name) {
     if (dim == 2)
-    {
-      mesh.patchNames[static_cast<int32_t>(tag)] = name;
-    }
-  }
+      mesh.patchNames[static_cast<int32_t>(tag)] = std::move(name);
+  });
   if (!s.ok())
   {
     return s;

@@ -3,6 +3,7 @@
 // physical tag of the element's entity (from $Entities), else the entity tag. $PhysicalNames names the
 // patches (dim 2) and regions (dim 3).
 #include "MeshReader.h"
+#include "GmshPhysicalNames.h"
 #include "SurfaceReaderSupport.h"
 
 #include <map>
@@ -33,22 +34,9 @@ Status readInts(Scanner& sc, int64_t* v, int n, const char* what)
 
 Status readPhysicalNames(Scanner& sc, SolverMesh& mesh)
 {
-  int64_t count = 0;
-  Status s = sc.readCount(count, "the physical name count", 1 << 24);
-  std::vector<std::string_view> toks;
-  for (int64_t k = 0; k < count && s.ok(); ++k)
-  {
-    int64_t dim = 0, tag = 0;
-    if (!sc.nextLine(toks) || toks.size() < 3 || !parseInt(toks[0], dim) || !parseInt(toks[1], tag))
-      return sc.error("bad $PhysicalNames line");
-    std::string name;
-    for (size_t t = 2; t < toks.size(); ++t)
-      name += (t > 2 ? " " : "") + std::string(toks[t]);
-    if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
-      name = name.substr(1, name.size() - 2);
-    (dim == 2 ? mesh.patchNames : mesh.regionNames)[static_cast<int32_t>(tag)] = name;
-  }
-  return s;
+  return readGmshPhysicalNames(sc, [&](int64_t dim, int64_t tag, std::string name) {
+    (dim == 2 ? mesh.patchNames : mesh.regionNames)[static_cast<int32_t>(tag)] = std::move(name);
+  });
 }
 
 // 4.1 $Entities: the first physical tag of each surface and volume.

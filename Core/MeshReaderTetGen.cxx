@@ -2,6 +2,7 @@
 // first node says. A tet's first attribute (TetGen -A, or VolGrid's writer) is its region, else 1; a
 // face's boundary marker is its patch, else 1. The format has no names.
 #include "MeshReader.h"
+#include "MeshWriter.h"
 #include "SurfaceReaderSupport.h"
 
 #include <filesystem>
@@ -13,17 +14,6 @@ using namespace detail;
 
 namespace
 {
-std::string tetgenStem(const std::string& path)
-{
-  for (const char* ext : { ".node", ".ele", ".face" })
-  {
-    const std::string e(ext);
-    if (path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0)
-      return path.substr(0, path.size() - e.size());
-  }
-  return path;
-}
-
 // Reads `count` records "id v1 .. vn [extra...]" where the header gave `extras` values after the ids;
 // ids are shifted by `first`. The first extra value (if any) goes to `labels` (default 1).
 Status readRecords(Scanner& sc, int64_t count, int nv, int64_t extras, int64_t first, int64_t numPoints,

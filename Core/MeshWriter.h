@@ -30,6 +30,9 @@ MeshFormat meshFormatFromName(const std::string& name);
 // By the path's extension (case-insensitive): .msh .su2 .mesh .node/.ele/.face. Unknown otherwise
 // (OpenFOAM has no extension: it is chosen by name only).
 MeshFormat meshFormatFromPath(const std::string& path);
+
+// The common stem of a TetGen file set, for its reader and its writer: "a.node", "a.ele", "a.face", "a" -> "a".
+std::string tetgenStem(const std::string& path);
 const char* meshFormatName(MeshFormat format);
 
 struct MeshWriteOptions

@@ -8,8 +8,6 @@
 
 namespace volgrid
 {
-namespace
-{
 std::string tetgenStem(const std::string& path)
 {
   for (const char* ext : { ".node", ".ele", ".face" })
@@ -20,7 +18,6 @@ std::string tetgenStem(const std::string& path)
   }
   return path;
 }
-} // namespace
 
 Status writeTetGen(const std::string& path, const SolverMesh& mesh)
 {
