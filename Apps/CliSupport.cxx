@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 namespace volgrid
 {
@@ -37,6 +38,50 @@ bool parseDouble(const char* command, const char* option, const char* text, doub
     return false;
   }
   return true;
+}
+
+bool parseOption(const char* command, const OptionSpec& spec, const char* text, double& value)
+{
+  const std::string flag = std::string("--") + spec.name;
+  if (!parseDouble(command, flag.c_str(), text, value))
+    return false;
+  if (!spec.valid(value))
+  {
+    std::fprintf(stderr, "volgrid %s: %s is out of range: %s (%s %s; see --help)\n", command, flag.c_str(), text,
+      spec.type == OptionType::Integer ? "an integer in" : "in", spec.rangeText().c_str());
+    return false;
+  }
+  return true;
+}
+
+std::string optionUsage(const OptionSpec& spec, const char* metavar)
+{
+  constexpr size_t kIndent = 23, kWidth = 106;
+  std::string out = std::string("  --") + spec.name + " " + metavar;
+  out.resize(std::max(out.size() + 1, kIndent), ' ');
+  std::stringstream text;
+  text << spec.doc << " (default " << spec.defaultValue << ", in " << spec.rangeText() << ")";
+  size_t column = out.size();
+  bool lineStart = true;
+  std::string word;
+  while (text >> word)
+  {
+    if (!lineStart && column + 1 + word.size() > kWidth)
+    {
+      out += "\n" + std::string(kIndent, ' ');
+      column = kIndent;
+      lineStart = true;
+    }
+    if (!lineStart)
+    {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    lineStart = false;
+  }
+  return out + "\n";
 }
 
 double peakResidentMiB()

@@ -1,6 +1,8 @@
 // Small helpers shared by the CLI sub-commands: argument scanning, timing, memory, JSON strings.
 #pragma once
 
+#include "OptionTable.h"
+
 #include <chrono>
 #include <string>
 
@@ -11,6 +13,11 @@ namespace cli
 // Parses a number argument; prints "volgrid CMD: OPTION expects ..." and returns false when malformed.
 bool parseLong(const char* command, const char* option, const char* text, long long& value);
 bool parseDouble(const char* command, const char* option, const char* text, double& value);
+// The value of an option of Core's table (OptionTable.h): a finite number (an integer for an integer
+// option) in the option's valid range; otherwise a message naming the range, and false.
+bool parseOption(const char* command, const OptionSpec& spec, const char* text, double& value);
+// The usage lines of an option of the table: flag, metavar, its doc, default and valid range, wrapped.
+std::string optionUsage(const OptionSpec& spec, const char* metavar);
 
 // The extension of a file name, lower case, without the dot ("" when there is none): "A/b.STL" -> "stl".
 std::string lowerExtension(const std::string& path);

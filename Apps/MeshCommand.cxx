@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "MeshExport.h"
 #include "OutputPaths.h"
+#include "PointFiles.h"
 #include "SizeLimit.h"
 #include "SurfaceFile.h"
 #include "VolGridConversion.h"
@@ -11,6 +12,7 @@
 #include "BoundaryCheck.h"
 #include "CoordinateRange.h"
 #include "Mesher.h"
+#include "OptionValues.h"
 #include "SizeEstimate.h"
 #include "SurfaceMesh.h"
 
@@ -25,14 +27,13 @@
 #include <map>
 #include <string>
 #include <vector>
-// Defined in RefineCommand.cxx: the points of a data set (VTK XML or legacy, or text "x y z [v]" lines)
-// and the named point array (empty name: the text file's fourth column, if any).
-bool readPointsWithArray(const char* command, const std::string& path, const std::string& arrayName, bool needArray,
-  std::vector<double>& xyz, std::vector<double>& values);
+using volgrid::cli::readPointsWithArray; // PointFiles.h
 
 namespace
 {
-const char* kUsage =
+using volgrid::cli::optionUsage;
+namespace option = volgrid::option;
+const std::string kUsage = std::string(
   "usage: volgrid mesh SURFACE OUT.vtu|OUT.vtk|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
   "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [--threads N]\n"
   "                    [density and quality options]\n"
@@ -41,15 +42,9 @@ const char* kUsage =
   "  the same, legacy binary VTK);\n"
   "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
   "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
-  "Density (field points, paper 7.2; on by default):\n"
-  "  --alpha A            eq. 4: a tet gets a point when its centroid is farther than A*h from its vertices\n"
-  "                       (default 0.75: mean edge length close to h; smaller = more points)\n"
-  "  --beta B             eq. 5: no two field points closer than B*h (default 0.4; 0: no minimum spacing)\n"
-  "  --size-scale S       h at the boundary = S x the boundary's point spacing (default 1)\n"
-  "  --gradation G        size growth between neighbours, h(v) <= h(u) + (G-1)|uv|; away from the boundary\n"
-  "                       h grows at that rate (default 1.5; smaller = finer)\n"
-  "  --max-edge L         global cap on the target edge length (default 0: no cap)\n"
-  "  --max-volume V       cap on tet volume (default 0: no cap)\n"
+  "Density (field points, paper 7.2; on by default):\n") +
+  optionUsage(option::alpha, "A") + optionUsage(option::beta, "B") + optionUsage(option::sizeScale, "S") +
+  optionUsage(option::gradation, "G") + optionUsage(option::maxEdge, "L") + optionUsage(option::maxVolume, "V") +
   "  --no-field-points    boundary points (and recovery's interior points) only\n"
   "Clustering and sizing:\n"
   "  --sizing FILE        a data set (.vtu .vtp .vtk, or text 'x y z size' lines) whose point array\n"
@@ -57,9 +52,8 @@ const char* kUsage =
   "  --cluster FILE       points (any data set, or text 'x y z [size]' lines) inserted into the volume; the\n"
   "                       point array --size-array NAME (if present) or --cluster-size H densifies around them\n"
   "Quality (optimisation: flips, edge removal, smoothing; on by default):\n"
-  "  --quality            optimise (default)                    --no-optimize    do not\n"
-  "  --target-angle DEG   target for min(dihedral, 180 - max dihedral) (default 18)\n"
-  "  --passes N           optimisation pass limit, an integer (default 8; 0: no optimisation passes)\n"
+  "  --quality            optimise (default)                    --no-optimize    do not\n" +
+  optionUsage(option::targetAngle, "DEG") + optionUsage(option::passes, "N") +
   "  --no-smoothing       flips only\n"
   "Limits:\n"
   "  --max-tets N         refuse before any work when the mesh is estimated to exceed N tets (default:\n"
@@ -110,7 +104,16 @@ bool parseArguments(int argc, char** argv, Arguments& args)
       args.options.improvement.optimize = false;
     else if (a == "--no-smoothing")
       args.options.improvement.optimization.smoothing = false;
-    else if (a == "--passes" || a == "--threads" || a == "--max-tets")
+    else if (const volgrid::OptionSpec* spec = a.size() > 2 ? volgrid::findOption(a.substr(2)) : nullptr)
+    {
+      const char* v = value(a.c_str());
+      double x = 0;
+      if (!v || !volgrid::cli::parseOption("mesh", *spec, v, x))
+        return false;
+      args.given[a] = v;
+      volgrid::setOption(args.options.improvement, *spec, x);
+    }
+    else if (a == "--threads" || a == "--max-tets")
     {
       const char* v = value(a.c_str());
       long long n = 0;
@@ -121,47 +124,27 @@ bool parseArguments(int argc, char** argv, Arguments& args)
         if (!volgrid::cli::parseMaxTets("mesh", v, args.maxTets))
           return false;
       }
-      else if (n < 0 || n > (a == "--passes" ? 1000 : 1024))
+      else if (n < 0 || n > 1024)
       {
         std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
         return false;
       }
-      else if (a == "--passes")
-        args.options.improvement.optimization.maxPasses = static_cast<int>(n);
       else
         args.options.threads = static_cast<int>(n);
     }
-    else if (a == "--alpha" || a == "--beta" || a == "--gradation" || a == "--max-edge" || a == "--max-volume" ||
-      a == "--target-angle" || a == "--cluster-size" || a == "--size-scale")
+    else if (a == "--cluster-size")
     {
       const char* v = value(a.c_str());
       double x = 0;
       if (!v || !volgrid::cli::parseDouble("mesh", a.c_str(), v, x))
         return false;
       args.given[a] = v;
-      volgrid::ImprovementOptions& im = args.options.improvement;
-      bool ok = true;
-      if (a == "--alpha")
-        ok = x > 0, im.fieldPointOptions.alpha = x;
-      else if (a == "--beta")
-        ok = x >= 0, im.fieldPointOptions.beta = x;
-      else if (a == "--gradation")
-        ok = x >= 1, im.sizing.gradation = x;
-      else if (a == "--size-scale")
-        ok = x > 0, im.sizing.scale = x;
-      else if (a == "--max-edge")
-        ok = x >= 0, im.sizing.maxEdgeLength = x;
-      else if (a == "--max-volume")
-        ok = x >= 0, im.fieldPointOptions.maxVolume = x;
-      else if (a == "--target-angle")
-        ok = x > 0 && x < 60, im.optimization.targetDegrees = x;
-      else
-        ok = x > 0, args.clusterSize = x;
-      if (!ok)
+      if (!(x > 0))
       {
         std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
         return false;
       }
+      args.clusterSize = x;
     }
     else if (a == "--sizing" || a == "--cluster" || a == "--size-array")
     {
@@ -196,13 +179,13 @@ bool parseArguments(int argc, char** argv, Arguments& args)
     }
     else if (a == "--help" || a == "-h")
     {
-      std::fputs(kUsage, stdout);
+      std::fputs(kUsage.c_str(), stdout);
       std::fputs(volgrid::cli::kExportUsage, stdout);
       std::exit(0);
     }
     else if (!a.empty() && a[0] == '-')
     {
-      std::fprintf(stderr, "volgrid mesh: unknown option '%s'\n%s", a.c_str(), kUsage);
+      std::fprintf(stderr, "volgrid mesh: unknown option '%s'\n%s", a.c_str(), kUsage.c_str());
       return false;
     }
     else
@@ -210,7 +193,7 @@ bool parseArguments(int argc, char** argv, Arguments& args)
   }
   if (positional.size() != 2)
   {
-    std::fprintf(stderr, "volgrid mesh: expected SURFACE and OUT.vtu\n%s", kUsage);
+    std::fprintf(stderr, "volgrid mesh: expected SURFACE and OUT.vtu\n%s", kUsage.c_str());
     return false;
   }
   args.surface = positional[0];

@@ -5,11 +5,13 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "OutputPaths.h"
+#include "PointFiles.h"
 #include "SizeLimit.h"
 #include "VolGridConversion.h"
 #include "XmlDataFiles.h"
 
 #include "MeshImprovement.h"
+#include "OptionValues.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -35,43 +37,21 @@
 
 namespace
 {
-const char* kUsage =
+using volgrid::cli::optionUsage;
+namespace option = volgrid::option;
+const std::string kUsage = std::string(
   "usage: volgrid refine MESH.{vtu,vtk} OUT.vtu --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
   "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json]\n"
   "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
   "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
   "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
   "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n"
-  "  --passes N      optimisation pass limit, an integer (default 8; 0: no optimisation passes)\n"
-  "  --gradation G   > 1 grades the targets over the mesh edges first (default 0: no grading)\n"
-  "  --alpha A       field point density as for mesh (default 0.75; smaller = more points)\n"
-  "  --beta B        minimum spacing of new points in units of the target (default 0.55; 0: none)\n"
+  "  --gradation G        > 1 grades the targets over the mesh edges first (default 0: no grading)\n") +
+  optionUsage(option::alpha, "A") + optionUsage(option::beta, "B") + optionUsage(option::targetAngle, "DEG") +
+  optionUsage(option::passes, "N") +
   "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
   "                  the available memory holds)\n"
   "  OUT.vtu is replaced atomically, only when it was written whole.\n";
-
-bool endsWith(const std::string& s, const std::string& e)
-{
-  return s.size() >= e.size() && s.compare(s.size() - e.size(), e.size(), e) == 0;
-}
-
-vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path)
-{
-  vtkSmartPointer<vtkDataObject> data;
-  if (endsWith(path, ".vtk"))
-  {
-    vtkNew<vtkGenericDataObjectReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else
-  {
-    std::string ignored; // the caller names the file in its own message
-    return volgrid::cli::readXmlDataSet(path, ignored);
-  }
-  return vtkDataSet::SafeDownCast(data);
-}
 
 // The boundary faces (faces of one tet only) as sorted triples.
 std::set<std::array<int32_t, 3>> boundaryFaces(const volgrid::TetMesh& mesh)
@@ -104,99 +84,40 @@ std::string smallestTarget(const std::vector<double>& target)
 }
 } // namespace
 
-bool readPointsWithArray(const char* command, const std::string& path, const std::string& arrayName, bool needArray,
-  std::vector<double>& xyz, std::vector<double>& values)
-{
-  xyz.clear();
-  values.clear();
-  if (endsWith(path, ".txt") || endsWith(path, ".xyz") || endsWith(path, ".csv"))
-  {
-    std::ifstream in(path);
-    if (!in)
-    {
-      std::fprintf(stderr, "volgrid %s: cannot read '%s'\n", command, path.c_str());
-      return false;
-    }
-    std::string line;
-    size_t lineNo = 0;
-    bool anyValue = false, allValues = true;
-    while (std::getline(in, line))
-    {
-      ++lineNo;
-      std::replace(line.begin(), line.end(), ',', ' ');
-      if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t\r")] == '#')
-        continue;
-      std::istringstream ls(line);
-      double p[4];
-      int n = 0;
-      while (n < 4 && ls >> p[n])
-        ++n;
-      if (n < 3 || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      {
-        std::fprintf(stderr, "volgrid %s: %s line %zu: expected 'x y z [value]'\n", command, path.c_str(), lineNo);
-        return false;
-      }
-      xyz.insert(xyz.end(), p, p + 3);
-      values.push_back(n == 4 ? p[3] : 0.0);
-      anyValue |= n == 4;
-      allValues &= n == 4;
-    }
-    if (needArray && !allValues)
-    {
-      std::fprintf(stderr, "volgrid %s: %s: every line needs a fourth column (the size)\n", command, path.c_str());
-      return false;
-    }
-    if (!anyValue)
-      values.clear();
-    return true;
-  }
-  vtkSmartPointer<vtkDataSet> data = readDataSet(path);
-  if (!data || data->GetNumberOfPoints() == 0)
-  {
-    std::fprintf(stderr, "volgrid %s: cannot read points from '%s'\n", command, path.c_str());
-    return false;
-  }
-  const vtkIdType n = data->GetNumberOfPoints();
-  xyz.resize(3 * static_cast<size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-    data->GetPoint(i, xyz.data() + 3 * i);
-  vtkDataArray* array = arrayName.empty() ? nullptr : data->GetPointData()->GetArray(arrayName.c_str());
-  if (!array && needArray)
-  {
-    std::fprintf(stderr, "volgrid %s: '%s' has no point array '%s'\n", command, path.c_str(), arrayName.c_str());
-    return false;
-  }
-  if (array)
-  {
-    values.resize(static_cast<size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i)
-      values[i] = array->GetComponent(i, 0);
-  }
-  return true;
-}
-
 int runRefineCommand(int argc, char** argv)
 {
   std::vector<std::string> positional;
   std::string arrayName;
   bool json = false;
   long long maxTets = 0;
-  volgrid::RefineOptions options;
-  options.fieldPointOptions.alpha = volgrid::ImprovementOptions().fieldPointOptions.alpha;
+  volgrid::RefineOptions options; // alpha, beta, target angle, passes: OptionTable.h's defaults, as for meshing
   options.optimization = volgrid::ImprovementOptions().optimization;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h")
     {
-      std::fputs(kUsage, stdout);
+      std::fputs(kUsage.c_str(), stdout);
       return 0;
     }
     if (a == "--json")
       json = true;
     else if (a == "--no-optimize")
       options.optimize = false;
-    else if (a == "--passes" || a == "--max-tets")
+    else if (const volgrid::OptionSpec* spec = a.size() > 2 ? volgrid::findOption(a.substr(2)) : nullptr;
+             spec && volgrid::refinementOption(*spec))
+    {
+      double x = 0;
+      if (i + 1 >= argc)
+      {
+        std::fprintf(stderr, "volgrid refine: %s needs a value\n%s", a.c_str(), kUsage.c_str());
+        return 2;
+      }
+      if (!volgrid::cli::parseOption("refine", *spec, argv[++i], x))
+        return 2;
+      volgrid::setOption(options, *spec, x);
+    }
+    else if (a == "--max-tets")
     {
       long long n = 0;
       if (i + 1 >= argc || !volgrid::cli::parseLong("refine", a.c_str(), argv[i + 1], n))
@@ -205,25 +126,14 @@ int runRefineCommand(int argc, char** argv)
           std::fprintf(stderr, "volgrid refine: %s needs a value\n", a.c_str());
         return 2;
       }
-      const char* v = argv[++i];
-      if (a == "--max-tets")
-      {
-        if (!volgrid::cli::parseMaxTets("refine", v, maxTets))
-          return 2;
-      }
-      else if (n < 0 || n > 1000)
-      {
-        std::fprintf(stderr, "volgrid refine: --passes is out of range (0..1000): %s\n", v);
+      if (!volgrid::cli::parseMaxTets("refine", argv[++i], maxTets))
         return 2;
-      }
-      else
-        options.optimization.maxPasses = static_cast<int>(n);
     }
-    else if (a == "--size-array" || a == "--alpha" || a == "--beta" || a == "--gradation" || a == "--target-angle")
+    else if (a == "--size-array" || a == "--gradation")
     {
       if (i + 1 >= argc)
       {
-        std::fprintf(stderr, "volgrid refine: %s needs a value\n%s", a.c_str(), kUsage);
+        std::fprintf(stderr, "volgrid refine: %s needs a value\n%s", a.c_str(), kUsage.c_str());
         return 2;
       }
       const char* v = argv[++i];
@@ -235,16 +145,8 @@ int runRefineCommand(int argc, char** argv)
       double x = 0;
       if (!volgrid::cli::parseDouble("refine", a.c_str(), v, x))
         return 2;
-      bool ok = true;
-      if (a == "--alpha")
-        ok = x > 0, options.fieldPointOptions.alpha = x;
-      else if (a == "--beta")
-        ok = x >= 0, options.fieldPointOptions.beta = x;
-      else if (a == "--gradation")
-        ok = x >= 1, options.gradation = x;
-      else
-        ok = x > 0 && x < 60, options.optimization.targetDegrees = x;
-      if (!ok)
+      options.gradation = x;
+      if (!(x >= 1))
       {
         std::fprintf(stderr, "volgrid refine: %s is out of range: %s\n", a.c_str(), v);
         return 2;
@@ -252,7 +154,7 @@ int runRefineCommand(int argc, char** argv)
     }
     else if (!a.empty() && a[0] == '-')
     {
-      std::fprintf(stderr, "volgrid refine: unknown option '%s'\n%s", a.c_str(), kUsage);
+      std::fprintf(stderr, "volgrid refine: unknown option '%s'\n%s", a.c_str(), kUsage.c_str());
       return 2;
     }
     else
@@ -260,13 +162,13 @@ int runRefineCommand(int argc, char** argv)
   }
   if (positional.size() != 2 || arrayName.empty())
   {
-    std::fprintf(stderr, "volgrid refine: expected MESH.vtu OUT.vtu --size-array NAME\n%s", kUsage);
+    std::fprintf(stderr, "volgrid refine: expected MESH.vtu OUT.vtu --size-array NAME\n%s", kUsage.c_str());
     return 2;
   }
 
   if (const int code = volgrid::cli::checkOutputPath("refine", "OUT", positional[1], { "vtu" }, { positional[0] }))
     return code;
-  vtkSmartPointer<vtkDataSet> data = readDataSet(positional[0]);
+  vtkSmartPointer<vtkDataSet> data = volgrid::cli::readDataSet(positional[0]);
   auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
   if (!grid || grid->GetNumberOfCells() == 0)
   {

@@ -1,5 +1,5 @@
 // The size limit a run is checked against before any work (SizeEstimate.h): --max-tets N, or by default
-// as many tets as the memory this process can still get (Core/AvailableMemory.h).
+// as many tets as the memory this process can still get (Core/Base/AvailableMemory.h).
 #pragma once
 
 #include "SizeEstimate.h"

@@ -50,7 +50,7 @@ VTKVOLGRIDFILTERS_EXPORT void VolGridSetPatchAndRegionNames(const volgrid::Meshe
   const std::map<int32_t, std::string>& patchNames, const std::map<int32_t, std::string>& regionNames,
   vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 
-// A solver's mesh (Core/MeshReader.h) as VTK data: `volume` gets the tets with Region, PatchNames and
+// A solver's mesh (Core/IO/MeshReader.h) as VTK data: `volume` gets the tets with Region, PatchNames and
 // RegionNames; `boundary` (may be null) the boundary triangles with PatchId and PatchNames.
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromSolverMesh(
   const volgrid::SolverMesh& mesh, vtkUnstructuredGrid* volume, vtkPolyData* boundary);

@@ -17,6 +17,7 @@
 
 #include "SurfaceMesh.h"
 #include "SurfaceReader.h"
+#include "PolygonTriangulation.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// vtkVolGridQuality: a thin adapter from VTK grids to Core/Quality.h and Core/QualityStatistics.h.
+// vtkVolGridQuality: a thin adapter from VTK grids to Core/Quality/Quality.h and Core/Quality/QualityStatistics.h.
 #include "vtkVolGridQuality.h"
 
 #include "Quality.h"
@@ -249,7 +249,7 @@ struct vtkVolGridQuality::Internals
 
   static bool Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input,
     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
-  // The CFD face metrics of a pure tet grid (Core/CfdQuality.h): three cell arrays and six figures.
+  // The CFD face metrics of a pure tet grid (Core/Quality/CfdQuality.h): three cell arrays and six figures.
   static void Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
   static bool Surface(vtkVolGridQuality* self, vtkPolyData* input,

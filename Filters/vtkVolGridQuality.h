@@ -9,7 +9,7 @@
  *  - Volume grids: AspectRatio, MinDihedralAngle, MaxDihedralAngle (degrees), MinSolidAngle (steradians),
  *    Volume (signed: inverted tets are negative), VolumeGradient (largest |volume difference| with a
  *    face neighbour), RadiusEdgeRatio, RadiusRatio (vtkMeshQuality's tet radius ratio); for grids of
- *    tets only, the CFD metrics of OpenFOAM's checkMesh (Core/CfdQuality.h), each the largest over the
+ *    tets only, the CFD metrics of OpenFOAM's checkMesh (Core/Quality/CfdQuality.h), each the largest over the
  *    cell's faces: NonOrthogonality (degrees), Skewness, VolumeRatio (with the face neighbours).
  *  - Surface grids: AspectRatio, Area, MinAngle, MaxAngle (degrees).
  *  - Quality: a copy of the selected metric (see SetMetric), so that ParaView colours by it at once.
@@ -29,8 +29,8 @@
  * pieces) is put back together on rank 0 and measured there: every per-cell value (VolumeGradient across
  * piece borders too), the statistics and the histogram equal the one-process ones; the table is on rank 0.
  *
- * The metric definitions and their values for degenerate elements are those of Core/Quality.h; the
- * statistics are those of Core/QualityStatistics.h. The loops run with vtkSMPTools; all results are
+ * The metric definitions and their values for degenerate elements are those of Core/Quality/Quality.h; the
+ * statistics are those of Core/Quality/QualityStatistics.h. The loops run with vtkSMPTools; all results are
  * bit-identical for any number of threads. If the process uses the Sequential SMP backend (the default
  * of ParaView's VTK), the filter runs its loops with the STDThread backend for its own duration.
  */
@@ -60,7 +60,7 @@ public:
     AREA = 8,
     MIN_ANGLE = 9,
     MAX_ANGLE = 10,
-    NON_ORTHOGONALITY = 11, // CFD metrics of pure tet grids, as OpenFOAM's checkMesh (Core/CfdQuality.h)
+    NON_ORTHOGONALITY = 11, // CFD metrics of pure tet grids, as OpenFOAM's checkMesh (Core/Quality/CfdQuality.h)
     SKEWNESS = 12,
     VOLUME_RATIO = 13
   };

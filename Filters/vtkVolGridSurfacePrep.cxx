@@ -1,5 +1,5 @@
-// vtkVolGridSurfacePrep: a thin adapter from VTK surfaces to Core/SurfaceRepair.h, Core/SurfaceChecks.h and
-// Core/Enclosures.h.
+// vtkVolGridSurfacePrep: a thin adapter from VTK surfaces to Core/Surface/SurfaceRepair.h, Core/Surface/SurfaceChecks.h and
+// Core/Surface/Enclosures.h.
 #include "vtkVolGridSurfacePrep.h"
 #include "VolGridConversion.h"
 

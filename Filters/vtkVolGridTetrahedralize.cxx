@@ -29,6 +29,7 @@
 #include "Delaunay.h"
 #include "MeshChecker.h"
 #include "Mesher.h"
+#include "OptionTable.h"
 #include "SizeEstimate.h"
 #include "SurfaceMesh.h"
 
@@ -53,6 +54,36 @@ vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
   this->MaxPasses = defaults.optimization.maxPasses;
   this->Smoothing = defaults.optimization.smoothing;
 }
+
+namespace
+{
+// Sets `member` to `value` clamped to the option's valid range; true when it changed.
+template <typename T>
+bool setClamped(T& member, double value, const volgrid::OptionSpec& spec)
+{
+  const T clamped = static_cast<T>(spec.clamp(value));
+  if (member == clamped)
+    return false;
+  member = clamped;
+  return true;
+}
+} // namespace
+
+#define VOLGRID_OPTION_SETTER(Name, Type, Spec)                                                                \
+  void vtkVolGridTetrahedralize::Set##Name(Type value)                                                       \
+  {                                                                                                          \
+    if (setClamped(this->Name, value, volgrid::option::Spec))                                                \
+      this->Modified();                                                                                      \
+  }
+VOLGRID_OPTION_SETTER(Alpha, double, alpha)
+VOLGRID_OPTION_SETTER(Beta, double, beta)
+VOLGRID_OPTION_SETTER(Gradation, double, gradation)
+VOLGRID_OPTION_SETTER(SizeScale, double, sizeScale)
+VOLGRID_OPTION_SETTER(MaxEdgeLength, double, maxEdge)
+VOLGRID_OPTION_SETTER(MaxVolume, double, maxVolume)
+VOLGRID_OPTION_SETTER(TargetMinDihedral, double, targetAngle)
+VOLGRID_OPTION_SETTER(MaxPasses, int, passes)
+#undef VOLGRID_OPTION_SETTER
 
 vtkVolGridTetrahedralize::~vtkVolGridTetrahedralize()
 {

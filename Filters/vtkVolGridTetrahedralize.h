@@ -132,45 +132,45 @@ public:
   /**
    * Density: eq. 4's alpha. A tet gets a point at its centroid when the centroid is farther than
    * Alpha * h from the tet's vertices (h: the local target edge length). Smaller = more points.
-   * Default 0.75 (mean edge length close to h).
+   * Default: Core's OptionTable.h (mean edge length close to h).
    */
-  vtkSetClampMacro(Alpha, double, 0.05, 10.0);
+  virtual void SetAlpha(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(Alpha, double);
   ///@}
 
   ///@{
-  /** Density: eq. 5's beta, the minimum spacing of field points in units of h. Default 0.4. */
-  vtkSetClampMacro(Beta, double, 0.0, 5.0);
+  /** Density: eq. 5's beta, the minimum spacing of field points in units of h. Default: Core's OptionTable.h. */
+  virtual void SetBeta(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(Beta, double);
   ///@}
 
   ///@{
   /**
    * Density: size growth between neighbours, h(v) <= h(u) + (Gradation - 1) |uv|; away from the
-   * boundary the size grows at that rate unless something smaller is asked. Smaller = finer. Default 1.5.
+   * boundary the size grows at that rate unless something smaller is asked. Smaller = finer. Default: OptionTable.h.
    */
-  vtkSetClampMacro(Gradation, double, 1.0, 10.0);
+  virtual void SetGradation(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(Gradation, double);
   ///@}
 
   ///@{
   /**
    * Density: target edge length at the boundary as a multiple of the boundary's own spacing (its mean
-   * edge length per point, paper eq. 3). Default 1: the volume as fine as the surface at the boundary.
+   * edge length per point, paper eq. 3). Default (OptionTable.h) 1: the volume as fine as the surface at the boundary.
    */
-  vtkSetClampMacro(SizeScale, double, 0.05, 100.0);
+  virtual void SetSizeScale(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(SizeScale, double);
   ///@}
 
   ///@{
-  /** Density: global cap on the target edge length (0 = none). Default 0. */
-  vtkSetClampMacro(MaxEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  /** Density: global cap on the target edge length (0 = none). Default: Core's OptionTable.h. */
+  virtual void SetMaxEdgeLength(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(MaxEdgeLength, double);
   ///@}
 
   ///@{
-  /** Density: global cap on the tet volume (0 = none). Default 0. */
-  vtkSetClampMacro(MaxVolume, double, 0.0, VTK_DOUBLE_MAX);
+  /** Density: global cap on the tet volume (0 = none). Default: Core's OptionTable.h. */
+  virtual void SetMaxVolume(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(MaxVolume, double);
   ///@}
 
@@ -193,7 +193,7 @@ public:
   ///@{
   /**
    * Boundary patches: names and groups of the input's PatchId values, "NAME=ID,ID,NAME=ID,..." as the
-   * CLI's --patch (Core/PatchNames.h): group k gets PatchId k + 1 and its name, ids not listed keep their
+   * CLI's --patch (Core/Mesh/PatchNames.h): group k gets PatchId k + 1 and its name, ids not listed keep their
    * own patch after the groups. Empty (default): the input's PatchId and PatchNames are kept as they are.
    */
   vtkSetStringMacro(PatchAssignment);
@@ -216,16 +216,16 @@ public:
 
   ///@{
   /**
-   * Quality: target for min(smallest dihedral angle, 180 - largest) in degrees. Default 18. Tets whose
+   * Quality: target for min(smallest dihedral angle, 180 - largest) in degrees. Default: OptionTable.h. Tets whose
    * four vertices lie on the boundary keep the shape the boundary triangles give them.
    */
-  vtkSetClampMacro(TargetMinDihedral, double, 1.0, 60.0);
+  virtual void SetTargetMinDihedral(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(TargetMinDihedral, double);
   ///@}
 
   ///@{
-  /** Quality: optimisation pass limit. Default 8. */
-  vtkSetClampMacro(MaxPasses, int, 0, 1000);
+  /** Quality: optimisation pass limit. Default: Core's OptionTable.h. */
+  virtual void SetMaxPasses(int value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(MaxPasses, int);
   ///@}
 
@@ -259,19 +259,19 @@ protected:
   int RandomSeed = 1;
   bool CheckOutput = false;
   bool FieldPoints = true;
-  double Alpha = 0.75;
-  double Beta = 0.4;
-  double Gradation = 1.5;
-  double SizeScale = 1.0;
-  double MaxEdgeLength = 0;
-  double MaxVolume = 0;
+  double Alpha = 0; // the default: the constructor, from Core
+  double Beta = 0; // the default: the constructor, from Core
+  double Gradation = 0; // the default: the constructor, from Core
+  double SizeScale = 0; // the default: the constructor, from Core
+  double MaxEdgeLength = 0; // the default: the constructor, from Core
+  double MaxVolume = 0; // the default: the constructor, from Core
   bool ClusterSourcePoints = true;
   char* SourceSizeArray = nullptr;
   char* PatchAssignment = nullptr;
   bool SizingFromSources = false;
   bool Optimize = true;
-  double TargetMinDihedral = 18;
-  int MaxPasses = 8;
+  double TargetMinDihedral = 0; // the default: the constructor, from Core
+  int MaxPasses = 0; // the default: the constructor, from Core
   bool Smoothing = true;
 
 private:

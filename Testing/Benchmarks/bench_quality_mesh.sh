@@ -2,8 +2,8 @@
 # Element quality benchmark (issue 4): VolGrid with default settings against TetGen `-pYq1.414` (Debian's
 # tetgen program) and Gmsh HXT (`gmsh -3 -algo hxt`) on the same closed surfaces, side by side:
 #   1. the sphere-in-sphere domain: an icosphere body (r = 1, 20,480 triangles) inside an icosphere far
-#      field (r = 10, Core/Enclosures.h's default spacing), written with `volgrid prep`;
-#   2. the clean corpus (VolGrid against TetGen -pYq1.414): the selection of Testing/Core/TestMesherCorpus.cxx's
+#      field (r = 10, Core/Surface/Enclosures.h's default spacing), written with `volgrid prep`;
+#   2. the clean corpus (VolGrid against TetGen -pYq1.414): the selection of Testing/Core/Mesher/TestMesherCorpus.cxx's
 #      cleanClosedFiles() (SOURCES.md rows with watertight YES and no defect other than polygon faces or
 #      inconsistent orientation), models above 300,000 triangles skipped for runtime (listed as such; the
 #      largest corpus model, igea.ply, has 268,686 and takes VolGrid about 20 s).
@@ -93,7 +93,7 @@ def run(cmd, cwd=work):
         return subprocess.CompletedProcess(cmd, -1, "", "TIMEOUT after %g s" % timeout)
 
 def clean_closed_files():
-    """Testing/Core/TestMesherCorpus.cxx's cleanClosedFiles(), same rule."""
+    """Testing/Core/Mesher/TestMesherCorpus.cxx's cleanClosedFiles(), same rule."""
     files = []
     with open(os.path.join(corpus_dir, "SOURCES.md")) as f:
         for line in f:

@@ -1,4 +1,4 @@
-// VolGrid's own Delaunay kernel (Core/Delaunay.h), compiled in when that header exists.
+// VolGrid's own Delaunay kernel (Core/Delaunay/Delaunay.h), compiled in when that header exists.
 #include "bench_common.h"
 
 #ifndef VOLGRID_BENCH_HAVE_VOLGRID
@@ -6,7 +6,7 @@ namespace volgrid_bench
 {
 bool runVolGrid(const std::vector<double>&, const VolGridSettings&, Meter&, EngineResult& result)
 {
-  result.error = "the volgrid engine is not built (no Core/Delaunay.h at configure time, or -DVOLGRID_BENCH_VOLGRID=OFF)";
+  result.error = "the volgrid engine is not built (no Core/Delaunay/Delaunay.h at configure time, or -DVOLGRID_BENCH_VOLGRID=OFF)";
   return false;
 }
 } // namespace volgrid_bench

@@ -127,7 +127,7 @@ def main():
         check(foam["ok"], "OpenFOAM checkMesh: Mesh OK")
     check((foam["points"], foam["cells"], foam["patches"]) == (points, tets, faces),
           "checkMesh: same points, cells, patch names and faces")
-    # VolGrid Quality's CFD metrics (Core/CfdQuality.h) against checkMesh's on the same mesh.
+    # VolGrid Quality's CFD metrics (Core/Quality/CfdQuality.h) against checkMesh's on the same mesh.
     q = json.loads(run(volgrid, "quality", w("domain.mesh"), "--json").stdout)
     print("VolGrid quality: max non-orthogonality %.6g, %d faces > 70 deg, max skewness %.6g, max volume ratio %.6g"
           % (q["MaxNonOrthogonality"], q["SevereNonOrthogonalFaces"], q["MaxSkewness"], q["MaxVolumeRatio"]))

@@ -1,0 +1,67 @@
+// Every numeric option of the mesher, written once: its name on the command line (--NAME), its property
+// in the VTK filter and the ParaView panel, its type, default, valid range and a one-line doc. The
+// options structs take their defaults from here, Core's option checks and the CLI's parsing and usage
+// take the valid ranges, the filter clamps to them, and a test (Testing/Layout/check_plugin_options.py)
+// holds Plugin/VolGridTetrahedralize.xml's defaults and slider ranges against this table.
+// Changing a default or a range is a one-line change of one row below.
+#pragma once
+
+#include <limits>
+#include <string>
+
+namespace volgrid
+{
+
+enum class OptionType
+{
+  Real,
+  Integer
+};
+
+struct OptionSpec
+{
+  const char* name;     // the CLI flag without "--"
+  const char* property; // the filter's and the Plugin XML's property
+  OptionType type;
+  double defaultValue;
+  double minimum, maximum;  // valid range; infinity = unbounded
+  bool minimumIncluded;     // [minimum or (minimum
+  bool maximumIncluded;     // maximum] or maximum)
+  double sliderMin, sliderMax; // the GUI's slider (Plugin XML range domain); infinity = no max attribute
+  const char* doc;
+
+  constexpr bool valid(double x) const
+  {
+    return (minimumIncluded ? x >= minimum : x > minimum) && (maximumIncluded ? x <= maximum : x < maximum) &&
+      (type == OptionType::Real || x == static_cast<double>(static_cast<long long>(x)));
+  }
+  // The closed range the filter clamps to (an open end is clamped to the end itself; Core then refuses it).
+  constexpr double clamp(double x) const { return x < minimum ? minimum : x > maximum ? maximum : x; }
+  // "(0, inf)", "[1, 60]": for messages and usage text.
+  std::string rangeText() const;
+};
+
+namespace option
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// clang-format off
+//                                 name            property             type                defaults min  max   [min   max]   slider      doc
+inline constexpr OptionSpec alpha{ "alpha",       "Alpha",             OptionType::Real,    0.75, 0,   kInf, false, false, 0.3, 2,    "field points, eq. 4: a tet gets a point when its centroid is farther than alpha*h from its vertices (smaller = more points)" };
+inline constexpr OptionSpec beta{ "beta",         "Beta",              OptionType::Real,    0.4,  0,   kInf, true,  false, 0,   1,    "field points, eq. 5: no two points closer than beta*h (0: no minimum spacing)" };
+inline constexpr OptionSpec sizeScale{ "size-scale", "SizeScale",      OptionType::Real,    1,    0,   kInf, false, false, 0.25, 10,  "h at the boundary = size-scale x the boundary's point spacing" };
+inline constexpr OptionSpec gradation{ "gradation", "Gradation",       OptionType::Real,    1.5,  1,   kInf, true,  false, 1,   3,    "size growth between neighbours, h(v) <= h(u) + (gradation-1)|uv| (smaller = finer)" };
+inline constexpr OptionSpec maxEdge{ "max-edge",  "MaxEdgeLength",     OptionType::Real,    0,    0,   kInf, true,  false, 0,   kInf, "global cap on the target edge length (0: no cap)" };
+inline constexpr OptionSpec maxVolume{ "max-volume", "MaxVolume",      OptionType::Real,    0,    0,   kInf, true,  false, 0,   kInf, "cap on tet volume (0: no cap)" };
+inline constexpr OptionSpec targetAngle{ "target-angle", "TargetMinDihedral", OptionType::Real, 18, 0, 60,  false, true,  1,   60,   "optimisation target for min(dihedral, 180 - max dihedral), degrees" };
+inline constexpr OptionSpec passes{ "passes",     "MaxPasses",         OptionType::Integer, 8,    0,   1000, true,  true,  0,   50,   "optimisation pass limit (0: no optimisation passes)" };
+// clang-format on
+inline constexpr const OptionSpec* table[] = { &alpha, &beta, &sizeScale, &gradation, &maxEdge, &maxVolume,
+  &targetAngle, &passes };
+} // namespace option
+
+// The row whose CLI name (flag without "--") is `name`, or nullptr.
+const OptionSpec* findOption(const std::string& name);
+// The row whose filter / Plugin XML property is `property`, or nullptr.
+const OptionSpec* findOptionByProperty(const std::string& property);
+
+} // namespace volgrid

@@ -1,0 +1,182 @@
+// Medit .mesh reader (ASCII): Vertices, Triangles and Quadrilaterals (their references become patch
+// ids); every other known section is skipped.
+#include "MeditReader.h"
+#include "SurfaceReaderSupport.h"
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace volgrid
+{
+
+using namespace detail;
+
+Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
+  const SurfaceReadOptions& options)
+{
+  mesh.clear();
+  SurfaceReadInfo localInfo;
+  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
+  info = SurfaceReadInfo();
+  info.format = "Medit";
+  std::string text;
+  Status s = loadFile(path, text);
+  if (!s.ok())
+  {
+    return s;
+  }
+  if (lowerExtension(path) == "meshb" || text.find('\0') != std::string::npos)
+  {
+    return readError(path, 0, "binary Medit (.meshb) is not supported");
+  }
+  Scanner sc(text, path, true);
+  const int64_t limit = countLimit(text);
+  int64_t dim = 3;
+  bool haveVertices = false;
+  std::vector<int32_t> loop, scratch;
+  // Entries per record of the sections we skip.
+  static const std::pair<const char*, int> skipped[] = { { "Edges", 3 }, { "Tetrahedra", 5 },
+    { "Prisms", 7 }, { "Pentahedra", 7 }, { "Hexahedra", 9 }, { "Corners", 1 }, { "Ridges", 1 },
+    { "RequiredVertices", 1 }, { "RequiredEdges", 1 }, { "RequiredTriangles", 1 },
+    { "RequiredQuadrilaterals", 1 }, { "Normals", 3 }, { "Tangents", 3 }, { "NormalAtVertices", 2 },
+    { "NormalAtTriangleVertices", 3 }, { "NormalAtQuadrilateralVertices", 3 }, { "TangentAtVertices", 2 },
+    { "TangentAtEdgeVertices", 3 }, { "Crack", 2 }, { "Edges", 3 } };
+  std::string_view tok;
+  while (sc.next(tok))
+  {
+    if (tok == "End")
+    {
+      break;
+    }
+    if (tok == "MeshVersionFormatted")
+    {
+      int64_t v;
+      s = sc.readInt(v, "version number");
+      if (!s.ok())
+      {
+        return s;
+      }
+      continue;
+    }
+    if (tok == "Dimension")
+    {
+      s = sc.readInt(dim, "dimension");
+      if (!s.ok())
+      {
+        return s;
+      }
+      if (dim != 3)
+      {
+        return sc.error("only 3D Medit meshes are supported (Dimension " + std::to_string(dim) + ")");
+      }
+      continue;
+    }
+    if (tok == "Vertices")
+    {
+      int64_t nv;
+      s = sc.readCount(nv, "vertex count", limit);
+      if (!s.ok())
+      {
+        return s;
+      }
+      mesh.points.reserve(3 * size_t(nv));
+      for (int64_t i = 0; i < nv; ++i)
+      {
+        double xyz[3];
+        int64_t ref;
+        for (int k = 0; k < 3; ++k)
+        {
+          s = sc.readDouble(xyz[k], "a vertex coordinate");
+          if (!s.ok())
+          {
+            return s;
+          }
+        }
+        s = sc.readInt(ref, "a vertex reference");
+        if (!s.ok())
+        {
+          return s;
+        }
+        mesh.addPoint(xyz[0], xyz[1], xyz[2]);
+      }
+      info.filePoints += nv;
+      haveVertices = true;
+      continue;
+    }
+    if (tok == "Triangles" || tok == "Quadrilaterals")
+    {
+      const int nc = tok == "Triangles" ? 3 : 4;
+      if (!haveVertices)
+      {
+        return sc.error("element section before the Vertices section");
+      }
+      int64_t ne;
+      s = sc.readCount(ne, "element count", limit);
+      if (!s.ok())
+      {
+        return s;
+      }
+      const int64_t nv = mesh.numberOfPoints();
+      for (int64_t e = 0; e < ne; ++e)
+      {
+        loop.clear();
+        for (int k = 0; k < nc; ++k)
+        {
+          int64_t id;
+          s = sc.readInt(id, "a vertex id");
+          if (!s.ok())
+          {
+            return s;
+          }
+          if (id < 1 || id > nv)
+          {
+            return sc.error("element " + std::to_string(e + 1) + ": vertex id " + std::to_string(id) +
+              " out of range [1," + std::to_string(nv) + "]");
+          }
+          loop.push_back(static_cast<int32_t>(id - 1));
+        }
+        int64_t ref;
+        s = sc.readInt(ref, "an element reference");
+        if (!s.ok())
+        {
+          return s;
+        }
+        ++info.fileFaces;
+        addPolygon(mesh, loop, static_cast<int32_t>(ref), info, scratch);
+      }
+      continue;
+    }
+    int per = -1;
+    for (const auto& sk : skipped)
+    {
+      if (tok == sk.first)
+      {
+        per = sk.second;
+      }
+    }
+    if (per < 0)
+    {
+      return sc.error("unknown Medit keyword '" + std::string(tok.substr(0, 40)) + "'");
+    }
+    int64_t ne;
+    s = sc.readCount(ne, "entry count", limit);
+    if (!s.ok())
+    {
+      return s;
+    }
+    for (int64_t e = 0; e < ne * per; ++e)
+    {
+      if (!sc.next(tok))
+      {
+        return sc.error("unexpected end of file in a skipped section");
+      }
+    }
+    info.skippedElements += ne;
+  }
+  fanFallbackWarning(info);
+  return finish(path, mesh, &info, options.mergeCoincidentPoints);
+}
+
+} // namespace volgrid

@@ -1,0 +1,469 @@
+#include "MeshOptimization.h"
+
+#include "Predicates.h"
+#include "PredicatesInline.h"
+#include "Quality.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <thread>
+
+namespace volgrid
+{
+
+namespace
+{
+inline double tetQ(const TetMesh& m, int32_t a, int32_t b, int32_t c, int32_t d)
+{
+  return tetSineQuality(m.point(a), m.point(b), m.point(c), m.point(d));
+}
+inline double tetQ(const TetMesh& m, int32_t t)
+{
+  const int32_t* w = m.vertices(t);
+  return tetQ(m, w[0], w[1], w[2], w[3]);
+}
+inline bool positive(const TetMesh& m, const std::array<int32_t, 4>& q)
+{
+  return predicates::orient3dInline(m.point(q[0]), m.point(q[1]), m.point(q[2]), m.point(q[3])) > 0;
+}
+
+// Sine of the dihedral angle at each edge (0,1) (0,2) (0,3) (1,2) (1,3) (2,3) of tet t (unsigned).
+void edgeSines(const TetMesh& m, int32_t t, double s[6])
+{
+  const int32_t* w = m.vertices(t);
+  const double *a = m.point(w[0]), *b = m.point(w[1]), *c = m.point(w[2]), *d = m.point(w[3]);
+  double ang[6];
+  quality::tetDihedralAngles(a, b, c, d, ang);
+  for (int i = 0; i < 6; ++i)
+    s[i] = std::sin(ang[i] * 3.14159265358979323846 / 180.0);
+}
+constexpr int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+
+struct Scratch
+{
+  std::vector<int32_t> ring, tets;
+  std::vector<double> Q;
+  std::vector<int> K;
+  std::vector<std::array<int32_t, 4>> newTets;
+};
+Scratch& scratch()
+{
+  static thread_local Scratch s;
+  return s;
+}
+
+void emit(const std::vector<int32_t>& r, const std::vector<int>& K, int n, int i, int j, int32_t x,
+  int32_t y, std::vector<std::array<int32_t, 4>>& out)
+{
+  if (j - i < 2)
+    return;
+  const int k = K[i * n + j];
+  out.push_back({ r[i], r[k], r[j], y });
+  out.push_back({ r[i], r[j], r[k], x });
+  emit(r, K, n, i, k, x, y, out);
+  emit(r, K, n, k, j, x, y, out);
+}
+} // namespace
+
+namespace
+{
+// The smallest and largest dihedral angles of a tet (Quality.h). This summary runs after every
+// optimisation pass.
+void minMaxDihedral(const double* p0, const double* p1, const double* p2, const double* p3, double& lo, double& hi)
+{
+  quality::tetDihedralExtremes(p0, p1, p2, p3, lo, hi);
+}
+} // namespace
+
+DihedralSummary summarizeDihedrals(const TetMesh& mesh)
+{
+  // Runs over the whole mesh several times per optimisation and insertion round (a tenth of a second per
+  // 800,000 tets): the tet slots are split between threads, the partial summaries merged (min, max and
+  // counts, so the result does not depend on the split).
+  auto summarize = [&mesh](int32_t begin, int32_t end, DihedralSummary& s) {
+    for (int32_t t = begin; t < end; ++t)
+    {
+      if (mesh.isFree(t))
+        continue;
+      const int32_t* w = mesh.vertices(t);
+      if ((w[0] | w[1] | w[2] | w[3]) < 0)
+        continue;
+      const double *a = mesh.point(w[0]), *b = mesh.point(w[1]), *c = mesh.point(w[2]), *d = mesh.point(w[3]);
+      double lo, hi;
+      minMaxDihedral(a, b, c, d, lo, hi);
+      ++s.tets;
+      s.minDihedral = std::min(s.minDihedral, lo);
+      s.maxDihedral = std::max(s.maxDihedral, hi);
+      s.below10 += lo < 10;
+      s.above170 += hi > 170;
+      s.inverted += predicates::orient3dInline(a, b, c, d) <= 0;
+    }
+  };
+  const int32_t n = mesh.tetCapacity();
+  const unsigned hw = std::thread::hardware_concurrency();
+  const int threads = n < 50000 ? 1 : static_cast<int>(std::clamp(hw, 1u, 8u));
+  std::vector<DihedralSummary> parts(static_cast<size_t>(threads));
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k)
+    pool.emplace_back(summarize, static_cast<int32_t>(int64_t(n) * k / threads),
+      static_cast<int32_t>(int64_t(n) * (k + 1) / threads), std::ref(parts[static_cast<size_t>(k)]));
+  summarize(0, static_cast<int32_t>(int64_t(n) / threads), parts[0]);
+  for (std::thread& th : pool)
+    th.join();
+  DihedralSummary s;
+  for (const DihedralSummary& p : parts)
+  {
+    s.tets += p.tets;
+    s.minDihedral = std::min(s.minDihedral, p.minDihedral);
+    s.maxDihedral = std::max(s.maxDihedral, p.maxDihedral);
+    s.below10 += p.below10;
+    s.above170 += p.above170;
+    s.inverted += p.inverted;
+  }
+  return s;
+}
+
+bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created)
+{
+  Scratch& s = scratch();
+  TetMesh& m = editor.mesh;
+  if (!editor.edgeRing(t, x, y, s.ring, s.tets, maxRing))
+    return false;
+  const int n = static_cast<int>(s.ring.size());
+  double qOld = 2;
+  for (int32_t u : s.tets)
+    qOld = std::min(qOld, tetQ(m, u));
+  s.Q.assign(static_cast<size_t>(n * n), 2.0);
+  s.K.assign(static_cast<size_t>(n * n), -1);
+  const std::vector<int32_t>& r = s.ring;
+  for (int len = 2; len < n; ++len)
+    for (int i = 0; i + len < n; ++i)
+    {
+      const int j = i + len;
+      double best = -3;
+      int bestK = -1;
+      for (int k = i + 1; k < j; ++k)
+      {
+        const double sub = std::min(s.Q[i * n + k], s.Q[k * n + j]);
+        if (sub <= best)
+          continue;
+        const double q1 = tetQ(m, r[i], r[k], r[j], y);
+        if (std::min(sub, q1) <= best)
+          continue;
+        const double q2 = tetQ(m, r[i], r[j], r[k], x);
+        const double v = std::min(sub, std::min(q1, q2));
+        if (v > best)
+        {
+          best = v;
+          bestK = k;
+        }
+      }
+      s.Q[i * n + j] = best;
+      s.K[i * n + j] = bestK;
+    }
+  const double qNew = s.Q[n - 1];
+  if (!(qNew > qOld) || !(qNew > 0))
+    return false;
+  s.newTets.clear();
+  emit(r, s.K, n, 0, n - 1, x, y, s.newTets);
+  for (const auto& q : s.newTets)
+    if (!positive(m, q))
+      return false;
+  return editor.replace(s.tets, s.newTets, created); // replace() does not touch this scratch
+}
+
+bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created)
+{
+  TetMesh& m = editor.mesh;
+  if (editor.isConstrainedFace(t, face))
+    return false;
+  const int32_t u = m.neighbor(t, face);
+  const int j = m.mirrorFace(t, face);
+  const int32_t d = m.vertex(t, face), e = m.vertex(u, j);
+  int32_t f[3];
+  m.faceVertices(t, face, f);
+  const double qOld = std::min(tetQ(m, t), tetQ(m, u));
+  std::vector<std::array<int32_t, 4>>& nt = scratch().newTets;
+  nt.clear();
+  nt.push_back({ f[0], f[1], e, d });
+  nt.push_back({ f[1], f[2], e, d });
+  nt.push_back({ f[2], f[0], e, d });
+  double qNew = 2;
+  for (const auto& q : nt)
+    qNew = std::min(qNew, tetQ(m, q[0], q[1], q[2], q[3]));
+  if (!(qNew > qOld) || !(qNew > 0))
+    return false;
+  for (const auto& q : nt)
+    if (!positive(m, q))
+      return false;
+  std::vector<int32_t>& old = scratch().tets;
+  old.assign({ t, u });
+  return editor.replace(old, nt, created);
+}
+
+bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created)
+{
+  Scratch& s = scratch();
+  TetMesh& m = editor.mesh;
+  editor.star(v, s.tets);
+  if (s.tets.size() < 4)
+    return false;
+  double qOld = 2;
+  for (int32_t t : s.tets)
+  {
+    qOld = std::min(qOld, tetQ(m, t));
+    const int iv = m.localIndex(t, v);
+    for (int i = 0; i < 4; ++i) // the faces through v disappear: none may be constrained
+      if (i != iv && editor.isConstrainedFace(t, i))
+        return false;
+  }
+  editor.neighbors(v, s.tets, s.ring);
+  // The star of v, coned from w over its outer faces not through w: those new tets tile the star exactly
+  // when all are strictly positive (their signed volumes add up to the star's, each point covered once).
+  double best = qOld;
+  int32_t bestW = -1;
+  for (int32_t w : s.ring)
+  {
+    double q = 2;
+    for (int32_t t : s.tets)
+    {
+      const int32_t* x = m.vertices(t);
+      if (x[0] == w || x[1] == w || x[2] == w || x[3] == w)
+        continue;
+      std::array<int32_t, 4> n = { x[0], x[1], x[2], x[3] };
+      *std::find(n.begin(), n.end(), v) = w;
+      q = std::min(q, tetQ(m, n[0], n[1], n[2], n[3]));
+      if (!(q > best))
+        break;
+    }
+    if (!(q > best))
+      continue;
+    bool valid = true;
+    for (int32_t t : s.tets)
+    {
+      const int32_t* x = m.vertices(t);
+      if (x[0] == w || x[1] == w || x[2] == w || x[3] == w)
+        continue;
+      std::array<int32_t, 4> n = { x[0], x[1], x[2], x[3] };
+      *std::find(n.begin(), n.end(), v) = w;
+      if (!positive(m, n))
+      {
+        valid = false;
+        break;
+      }
+    }
+    if (valid)
+    {
+      best = q;
+      bestW = w;
+    }
+  }
+  if (bestW < 0 || !(best > 0))
+    return false;
+  s.newTets.clear();
+  for (int32_t t : s.tets)
+  {
+    const int32_t* x = m.vertices(t);
+    if (x[0] == bestW || x[1] == bestW || x[2] == bestW || x[3] == bestW)
+      continue;
+    std::array<int32_t, 4> n = { x[0], x[1], x[2], x[3] };
+    *std::find(n.begin(), n.end(), v) = bestW;
+    s.newTets.push_back(n);
+  }
+  if (!editor.replace(s.tets, s.newTets, created))
+    return false;
+  editor.forgetVertex(v);
+  return true;
+}
+
+namespace
+{
+// The mesh's smallest dihedral angle as summarizeDihedrals() gives it, from `below` (every tet whose sine
+// quality is under sin(targetDegrees), as optimizeMesh collects them): a tet with an angle under the
+// target is among them, so when their smallest angle is under the target (with a margin far above the
+// rounding of either measure) it is the mesh's. Otherwise a sweep.
+double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees)
+{
+  double m = 180;
+  for (const auto& b : below)
+  {
+    const int32_t* w = mesh.vertices(b.second);
+    double lo, hi;
+    minMaxDihedral(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), lo, hi);
+    m = std::min(m, lo);
+  }
+  return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh).minDihedral;
+}
+
+// Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
+// first strict improvement is kept (created receives the new tets). True when one was made.
+bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options, OptimizationReport& report,
+  std::vector<int32_t>& created)
+{
+  TetMesh& mesh = editor.mesh;
+  if (options.edgeRemoval)
+  {
+    double s[6];
+    edgeSines(mesh, t, s);
+    int order[6] = { 0, 1, 2, 3, 4, 5 };
+    std::sort(order, order + 6, [&](int a, int b) { return s[a] < s[b]; });
+    const int32_t* w = mesh.vertices(t);
+    const int32_t vv[4] = { w[0], w[1], w[2], w[3] };
+    for (int e = 0; e < 6; ++e)
+      if (tryEdgeRemoval(editor, t, vv[kEdge[order[e]][0]], vv[kEdge[order[e]][1]], options.maxRing, &created))
+      {
+        ++report.edgeRemovals;
+        report.flips32 += created.size() == 2;
+        return true;
+      }
+  }
+  if (options.flips)
+    for (int f = 0; f < 4; ++f)
+      if (tryFlip23(editor, t, f, &created))
+      {
+        ++report.flips23;
+        return true;
+      }
+  return false;
+}
+} // namespace
+
+Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
+  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress, OptimizationReport* reportOut)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if (mesh.numGhostTets() > 0)
+    return Status::failure(ErrorKind::InvalidOption, "Optimisation works on a mesh without ghost tets.");
+  if (!(options.targetDegrees > 0 && options.targetDegrees < 90) || options.maxPasses < 0 || options.maxRing < 3)
+    return Status::failure(ErrorKind::InvalidOption,
+      "Optimisation needs 0 < targetDegrees < 90, maxPasses >= 0 and maxRing >= 3.");
+  OptimizationReport local;
+  OptimizationReport& report = reportOut ? *reportOut : local;
+  if (options.summaries)
+    report.before = summarizeDihedrals(mesh);
+  TetEditor editor(mesh, constraints, labels);
+  std::vector<uint8_t> lock = editor.lockedVertices();
+  if (locked)
+    for (size_t v = 0; v < lock.size() && v < locked->size(); ++v)
+      lock[v] |= (*locked)[v];
+  const double qT = std::sin(options.targetDegrees * 3.14159265358979323846 / 180.0);
+  // The pass works on a worklist, not on the whole mesh: the tets below the target at the start of the
+  // call are collected once; from then on the only tets whose quality can have changed are those created
+  // by flips, edge removals and collapses and those in the star of a moved vertex (`touched`). The tets
+  // below a limit are therefore found among the last collection and the touched tets: the same set, in
+  // the same (quality, slot) order, as a sweep over the whole mesh, at a cost proportional to the work.
+  std::vector<std::pair<double, int32_t>> bad, worst;
+  std::vector<int32_t> queue, created, verts, touched, candidates, star;
+  mesh.forEachTet([&](int32_t t) {
+    const double q = tetQ(mesh, t);
+    if (q < qT)
+      bad.emplace_back(q, t);
+  });
+  std::sort(bad.begin(), bad.end());
+  auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out) {
+    candidates.clear();
+    for (const auto& b : bad)
+      candidates.push_back(b.second);
+    candidates.insert(candidates.end(), touched.begin(), touched.end());
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    out.clear();
+    for (int32_t t : candidates)
+      if (!mesh.isFree(t))
+      {
+        const double q = tetQ(mesh, t);
+        if (q < qLimit)
+          out.emplace_back(q, t);
+      }
+    std::sort(out.begin(), out.end());
+  };
+  report.belowTargetBefore = static_cast<int64_t>(bad.size());
+  report.minDihedralBefore =
+    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
+  for (int pass = 0; pass < options.maxPasses && !bad.empty(); ++pass)
+  {
+    if (progress)
+    {
+      if (progress->cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+      progress->report(double(pass) / options.maxPasses, "Optimising");
+    }
+    int64_t changes = 0;
+    touched.clear();
+    queue.clear();
+    for (const auto& b : bad)
+      queue.push_back(b.second);
+    for (size_t k = 0; k < queue.size(); ++k)
+    {
+      const int32_t t = queue[k];
+      if (mesh.isFree(t) || tetQ(mesh, t) >= qT)
+        continue;
+      if (tryFlipsOf(editor, t, options, report, created))
+      {
+        ++changes;
+        touched.insert(touched.end(), created.begin(), created.end());
+        for (int32_t u : created)
+          if (tetQ(mesh, u) < qT)
+            queue.push_back(u);
+      }
+    }
+    if (options.smoothing)
+    {
+      collectBelow(qT, worst);
+      verts.clear();
+      for (const auto& w : worst)
+        for (int i = 0; i < 4; ++i)
+          verts.push_back(mesh.vertex(w.second, i));
+      std::sort(verts.begin(), verts.end());
+      verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+      for (int32_t v : verts)
+        if (!lock[v] && smoothVertex(editor, v, options.smoothingOptions) != SmoothMove::None)
+        {
+          ++report.smoothMoves;
+          ++changes;
+          editor.star(v, star);
+          touched.insert(touched.end(), star.begin(), star.end());
+        }
+    }
+    // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
+    // target (worst first), e.g. recovery's Steiner points pinned against nearly coplanar boundary faces.
+    if (options.vertexRemoval)
+    {
+      const double qR =
+        std::sin(std::min(options.targetDegrees, options.vertexRemovalDegrees) * 3.14159265358979323846 / 180.0);
+      collectBelow(qR, worst);
+      for (const auto& w : worst)
+      {
+        const int32_t t = w.second;
+        if (mesh.isFree(t) || tetQ(mesh, t) >= qR)
+          continue;
+        const int32_t* x = mesh.vertices(t);
+        const int32_t vv[4] = { x[0], x[1], x[2], x[3] };
+        for (int i = 0; i < 4; ++i)
+          if (!lock[vv[i]] && tryVertexCollapse(editor, vv[i], &created))
+          {
+            ++report.vertexRemovals;
+            ++changes;
+            touched.insert(touched.end(), created.begin(), created.end());
+            break;
+          }
+      }
+    }
+    report.passes = pass + 1;
+    collectBelow(qT, bad);
+    if (changes == 0)
+      break;
+  }
+  report.belowTargetAfter = static_cast<int64_t>(bad.size());
+  if (options.summaries)
+    report.after = summarizeDihedrals(mesh);
+  report.minDihedralAfter =
+    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
+  report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return Status::success();
+}
+
+} // namespace volgrid

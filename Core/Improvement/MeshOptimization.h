@@ -1,0 +1,108 @@
+// Mesh optimisation beyond the paper: topological improvement interleaved with smoothing (after
+// Freitag/Ollivier-Gooch and Klingner/Shewchuk), until every tet reaches a target quality or a pass limit.
+//
+// Quality: tetSineQuality() (TetEditor.h), i.e. min(theta_min, 180 - theta_max) over the dihedral angles.
+// Each pass:
+//   1. every tet below the target (worst first) tries, keeping the best strict improvement of the worst
+//      tet of the affected region:
+//        - edge removal on each of its six edges: the ring of n tets around an interior edge is replaced by
+//          the best triangulation of the ring polygon joined to the edge's two ends (2n-4 tets; n = 3 is the
+//          3-2 flip), found by dynamic programming over the polygon's triangulations (max-min quality);
+//        - 2-3 flips of its four faces (the smallest multi-face removal; general multi-face removal is
+//          not implemented yet);
+//      tets created by a successful operation are examined in the same pass when still below target;
+//   2. smoothing (MeshSmoothing.h) of the unlocked vertices of the tets still below target;
+//   3. optionally (vertexRemoval), for the tets still far below target, the collapse of one of their
+//      unlocked vertices onto a neighbour.
+// Stops when nothing changed in a pass, every tet reaches the target, or after maxPasses.
+// Cost: one sweep over the mesh per call (the tets below the target; plus the summaries unless
+// options.summaries is off); the passes then work on that list and on the tets they change (created by a
+// flip or a collapse, or in the star of a moved vertex), never on the whole mesh again.
+//
+// Constraints: faces without neighbour and faces in `constraints` are never removed (an edge is removed
+// only when its ring is closed and no face around it is constrained; a face is flipped only when not
+// constrained), constrained-face vertices never move, no vertex is added, and only unlocked vertices are
+// removed (vertexRemoval). Every new tet is checked with the exact orient3d (strictly positive) before
+// any change. So the boundary is unchanged and
+// the mesh stays valid. Works on a ghost-free TetMesh; region labels (optional, per tet slot) and kUser
+// flag bits are carried to the new tets (a flip never mixes regions: interface faces are constrained).
+#pragma once
+
+#include "MeshSmoothing.h"
+#include "OptionTable.h"
+#include "Progress.h"
+#include "Status.h"
+#include "TetEditor.h"
+#include "TetMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace volgrid
+{
+
+struct OptimizationOptions
+{
+  double targetDegrees = option::targetAngle.defaultValue; // target for min(theta_min, 180 - theta_max)
+  int maxPasses = static_cast<int>(option::passes.defaultValue);
+  bool smoothing = true;
+  bool flips = true;           // 2-3 flips
+  bool edgeRemoval = true;     // includes 3-2 flips
+  int maxRing = 9;             // largest edge ring considered by edge removal
+  // Removal of unlocked vertices of the tets below vertexRemovalDegrees after the flips and moves of a
+  // pass, by collapsing them onto a neighbour (see tryVertexCollapse); the removed vertex stays in
+  // mesh.points, used by no tet (callers that write every point keep it off).
+  bool vertexRemoval = false;
+  double vertexRemovalDegrees = 5.0;
+  // Whole-mesh summaries before and after (report.before, report.after): two sweeps over the mesh per
+  // call. false leaves them empty; report.minDihedralBefore/After are set either way (from the tets below
+  // the target when the minimum lies among them, else by a sweep).
+  bool summaries = true;
+  SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
+};
+
+// Dihedral-angle summary of the finite tets (degrees).
+struct DihedralSummary
+{
+  int64_t tets = 0;
+  double minDihedral = 180;
+  double maxDihedral = 0;
+  int64_t below10 = 0;  // tets with a dihedral angle under 10 degrees
+  int64_t above170 = 0; // tets with a dihedral angle above 170 degrees
+  int64_t inverted = 0; // exact orient3d <= 0
+  double shareBelow10() const { return tets ? double(below10) / tets : 0; }
+};
+DihedralSummary summarizeDihedrals(const TetMesh& mesh);
+
+struct OptimizationReport
+{
+  DihedralSummary before, after;
+  double minDihedralBefore = 180, minDihedralAfter = 180; // the mesh's smallest dihedral angle (degrees)
+  int passes = 0;
+  int64_t flips23 = 0;
+  int64_t edgeRemovals = 0; // of which 3-2 flips:
+  int64_t flips32 = 0;
+  int64_t smoothMoves = 0;
+  int64_t vertexRemovals = 0;
+  int64_t belowTargetBefore = 0, belowTargetAfter = 0;
+  double seconds = 0;
+};
+
+// Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot
+// labels kept in step. Errors: InvalidOption (ghost tets, bad options), Cancelled.
+Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
+  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress = nullptr,
+  OptimizationReport* report = nullptr);
+
+// Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
+// of the worst tet of the affected region; created receives the new tets.
+bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created);
+bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created);
+// Removes unlocked vertex v (no constrained face through it) by collapsing it onto the neighbour w whose
+// collapse gives the best worst tet: the star's tets holding w go, the others get w for v. Only when every
+// new tet is strictly positive (exact orient3d) and the worst tet of the star strictly improves. v is then
+// used by no tet (its coordinates stay in mesh.points). Typical use: Steiner points that boundary recovery
+// left next to the boundary, squeezed between nearly coplanar faces no move can open.
+bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created);
+
+} // namespace volgrid

@@ -1,0 +1,664 @@
+// MeshEditor (BoundaryRecovery.h): local edits of a tet mesh without ghosts (replace, flips, edge
+// removal, constrained vertex insertion, point location), shared by recovery and Steiner removal.
+#include "MeshEditor.h"
+
+#include "IntervalTriangulation.h"
+#include "Predicates.h"
+#include "Quality.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace volgrid
+{
+
+using predicates::orient3d;
+
+MeshEditor::MeshEditor(TetMesh& m)
+  : mesh(m)
+{
+  rebuildVertexMap();
+}
+
+void MeshEditor::rebuildVertexMap()
+{
+  vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+      if (v[i] >= 0)
+        vertTet_[v[i]] = t;
+  });
+}
+
+int32_t MeshEditor::tetOf(int32_t v)
+{
+  if (v < 0)
+    return -1;
+  if (static_cast<size_t>(v) >= vertTet_.size())
+    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
+  const int32_t t = vertTet_[v];
+  if (t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t) && mesh.localIndex(t, v) >= 0)
+    return t;
+  // Stale entry (should not happen: every edit refreshes the vertices it touches): rescan.
+  rebuildVertexMap();
+  return vertTet_[v];
+}
+
+void MeshEditor::ensureStamp()
+{
+  tetStamp.ensure(mesh.tetCapacity());
+}
+
+uint32_t MeshEditor::newStamp()
+{
+  return tetStamp.next(mesh.tetCapacity());
+}
+
+void MeshEditor::star(int32_t v, std::vector<int32_t>& out)
+{
+  out.clear();
+  const int32_t t0 = tetOf(v);
+  if (t0 < 0)
+    return;
+  const uint32_t s = newStamp();
+  out.push_back(t0);
+  tetStamp[t0] = s;
+  for (size_t k = 0; k < out.size(); ++k)
+  {
+    const int32_t t = out[k];
+    const int li = mesh.localIndex(t, v);
+    for (int i = 0; i < 4; ++i)
+    {
+      if (i == li)
+        continue;
+      const int32_t u = mesh.neighbor(t, i);
+      if (u >= 0 && tetStamp[u] != s)
+      {
+        tetStamp[u] = s;
+        out.push_back(u);
+      }
+    }
+  }
+}
+
+int32_t MeshEditor::findEdge(int32_t a, int32_t b)
+{
+  star(a, tmpTets_);
+  for (int32_t t : tmpTets_)
+    if (mesh.localIndex(t, b) >= 0)
+      return t;
+  return -1;
+}
+
+int32_t MeshEditor::findFace(int32_t a, int32_t b, int32_t c, int* face)
+{
+  star(a, tmpTets_);
+  for (int32_t t : tmpTets_)
+  {
+    if (mesh.localIndex(t, b) < 0 || mesh.localIndex(t, c) < 0)
+      continue;
+    if (face)
+    {
+      const int32_t* v = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        if (v[i] != a && v[i] != b && v[i] != c)
+          *face = i;
+    }
+    return t;
+  }
+  return -1;
+}
+
+static int permutationSign(int a, int b, int c, int d)
+{
+  const int p[4] = { a, b, c, d };
+  int inv = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (p[i] > p[j])
+        ++inv;
+  return (inv & 1) ? -1 : 1;
+}
+
+bool MeshEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets)
+{
+  ring.clear();
+  tets.clear();
+  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
+  if (ix < 0 || iy < 0)
+    return false;
+  int k = -1, l = -1;
+  for (int i = 0; i < 4; ++i)
+    if (i != ix && i != iy)
+      (k < 0 ? k : l) = i;
+  const int32_t* v = mesh.vertices(t);
+  int32_t r0 = v[k], r1 = v[l];
+  if (permutationSign(ix, iy, k, l) < 0)
+    std::swap(r0, r1);
+  int32_t cur = t, ra = r0, rb = r1;
+  for (int guard = 0; guard < 4096; ++guard)
+  {
+    ring.push_back(ra);
+    tets.push_back(cur);
+    // Next tet: across the face of cur opposite ra (it contains x, y, rb).
+    const int ia = mesh.localIndex(cur, ra);
+    const int32_t nxt = mesh.neighbor(cur, ia);
+    if (nxt < 0)
+      return false;
+    if (nxt == t)
+      return true;
+    const int32_t* w = mesh.vertices(nxt);
+    int32_t rc = -1;
+    for (int i = 0; i < 4; ++i)
+      if (w[i] != x && w[i] != y && w[i] != rb)
+        rc = w[i];
+    if (rc < 0 || mesh.localIndex(nxt, x) < 0 || mesh.localIndex(nxt, y) < 0)
+      return false;
+    cur = nxt;
+    ra = rb;
+    rb = rc;
+  }
+  return false;
+}
+
+bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
+  std::vector<int32_t>* created, bool allowOpen)
+{
+  for (int32_t t : oldTets)
+    mesh.tetFlags[t] |= TetMesh::kMarkA;
+  bfaces_.clear();
+  int32_t f[3];
+  for (int32_t t : oldTets)
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t code = mesh.neighborCode(t, i);
+      if (code >= 0 && (mesh.tetFlags[code >> 2] & TetMesh::kMarkA))
+        continue;
+      mesh.faceVertices(t, i, f);
+      bfaces_.push_back({ TriKey(f[0], f[1], f[2]), code });
+    }
+  for (int32_t t : oldTets)
+    mesh.tetFlags[t] &= static_cast<uint8_t>(~TetMesh::kMarkA);
+  nfaces_.clear();
+  for (size_t n = 0; n < newTets.size(); ++n)
+  {
+    const auto& q = newTets[n];
+    for (int i = 0; i < 4; ++i)
+    {
+      const int* fv = TetMesh::kFaceVertex[i];
+      nfaces_.push_back({ TriKey(q[fv[0]], q[fv[1]], q[fv[2]]), static_cast<int32_t>(n), i });
+    }
+  }
+  auto lessB = [](const BFace& a, const BFace& b) { return a.key < b.key; };
+  auto lessN = [](const NFace& a, const NFace& b) { return a.key < b.key; };
+  std::sort(bfaces_.begin(), bfaces_.end(), lessB);
+  std::sort(nfaces_.begin(), nfaces_.end(), lessN);
+  // Verify: every new face is either shared by exactly two new tets or matches exactly one old boundary
+  // face, and every old boundary face is matched.
+  size_t matched = 0;
+  for (size_t i = 0; i + 1 < bfaces_.size(); ++i)
+    if (bfaces_[i].key == bfaces_[i + 1].key)
+      return false;
+  for (size_t i = 0; i < nfaces_.size();)
+  {
+    size_t j = i + 1;
+    while (j < nfaces_.size() && nfaces_[j].key == nfaces_[i].key)
+      ++j;
+    const size_t cnt = j - i;
+    const bool inB = std::binary_search(bfaces_.begin(), bfaces_.end(), BFace{ nfaces_[i].key, 0 }, lessB);
+    if (cnt == 1 && inB)
+      ++matched;
+    else if (!(cnt == 2 && !inB) && !(allowOpen && cnt == 1))
+      return false;
+    i = j;
+  }
+  if (matched != bfaces_.size() && !allowOpen)
+    return false;
+  if (allowOpen)
+  {
+    // Outer tets whose face is not matched lose that neighbour.
+    for (const BFace& b : bfaces_)
+    {
+      if (b.code < 0)
+        continue;
+      auto it = std::lower_bound(nfaces_.begin(), nfaces_.end(), NFace{ b.key, 0, 0 }, lessN);
+      if (it == nfaces_.end() || !(it->key == b.key))
+        mesh.unlink(b.code >> 2, b.code & 3);
+    }
+  }
+
+  // Commit.
+  for (int32_t t : oldTets)
+    mesh.freeTet(t);
+  tmpTets_.resize(newTets.size());
+  for (size_t n = 0; n < newTets.size(); ++n)
+  {
+    const auto& q = newTets[n];
+    tmpTets_[n] = mesh.newTet(q[0], q[1], q[2], q[3]);
+    for (int i = 0; i < 4; ++i)
+    {
+      if (static_cast<size_t>(q[i]) >= vertTet_.size())
+        vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
+      vertTet_[q[i]] = tmpTets_[n];
+    }
+  }
+  for (size_t i = 0; i < nfaces_.size();)
+  {
+    size_t j = i + 1;
+    while (j < nfaces_.size() && nfaces_[j].key == nfaces_[i].key)
+      ++j;
+    const int32_t ta = tmpTets_[nfaces_[i].tet];
+    if (j - i == 2)
+      mesh.link(ta, nfaces_[i].face, tmpTets_[nfaces_[i + 1].tet], nfaces_[i + 1].face);
+    else
+    {
+      auto it = std::lower_bound(bfaces_.begin(), bfaces_.end(), BFace{ nfaces_[i].key, 0 }, lessB);
+      if (it == bfaces_.end() || !(it->key == nfaces_[i].key) || it->code < 0)
+        mesh.unlink(ta, nfaces_[i].face);
+      else
+        mesh.link(ta, nfaces_[i].face, it->code >> 2, it->code & 3);
+    }
+    i = j;
+  }
+  if (created)
+    *created = tmpTets_;
+  ++edits;
+  return true;
+}
+
+bool MeshEditor::flip23(int32_t t, int face, const BoundaryConstraints* bc, std::vector<int32_t>* created)
+{
+  const int32_t u = mesh.neighbor(t, face);
+  if (u < 0)
+    return false;
+  int32_t f[3];
+  mesh.faceVertices(t, face, f);
+  if (bc && bc->findSubface(f[0], f[1], f[2]) >= 0)
+    return false;
+  const int32_t p = mesh.vertex(t, face);
+  const int32_t q = mesh.vertex(u, mesh.mirrorFace(t, face));
+  if (bc && bc->forbiddenEdge(p, q))
+    return false;
+  const double *P = mesh.point(p), *Q = mesh.point(q), *A = mesh.point(f[0]), *B = mesh.point(f[1]),
+               *C = mesh.point(f[2]);
+  if (orient3d(Q, B, C, P) <= 0 || orient3d(A, Q, C, P) <= 0 || orient3d(A, B, Q, P) <= 0)
+    return false;
+  tmpNew_.clear();
+  tmpNew_.push_back({ { q, f[1], f[2], p } });
+  tmpNew_.push_back({ { f[0], q, f[2], p } });
+  tmpNew_.push_back({ { f[0], f[1], q, p } });
+  lastRemoved.clear();
+  lastRemoved.push_back({ { mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2), mesh.vertex(t, 3) } });
+  lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
+  std::vector<int32_t> old = { t, u };
+  if (!replace(old, tmpNew_, created))
+    return false;
+  lastRemovedIds = old;
+  ++flips23;
+  return true;
+}
+
+
+bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
+  std::array<int32_t, 2> chord)
+{
+  if (bc && bc->isEdge(x, y))
+    return false;
+  ++removalAttempts;
+  std::vector<int32_t>& ring = tmpRing_;
+  std::vector<int32_t> tets;
+  if (!edgeRing(t, x, y, ring, tets))
+    return false;
+  const int n = static_cast<int>(ring.size());
+  if (n < 3 || n > 48)
+    return false;
+  const double* X = mesh.point(x);
+  const double* Y = mesh.point(y);
+  const double kInvalid = -std::numeric_limits<double>::infinity();
+  std::vector<double> best(static_cast<size_t>(n * n), kInvalid);
+  std::vector<int> choice(static_cast<size_t>(n * n), -1);
+  auto chordOk = [&](int i, int j) { return j == i + 1 || (i == 0 && j == n - 1) || !bc->forbiddenEdge(ring[i], ring[j]); };
+  // A required chord (positions ci < cj in the ring): no chord of the triangulation may cross it.
+  int ci = -1, cj = -1;
+  if (chord[0] >= 0)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      if (ring[i] == chord[0] || ring[i] == chord[1])
+        (ci < 0 ? ci : cj) = i;
+    }
+    if (cj < 0)
+      return false;
+  }
+  auto crossesChord = [&](int i, int j) { // i < j
+    if (ci < 0)
+      return false;
+    const bool inI = i < ci && ci < j, inJ = i < cj && cj < j;
+    const bool atI = i == ci || j == ci, atJ = i == cj || j == cj;
+    return !atI && !atJ && inI != inJ;
+  };
+  auto triQ = [&](int i, int k, int j) -> double {
+    if (bc && (!chordOk(i, k) || !chordOk(k, j) || !chordOk(i, j)))
+      return kInvalid;
+    if (crossesChord(i, k) || crossesChord(k, j) || crossesChord(i, j))
+      return kInvalid;
+    const double *A = mesh.point(ring[i]), *B = mesh.point(ring[k]), *C = mesh.point(ring[j]);
+    if (orient3d(A, B, C, Y) <= 0 || orient3d(A, C, B, X) <= 0)
+      return kInvalid;
+    return std::min(quality::tetShapeMeasure(A, B, C, Y), quality::tetShapeMeasure(A, C, B, X));
+  };
+  for (int len = 1; len < n; ++len)
+    for (int i = 0; i + len < n; ++i)
+    {
+      const int j = i + len;
+      if (len == 1)
+      {
+        best[i * n + j] = std::numeric_limits<double>::infinity();
+        continue;
+      }
+      double bq = kInvalid;
+      int bk = -1;
+      for (int k = i + 1; k < j; ++k)
+      {
+        const double sub = std::min(best[i * n + k], best[k * n + j]);
+        if (!(sub > bq))
+          continue;
+        const double q = std::min(sub, triQ(i, k, j));
+        if (q > bq)
+        {
+          bq = q;
+          bk = k;
+        }
+      }
+      best[i * n + j] = bq;
+      choice[i * n + j] = bk;
+    }
+  if (!(best[n - 1] > kInvalid))
+    return false;
+  tmpNew_.clear();
+  forEachChosenTriangle(choice, n, [&](int i, int k, int j) {
+    tmpNew_.push_back({ { ring[i], ring[k], ring[j], y } });
+    tmpNew_.push_back({ { ring[i], ring[j], ring[k], x } });
+  });
+  lastRemoved.clear();
+  for (int32_t u : tets)
+    lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
+  if (!replace(tets, tmpNew_, created))
+    return false;
+  lastRemovedIds = tets;
+  if (n == 3)
+    ++flips32;
+  else
+    ++flipsEdgeRemoval;
+  return true;
+}
+
+bool MeshEditor::removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
+  std::vector<int32_t>* created, int depth, std::array<int32_t, 2> chord)
+{
+  if (removeEdge(t, x, y, bc, created, chord))
+    return true;
+  if (depth <= 0 || (bc && bc->isEdge(x, y)))
+    return false;
+  std::vector<int32_t> ring, tets;
+  if (!edgeRing(t, x, y, ring, tets) || ring.size() <= 3 || ring.size() > 16)
+    return false;
+  for (size_t i = 0; i < ring.size(); ++i)
+    for (int32_t e : { x, y })
+    {
+      const int32_t r = ring[i];
+      if (bc && bc->isEdge(e, r))
+        continue;
+      const int32_t tt = findEdge(e, r);
+      if (tt < 0)
+        continue;
+      std::vector<int32_t> sub;
+      if (!removeEdgeDeep(tt, e, r, bc, &sub, depth - 1))
+        continue;
+      std::vector<std::array<int32_t, 4>> orig = lastRemoved;
+      std::vector<int32_t> current = sub;
+      const int32_t t2 = findEdge(x, y);
+      std::vector<int32_t> fin;
+      if (t2 >= 0 && removeEdge(t2, x, y, bc, &fin, chord))
+      {
+        // Compose: what the two flips removed from the original mesh, and what now covers it.
+        for (size_t k = 0; k < lastRemovedIds.size(); ++k)
+        {
+          auto it = std::find(current.begin(), current.end(), lastRemovedIds[k]);
+          if (it != current.end())
+            current.erase(it);
+          else
+            orig.push_back(lastRemoved[k]);
+        }
+        // Ids recycled by the second flip may coincide with ids left in `current`: those are new tets.
+        for (int32_t c : fin)
+        {
+          auto it = std::find(current.begin(), current.end(), c);
+          if (it == current.end())
+            current.push_back(c);
+        }
+        lastRemoved = orig;
+        if (created)
+          *created = current;
+        return true;
+      }
+      // Undo the ring reduction.
+      replace(sub, orig, nullptr);
+    }
+  return false;
+}
+
+int32_t MeshEditor::locate(const double* p, int32_t start)
+{
+  int32_t t = start;
+  if (t < 0 || mesh.isFree(t))
+    return -1;
+  int32_t f[3];
+  uint32_t rot = 0;
+  const int64_t limit = 4 * static_cast<int64_t>(mesh.numTets()) + 100;
+  for (int64_t step = 0; step < limit; ++step)
+  {
+    int next = -1;
+    const int r = static_cast<int>(rot++ & 3);
+    for (int k = 0; k < 4; ++k)
+    {
+      const int i = (k + r) & 3;
+      mesh.faceVertices(t, i, f);
+      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) < 0)
+      {
+        next = i;
+        break;
+      }
+    }
+    if (next < 0)
+      return t;
+    t = mesh.neighbor(t, next);
+    if (t < 0)
+      return -1;
+  }
+  return -1;
+}
+
+bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
+{
+  const double* p = mesh.point(v);
+  const int32_t t0 = locate(p, start);
+  if (t0 < 0)
+    return false;
+  if (vertTet_.size() < static_cast<size_t>(mesh.numVertices()))
+    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
+  int32_t f[3];
+  // Roots: tets whose closure contains p.
+  std::vector<int32_t> roots = { t0 };
+  const uint32_t sRoot = newStamp();
+  tetStamp[t0] = sRoot;
+  for (size_t k = 0; k < roots.size(); ++k)
+  {
+    const int32_t t = roots[k];
+    for (int i = 0; i < 4; ++i)
+    {
+      mesh.faceVertices(t, i, f);
+      const int o = orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p);
+      if (o < 0)
+        return false; // not in the closure: locate() is inconsistent
+      if (o > 0)
+        continue;
+      if (f[0] == v || f[1] == v || f[2] == v)
+        return false;
+      // p on this face: the tet beyond must be split too.
+      const int32_t u = mesh.neighbor(t, i);
+      if (u < 0 || (bc && bc->findSubface(f[0], f[1], f[2]) >= 0))
+        return false;
+      if (tetStamp[u] != sRoot)
+      {
+        tetStamp[u] = sRoot;
+        roots.push_back(u);
+      }
+    }
+  }
+  // A vertex at p already?
+  for (int32_t t : roots)
+    for (int i = 0; i < 4; ++i)
+    {
+      const double* q = mesh.point(mesh.vertex(t, i));
+      if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2])
+        return false;
+    }
+  // Bowyer-Watson growth (insphere is only a heuristic for the cavity's size here; validity is exact
+  // below).
+  const uint32_t sCav = newStamp();
+  std::vector<int32_t>& cav = cavity_;
+  cav = roots;
+  for (int32_t t : cav)
+    tetStamp[t] = sCav;
+  // Bowyer-Watson growth; when it would delete a recovered boundary edge (every tet around the edge in
+  // the cavity) the cavity falls back to the tets whose closure contains p (1-4, 2-6 or n-2n split, the
+  // paper's "connect the intersection point to the polyhedron").
+  const size_t maxCavity = 4096;
+  for (size_t k = 0; k < cav.size() && cav.size() < maxCavity; ++k)
+  {
+    const int32_t t = cav[k];
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = mesh.neighbor(t, i);
+      if (u < 0 || tetStamp[u] == sCav)
+        continue;
+      mesh.faceVertices(t, i, f);
+      if (bc && bc->findSubface(f[0], f[1], f[2]) >= 0)
+        continue;
+      const int32_t* w = mesh.vertices(u);
+      if (predicates::insphere(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), p) > 0)
+      {
+        tetStamp[u] = sCav;
+        cav.push_back(u);
+      }
+    }
+  }
+  if (bc && cav.size() > roots.size())
+  {
+    bool kills = false;
+    std::vector<int32_t> ring, rtets;
+    static const int kE[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+    for (size_t k = 0; k < cav.size() && !kills; ++k)
+    {
+      const int32_t* w = mesh.vertices(cav[k]);
+      for (auto& e : kE)
+      {
+        if (!bc->isEdge(w[e[0]], w[e[1]]))
+          continue;
+        if (!edgeRing(cav[k], w[e[0]], w[e[1]], ring, rtets))
+          continue;
+        bool all = true;
+        for (int32_t u : rtets)
+          all = all && tetStamp[u] == sCav;
+        if (all)
+        {
+          kills = true;
+          break;
+        }
+      }
+    }
+    if (kills)
+    {
+      for (int32_t t : cav)
+        tetStamp[t] = 0;
+      cav = roots;
+      for (int32_t t : cav)
+        tetStamp[t] = sCav;
+    }
+  }
+  auto isRoot = [&](int32_t t) { return std::find(roots.begin(), roots.end(), t) != roots.end(); };
+  // Make it star-shaped from p: drop tets with a boundary face p does not see strictly.
+  for (int round = 0; round < 1000; ++round)
+  {
+    bool changed = false;
+    for (size_t k = 0; k < cav.size(); ++k)
+    {
+      const int32_t t = cav[k];
+      if (tetStamp[t] != sCav)
+        continue;
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(t, i);
+        if (u >= 0 && tetStamp[u] == sCav)
+          continue;
+        mesh.faceVertices(t, i, f);
+        if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) > 0)
+          continue;
+        if (isRoot(t))
+          return false;
+        tetStamp[t] = 0;
+        changed = true;
+        break;
+      }
+    }
+    // Keep only what is connected to the roots.
+    const uint32_t sConn = newStamp();
+    std::vector<int32_t>& q = queue_;
+    q.clear();
+    for (int32_t r : roots)
+    {
+      q.push_back(r);
+      tetStamp[r] = sConn;
+    }
+    for (size_t k = 0; k < q.size(); ++k)
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(q[k], i);
+        if (u >= 0 && tetStamp[u] == sCav)
+        {
+          tetStamp[u] = sConn;
+          q.push_back(u);
+        }
+      }
+    const size_t before = cav.size();
+    cav.clear();
+    for (int32_t t : q)
+      cav.push_back(t);
+    // Re-stamp as the cavity stamp for the next round.
+    for (int32_t t : cav)
+      tetStamp[t] = sCav;
+    if (!changed && cav.size() == before)
+      break;
+    if (!changed)
+      break;
+  }
+  // Final validation and new tets.
+  tmpNew_.clear();
+  for (int32_t t : cav)
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = mesh.neighbor(t, i);
+      if (u >= 0 && tetStamp[u] == sCav)
+        continue;
+      mesh.faceVertices(t, i, f);
+      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
+        return false;
+      tmpNew_.push_back({ { f[0], f[1], f[2], v } });
+    }
+  std::vector<int32_t> old = cav;
+  return replace(old, tmpNew_, nullptr);
+}
+
+} // namespace volgrid

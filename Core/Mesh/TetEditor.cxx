@@ -1,0 +1,858 @@
+#include "TetEditor.h"
+
+#include "Predicates.h"
+#include "PredicatesInline.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace volgrid
+{
+
+void FaceConstraints::addTriangles(const int32_t* tris, size_t n)
+{
+  set_.reserve(set_.size() + n);
+  for (size_t i = 0; i < n; ++i)
+    add(tris[3 * i], tris[3 * i + 1], tris[3 * i + 2]);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+namespace
+{
+// What both ways of computing tetSineQuality() start from: the six edge vectors (ab, ac, ad, bc, bd, cd),
+// twice the area vectors of the faces opposite a, b, c, d, and det = 6 V.
+struct TetFrame
+{
+  double e[6][3];
+  double n[4][3];
+  double det;
+};
+
+double dot(const double* u, const double* v)
+{
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+TetFrame tetFrame(const double* a, const double* b, const double* c, const double* d)
+{
+  TetFrame f;
+  const double* from[6] = { a, a, a, b, b, c };
+  const double* to[6] = { b, c, d, c, d, d };
+  for (int k = 0; k < 6; ++k)
+    for (int i = 0; i < 3; ++i)
+      f.e[k][i] = to[k][i] - from[k][i];
+  auto cross = [](const double* u, const double* v, double* w) {
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+  };
+  const double *ab = f.e[0], *ac = f.e[1], *ad = f.e[2], *bc = f.e[3], *bd = f.e[4];
+  cross(bc, bd, f.n[0]);
+  cross(ac, ad, f.n[1]);
+  cross(ab, ad, f.n[2]);
+  cross(ab, ac, f.n[3]);
+  f.det = dot(f.n[3], ad);
+  return f;
+}
+
+// The plain formula with one square root per edge and per face: the fallback of tetSineQuality() when the
+// squared products of the fast path would leave the normal double range (coordinates beyond ~1e+-38).
+double tetSineQualityPlain(const TetFrame& f)
+{
+  auto norm = [](const double* u) { return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]); };
+  const double det = f.det;
+  double A[4];
+  for (int i = 0; i < 4; ++i)
+    A[i] = norm(f.n[i]);
+  // sin(dihedral at edge e) = 6V |e| / (|n_k| |n_l|), k and l the vertices not on e.
+  double L[6];
+  for (int k = 0; k < 6; ++k)
+    L[k] = norm(f.e[k]);
+  // edge (a,b): faces opposite c,d; (a,c): b,d; (a,d): b,c; (b,c): a,d; (b,d): a,c; (c,d): a,b.
+  const double P[6] = { A[2] * A[3], A[1] * A[3], A[1] * A[2], A[0] * A[3], A[0] * A[2], A[0] * A[1] };
+  double q = 1.0;
+  bool degenerate = false;
+  for (int e = 0; e < 6; ++e)
+  {
+    if (!(P[e] > 0))
+    {
+      degenerate = true;
+      continue;
+    }
+    q = std::min(q, std::fabs(det) * L[e] / P[e]);
+  }
+  if (degenerate || !(det != 0))
+    return det < 0 ? -1e-300 : 0.0;
+  return det < 0 ? -q : q;
+}
+} // namespace
+
+double tetSineQuality(const double* a, const double* b, const double* c, const double* d)
+{
+  // The hottest function of the quality stages: squared lengths and areas, the smallest squared sine
+  // det^2 |e|^2 / (|n_k|^2 |n_l|^2) over the edges by comparison, and a single square root.
+  const TetFrame f = tetFrame(a, b, c, d);
+  const double det = f.det;
+  double A2[4], L2[6];
+  for (int i = 0; i < 4; ++i)
+    A2[i] = dot(f.n[i], f.n[i]);
+  for (int k = 0; k < 6; ++k)
+    L2[k] = dot(f.e[k], f.e[k]);
+  const double P2[6] = { A2[2] * A2[3], A2[1] * A2[3], A2[1] * A2[2], A2[0] * A2[3], A2[0] * A2[2], A2[0] * A2[1] };
+  double r = L2[0] / P2[0];
+  bool normal = P2[0] > 1e-280 && P2[0] < 1e280;
+  for (int e = 1; e < 6; ++e)
+  {
+    normal &= P2[e] > 1e-280 && P2[e] < 1e280;
+    r = std::min(r, L2[e] / P2[e]);
+  }
+  if (!normal || !(det != 0))
+    return tetSineQualityPlain(f);
+  const double q = std::min(1.0, std::fabs(det) * std::sqrt(r));
+  return det < 0 ? -q : q;
+}
+
+double sineQualityToDegrees(double q)
+{
+  if (!(q > 0))
+    return 0.0;
+  return std::asin(std::min(1.0, q)) * 180.0 / 3.14159265358979323846;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+TetEditor::TetEditor(TetMesh& m, const FaceConstraints* c, std::vector<int32_t>* l)
+  : mesh(m)
+  , constraints(c)
+  , labels(l)
+{
+  rebuildVertexMap();
+}
+
+void TetEditor::rebuildVertexMap()
+{
+  vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
+  mesh.forEachTet([&](int32_t t) {
+    const int32_t* v = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+      if (v[i] >= 0)
+        vertTet_[v[i]] = t;
+  });
+}
+
+void TetEditor::ensureStamp()
+{
+  stamp_.ensure(mesh.tetCapacity());
+}
+
+uint32_t TetEditor::newStamp()
+{
+  return stamp_.next(mesh.tetCapacity());
+}
+
+std::vector<uint8_t> TetEditor::lockedVertices() const
+{
+  std::vector<uint8_t> locked(static_cast<size_t>(mesh.numVertices()), 0);
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    if (tetOf(v) < 0)
+      locked[v] = 1;
+  mesh.forEachTet([&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      if (isConstrainedFace(t, i))
+      {
+        int32_t f[3];
+        mesh.faceVertices(t, i, f);
+        for (int k = 0; k < 3; ++k)
+          if (f[k] >= 0)
+            locked[f[k]] = 1;
+      }
+  });
+  return locked;
+}
+
+void TetEditor::star(int32_t v, std::vector<int32_t>& out)
+{
+  out.clear();
+  const int32_t t0 = tetOf(v);
+  if (t0 < 0)
+    return;
+  const uint32_t s = newStamp();
+  stamp_[t0] = s;
+  out.push_back(t0);
+  for (size_t k = 0; k < out.size(); ++k)
+  {
+    const int32_t t = out[k];
+    const int iv = mesh.localIndex(t, v);
+    for (int i = 0; i < 4; ++i)
+    {
+      if (i == iv)
+        continue;
+      const int32_t u = mesh.neighbor(t, i);
+      if (u < 0 || stamp_[u] == s)
+        continue;
+      stamp_[u] = s;
+      out.push_back(u);
+    }
+  }
+}
+
+void TetEditor::neighbors(int32_t v, const std::vector<int32_t>& starTets, std::vector<int32_t>& out)
+{
+  out.clear();
+  for (int32_t t : starTets)
+  {
+    const int32_t* w = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+      if (w[i] != v)
+        out.push_back(w[i]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
+  int maxRing) const
+{
+  ring.clear();
+  tets.clear();
+  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
+  if (ix < 0 || iy < 0)
+    return false;
+  int ia = -1, ib = -1;
+  for (int i = 0; i < 4; ++i)
+    if (i != ix && i != iy)
+      (ia < 0 ? ia : ib) = i;
+  // Parity of the permutation (ix, iy, ia, ib) of (0,1,2,3): an odd one flips the orientation.
+  const int perm[4] = { ix, iy, ia, ib };
+  int inv = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      inv += perm[i] > perm[j];
+  if (inv & 1)
+    std::swap(ia, ib);
+  const int32_t* v = mesh.vertices(t);
+  ring.push_back(v[ia]);
+  ring.push_back(v[ib]);
+  tets.push_back(t);
+  int32_t cur = t;
+  int32_t prevR = v[ia]; // the ring vertex whose opposite face leads on
+  while (true)
+  {
+    // Across the face of cur opposite prevR (it contains x, y and the last ring vertex).
+    const int f = mesh.localIndex(cur, prevR);
+    if (isConstrainedFace(cur, f))
+      return false;
+    const int32_t next = mesh.neighbor(cur, f);
+    const int32_t last = ring.back();
+    if (next == t)
+      break;
+    const int32_t* w = mesh.vertices(next);
+    int32_t r = -1;
+    for (int i = 0; i < 4; ++i)
+      if (w[i] != x && w[i] != y && w[i] != last)
+        r = w[i];
+    if (r < 0 || static_cast<int>(tets.size()) >= maxRing)
+      return false;
+    tets.push_back(next);
+    if (r != ring.front())
+      ring.push_back(r);
+    prevR = last;
+    cur = next;
+  }
+  // The loop added the first ring vertex again? No: the closing tet is t itself, so ring has n entries.
+  return ring.size() == tets.size() && ring.size() >= 3;
+}
+
+bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
+  std::vector<int32_t>* created)
+{
+  if (oldTets.empty())
+    return false;
+  const uint32_t s = newStamp();
+  for (int32_t t : oldTets)
+    stamp_[t] = s;
+  faces_.clear();
+  auto sortKey = [](int32_t* k) {
+    if (k[0] > k[1])
+      std::swap(k[0], k[1]);
+    if (k[1] > k[2])
+      std::swap(k[1], k[2]);
+    if (k[0] > k[1])
+      std::swap(k[0], k[1]);
+  };
+  for (int32_t t : oldTets)
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t c = mesh.neighborCode(t, i);
+      if (c >= 0 && stamp_[c >> 2] == s)
+        continue;
+      FaceEntry e;
+      mesh.faceVertices(t, i, e.key);
+      sortKey(e.key);
+      e.code = c;
+      e.owner = -1;
+      e.face = i;
+      faces_.push_back(e);
+    }
+  const size_t numOuter = faces_.size();
+  for (size_t n = 0; n < newTets.size(); ++n)
+    for (int i = 0; i < 4; ++i)
+    {
+      FaceEntry e;
+      const auto& q = newTets[n];
+      for (int k = 0; k < 3; ++k)
+        e.key[k] = q[TetMesh::kFaceVertex[i][k]];
+      sortKey(e.key);
+      e.code = TetMesh::kNoNeighbor;
+      e.owner = static_cast<int32_t>(n);
+      e.face = i;
+      faces_.push_back(e);
+    }
+  (void)numOuter;
+  std::sort(faces_.begin(), faces_.end(), [](const FaceEntry& a, const FaceEntry& b) {
+    if (a.key[0] != b.key[0])
+      return a.key[0] < b.key[0];
+    if (a.key[1] != b.key[1])
+      return a.key[1] < b.key[1];
+    if (a.key[2] != b.key[2])
+      return a.key[2] < b.key[2];
+    return a.owner < b.owner; // outer (-1) first
+  });
+  // Every key must appear exactly twice: (outer, new) or (new, new).
+  if (faces_.size() % 2)
+    return false;
+  for (size_t k = 0; k < faces_.size(); k += 2)
+  {
+    const FaceEntry& a = faces_[k];
+    const FaceEntry& b = faces_[k + 1];
+    if (a.key[0] != b.key[0] || a.key[1] != b.key[1] || a.key[2] != b.key[2] || b.owner < 0)
+      return false;
+    if (k + 2 < faces_.size())
+    {
+      const FaceEntry& c = faces_[k + 2];
+      if (c.key[0] == a.key[0] && c.key[1] == a.key[1] && c.key[2] == a.key[2])
+        return false;
+    }
+  }
+  // Commit.
+  const uint8_t userBits = mesh.tetFlags[oldTets[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
+  const int32_t label = labels && static_cast<size_t>(oldTets[0]) < labels->size() ? (*labels)[oldTets[0]] : -1;
+  for (int32_t t : oldTets)
+    mesh.freeTet(t);
+  std::vector<int32_t>& ids = queue_;
+  ids.resize(newTets.size());
+  for (size_t n = 0; n < newTets.size(); ++n)
+  {
+    const auto& q = newTets[n];
+    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    mesh.tetFlags[t] = userBits;
+    ids[n] = t;
+    for (int i = 0; i < 4; ++i)
+      if (q[i] >= 0)
+      {
+        if (static_cast<size_t>(q[i]) >= vertTet_.size())
+          vertTet_.resize(static_cast<size_t>(q[i]) + 1, -1);
+        vertTet_[q[i]] = t;
+      }
+  }
+  if (labels)
+  {
+    if (labels->size() < static_cast<size_t>(mesh.tetCapacity()))
+      labels->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
+    for (int32_t t : ids)
+      (*labels)[t] = label;
+  }
+  for (size_t k = 0; k < faces_.size(); k += 2)
+  {
+    const FaceEntry& a = faces_[k];
+    const FaceEntry& b = faces_[k + 1];
+    const int32_t tb = ids[b.owner];
+    if (a.owner < 0)
+    {
+      if (a.code < 0)
+        mesh.unlink(tb, b.face);
+      else
+        mesh.link(tb, b.face, a.code >> 2, a.code & 3);
+    }
+    else
+      mesh.link(ids[a.owner], a.face, tb, b.face);
+  }
+  ensureStamp();
+  if (created)
+    *created = ids;
+  ++replacements;
+  return true;
+}
+
+int32_t TetEditor::locate(const double* p, int32_t start) const
+{
+  if (start < 0 || start >= mesh.tetCapacity() || mesh.isFree(start))
+    return -1;
+  int32_t t = start;
+  uint32_t rng = 0x9E3779B9u ^ static_cast<uint32_t>(start);
+  const int64_t maxSteps = 4 * static_cast<int64_t>(mesh.numTets()) + 64;
+  for (int64_t step = 0; step < maxSteps; ++step)
+  {
+    rng = rng * 1664525u + 1013904223u;
+    const int first = static_cast<int>((rng >> 16) & 3);
+    int exitFace = -1;
+    for (int k = 0; k < 4; ++k)
+    {
+      const int i = (first + k) & 3;
+      int32_t f[3];
+      mesh.faceVertices(t, i, f);
+      if (predicates::orient3dInline(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) < 0)
+      {
+        exitFace = i;
+        break;
+      }
+    }
+    if (exitFace < 0)
+      return t;
+    const int32_t u = mesh.neighbor(t, exitFace);
+    if (u < 0)
+      return -1;
+    t = u;
+  }
+  return -1;
+}
+
+int32_t TetEditor::locateRobust(const double* p, int32_t start) const
+{
+  int32_t t = locate(p, start);
+  if (t >= 0)
+    return t;
+  const int32_t n = mesh.tetCapacity();
+  for (int32_t u = 0; u < n; ++u)
+  {
+    if (mesh.isFree(u))
+      continue;
+    bool inside = true;
+    for (int i = 0; i < 4 && inside; ++i)
+    {
+      int32_t f[3];
+      mesh.faceVertices(u, i, f);
+      inside = predicates::orient3dInline(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) >= 0;
+    }
+    if (inside)
+      return u;
+  }
+  return -1;
+}
+
+TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double minDistance, double* nearest,
+  std::vector<int32_t>* created)
+{
+  const double* p = mesh.point(v);
+  if (start < 0 || mesh.isFree(start))
+    return InsertStatus::NotInside;
+  auto faceSide = [&](int32_t t, int i) {
+    int32_t f[3];
+    mesh.faceVertices(t, i, f);
+    return predicates::orient3dInline(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p);
+  };
+  auto containsP = [&](int32_t t) {
+    for (int i = 0; i < 4; ++i)
+      if (faceSide(t, i) < 0)
+        return false;
+    return true;
+  };
+  if (!containsP(start))
+    return InsertStatus::NotInside;
+  // p on a constrained face of its tet: not an interior point.
+  for (int i = 0; i < 4; ++i)
+    if (faceSide(start, i) == 0 && isConstrainedFace(start, i))
+      return InsertStatus::NotInside;
+
+  // 1. Conflict region (exact SoS insphere), not crossing constrained faces.
+  uint32_t s = newStamp();
+  cavity_.clear();
+  cavity_.push_back(start);
+  stamp_[start] = s;
+  const uint32_t sOut = newStamp(); // tets tested and found not in conflict
+  for (size_t k = 0; k < cavity_.size(); ++k)
+  {
+    const int32_t t = cavity_[k];
+    for (int i = 0; i < 4; ++i)
+    {
+      if (isConstrainedFace(t, i))
+        continue;
+      const int32_t u = mesh.neighbor(t, i);
+      if (stamp_[u] == s || stamp_[u] == sOut)
+        continue;
+      const int32_t* w = mesh.vertices(u);
+      const int c = predicates::insphereSoSInline(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]),
+        mesh.point(w[3]), p, w[0], w[1], w[2], w[3], v);
+      if (c > 0)
+      {
+        stamp_[u] = s;
+        cavity_.push_back(u);
+      }
+      else
+        stamp_[u] = sOut;
+    }
+  }
+  // 2. Shrink until star-shaped from p: a cavity tet with a boundary face that does not see p strictly is
+  // dropped (never the tets whose closure contains p), then the part connected to `start` is kept.
+  for (int round = 0; round < 64; ++round)
+  {
+    bool changed = false;
+    for (int32_t t : cavity_)
+    {
+      if (stamp_[t] != s)
+        continue;
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(t, i);
+        const bool boundary = isConstrainedFace(t, i) || stamp_[u] != s;
+        if (!boundary)
+          continue;
+        if (faceSide(t, i) <= 0)
+        {
+          if (containsP(t))
+          {
+            // p lies on this face and the tet beyond cannot join: reject.
+            for (int32_t c : cavity_)
+              if (stamp_[c] == s)
+                stamp_[c] = 0;
+            return InsertStatus::NoCavity;
+          }
+          stamp_[t] = 0;
+          changed = true;
+          break;
+        }
+      }
+    }
+    if (!changed)
+      break;
+    // Connected part containing start.
+    const uint32_t s2 = newStamp();
+    queue_.clear();
+    queue_.push_back(start);
+    stamp_[start] = s2;
+    for (size_t k = 0; k < queue_.size(); ++k)
+    {
+      const int32_t t = queue_[k];
+      for (int i = 0; i < 4; ++i)
+      {
+        if (isConstrainedFace(t, i))
+          continue;
+        const int32_t u = mesh.neighbor(t, i);
+        if (stamp_[u] == s)
+        {
+          stamp_[u] = s2;
+          queue_.push_back(u);
+        }
+      }
+    }
+    for (int32_t t : cavity_)
+      if (stamp_[t] == s)
+        stamp_[t] = 0;
+    cavity_.swap(queue_);
+    s = s2; // the cavity marker from now on
+  }
+  // 3. Boundary faces, vertex preservation and the spacing test.
+  newTets_.clear();
+  outerCode_.clear();
+  outerFace_.clear();
+  if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
+    vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
+  double best = 1e300;
+  for (int32_t t : cavity_)
+  {
+    const int32_t* w = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = mesh.neighbor(t, i);
+      const bool boundary = isConstrainedFace(t, i) || stamp_[u] != s;
+      if (!boundary)
+        continue;
+      if (faceSide(t, i) <= 0)
+      {
+        for (int32_t c : cavity_)
+          stamp_[c] = 0;
+        return InsertStatus::NoCavity;
+      }
+      std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+      q[i] = v;
+      newTets_.push_back(q);
+      outerCode_.push_back(mesh.neighborCode(t, i));
+      outerFace_.push_back(i);
+    }
+  }
+  // Vertices of the cavity must all be on its boundary (stamp them with a round marker).
+  const int32_t mark = static_cast<int32_t>(s & 0x7fffffff) | 1;
+  for (const auto& q : newTets_)
+    for (int k = 0; k < 4; ++k)
+      if (q[k] != v)
+        vstamp_[q[k]] = mark;
+  bool lost = false;
+  for (int32_t t : cavity_)
+  {
+    const int32_t* w = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+    {
+      if (vstamp_[w[i]] != mark)
+        lost = true;
+      const double* q = mesh.point(w[i]);
+      const double d2 = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]);
+      best = std::min(best, d2);
+    }
+  }
+  for (const auto& q : newTets_)
+    for (int k = 0; k < 4; ++k)
+      if (q[k] != v)
+        vstamp_[q[k]] = 0;
+  best = std::sqrt(best);
+  if (nearest)
+    *nearest = best;
+  if (lost)
+  {
+    for (int32_t c : cavity_)
+      stamp_[c] = 0;
+    return InsertStatus::NoCavity;
+  }
+  if (best < minDistance || best == 0)
+  {
+    for (int32_t c : cavity_)
+      stamp_[c] = 0;
+    return InsertStatus::TooClose;
+  }
+  commitInsertion(v, created);
+  return InsertStatus::Inserted;
+}
+
+double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality,
+  bool commit, std::vector<int32_t>* created, int maxCavity, double mustBeat)
+{
+  if (start < 0 || mesh.isFree(start))
+    return -3;
+  if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
+    vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
+  // Seed: start, or the shortest path of tets (across unconstrained faces, at most 4 steps) from start to
+  // mustReplace.
+  cavity_.assign(1, start);
+  if (mustReplace >= 0 && mustReplace != start)
+  {
+    const uint32_t seen = newStamp();
+    bfsTets_.assign(1, { start, -1 });
+    stamp_[start] = seen;
+    int32_t found = -1;
+    for (size_t k = 0, levelEnd = 1, depth = 0; k < bfsTets_.size() && found < 0; ++k)
+    {
+      if (k == levelEnd)
+      {
+        levelEnd = bfsTets_.size();
+        if (++depth == 4)
+          break;
+      }
+      const int32_t t = bfsTets_[k].first;
+      for (int i = 0; i < 4 && found < 0; ++i)
+      {
+        if (isConstrainedFace(t, i))
+          continue;
+        const int32_t u = mesh.neighbor(t, i);
+        if (stamp_[u] == seen)
+          continue;
+        stamp_[u] = seen;
+        bfsTets_.push_back({ u, static_cast<int32_t>(k) });
+        if (u == mustReplace)
+          found = static_cast<int32_t>(bfsTets_.size() - 1);
+      }
+    }
+    if (found < 0)
+      return -3;
+    cavity_.clear();
+    for (int32_t k = found; k >= 0; k = bfsTets_[k].second)
+      cavity_.push_back(bfsTets_[k].first);
+  }
+  const uint32_t s = newStamp();
+  for (int32_t t : cavity_)
+    stamp_[t] = s;
+  // The cone over the cavity's boundary faces, kept up to date as the cavity grows.
+  cone_.clear();
+  auto addFaces = [&](int32_t t) {
+    const int32_t* w = mesh.vertices(t);
+    for (int i = 0; i < 4; ++i)
+    {
+      const bool constrained = isConstrainedFace(t, i);
+      if (!constrained && stamp_[mesh.neighbor(t, i)] == s)
+        continue;
+      std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+      q[i] = v;
+      double qc = -1; // not strictly positive: the cavity is not star-shaped from v
+      if (predicates::orient3dInline(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3])) > 0)
+        qc = tetSineQuality(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3]));
+      cone_.push_back({ t, i, constrained, qc });
+    }
+  };
+  for (int32_t t : cavity_)
+    addFaces(t);
+  double bestQ = -3;
+  for (int step = 0; step < maxCavity; ++step)
+  {
+    // Its worst tet, and whether it is valid (star-shaped, no cavity vertex swallowed).
+    double qMin = 2, qGrow = 3, qConstrained = 2;
+    int growK = -1;
+    bool valid = true;
+    for (size_t k = 0; k < cone_.size(); ++k)
+    {
+      const ConeFace& f = cone_[k];
+      qMin = std::min(qMin, f.quality);
+      valid &= f.quality > -1;
+      if (f.constrained)
+        qConstrained = std::min(qConstrained, f.quality);
+      else if (f.quality < qGrow)
+      {
+        qGrow = f.quality;
+        growK = static_cast<int>(k);
+      }
+    }
+    const double bar = std::max(bestQ, mustBeat);
+    if (valid && qMin > bar)
+    {
+      // Every cavity vertex must be on the cone (else it would be swallowed).
+      for (const ConeFace& f : cone_)
+      {
+        const int32_t* w = mesh.vertices(f.tet);
+        for (int m = 0; m < 4; ++m)
+          if (m != f.face)
+            vstamp_[w[m]] = 1;
+      }
+      for (int32_t t : cavity_)
+      {
+        const int32_t* w = mesh.vertices(t);
+        for (int m = 0; m < 4; ++m)
+          valid &= vstamp_[w[m]] == 1;
+      }
+      for (int32_t t : cavity_)
+      {
+        const int32_t* w = mesh.vertices(t);
+        for (int m = 0; m < 4; ++m)
+          vstamp_[w[m]] = 0;
+      }
+      if (valid)
+      {
+        bestQ = qMin;
+        bestCavity_ = cavity_;
+      }
+    }
+    // Constrained faces stay on the boundary of every larger cavity: no growth can beat their worst tet.
+    if (growK < 0 || qConstrained <= std::max(bestQ, mustBeat))
+      break;
+    // Grow across the worst unconstrained face.
+    const int32_t u = mesh.neighbor(cone_[growK].tet, cone_[growK].face);
+    stamp_[u] = s;
+    cavity_.push_back(u);
+    size_t kept = 0;
+    for (size_t k = 0; k < cone_.size(); ++k)
+      if (cone_[k].constrained || stamp_[mesh.neighbor(cone_[k].tet, cone_[k].face)] != s)
+        cone_[kept++] = cone_[k];
+    cone_.resize(kept);
+    addFaces(u);
+  }
+  for (int32_t t : cavity_)
+    stamp_[t] = 0;
+  if (bestQ == -3)
+    return -3;
+  double qOld = 2;
+  bool replaces = mustReplace < 0;
+  for (int32_t t : bestCavity_)
+  {
+    const int32_t* w = mesh.vertices(t);
+    qOld = std::min(qOld, tetSineQuality(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3])));
+    replaces |= t == mustReplace;
+  }
+  if (!replaces)
+    return -3;
+  if (replacedQuality)
+    *replacedQuality = qOld;
+  if (commit)
+  {
+    // The cone's tets and their outer links, as insertPoint() builds them, then the common commit.
+    const uint32_t c = newStamp();
+    cavity_ = bestCavity_;
+    for (int32_t t : cavity_)
+      stamp_[t] = c;
+    newTets_.clear();
+    outerCode_.clear();
+    outerFace_.clear();
+    for (int32_t t : cavity_)
+    {
+      const int32_t* w = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+      {
+        if (!isConstrainedFace(t, i) && stamp_[mesh.neighbor(t, i)] == c)
+          continue;
+        std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+        q[i] = v;
+        newTets_.push_back(q);
+        outerCode_.push_back(mesh.neighborCode(t, i));
+        outerFace_.push_back(i);
+      }
+    }
+    commitInsertion(v, created);
+  }
+  return bestQ;
+}
+
+void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
+{
+  // The cone from v over the cavity boundary: new tet k replaces v at position outerFace_[k] of a cavity
+  // tet, so its face outerFace_[k] is the old boundary face (linked to the old outer neighbour) and its
+  // three other faces contain v and one boundary edge, matched pairwise by the edge's vertex pair.
+  const uint8_t userBits =
+    mesh.tetFlags[cavity_[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
+  const int32_t label = labels && static_cast<size_t>(cavity_[0]) < labels->size() ? (*labels)[cavity_[0]] : -1;
+  for (int32_t t : cavity_)
+    mesh.freeTet(t);
+  const size_t n = newTets_.size();
+  std::vector<int32_t>& ids = queue_;
+  ids.resize(n);
+  edgeSlots_.clear();
+  if (static_cast<size_t>(v) >= vertTet_.size())
+    vertTet_.resize(static_cast<size_t>(v) + 1, -1);
+  for (size_t k = 0; k < n; ++k)
+  {
+    const auto& q = newTets_[k];
+    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    mesh.tetFlags[t] = userBits;
+    ids[k] = t;
+    const int i = outerFace_[k];
+    const int32_t c = outerCode_[k];
+    if (c >= 0)
+      mesh.link(t, i, c >> 2, c & 3);
+    for (int j = 0; j < 4; ++j)
+    {
+      vertTet_[q[j]] = t;
+      if (j == i)
+        continue;
+      // Face j contains v (at position i) and the two vertices other than positions i and j.
+      int32_t a = -1, b = -1;
+      for (int m = 0; m < 4; ++m)
+        if (m != i && m != j)
+          (a < 0 ? a : b) = q[m];
+      const uint64_t key = a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b) : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
+      edgeSlots_.push_back({ key, TetMesh::encode(t, j) });
+    }
+  }
+  std::sort(edgeSlots_.begin(), edgeSlots_.end(),
+    [](const std::pair<uint64_t, int32_t>& x, const std::pair<uint64_t, int32_t>& y) { return x.first < y.first; });
+  for (size_t k = 0; k + 1 < edgeSlots_.size(); k += 2)
+  {
+    const int32_t c1 = edgeSlots_[k].second, c2 = edgeSlots_[k + 1].second;
+    mesh.link(c1 >> 2, c1 & 3, c2 >> 2, c2 & 3);
+  }
+  if (labels)
+  {
+    if (labels->size() < static_cast<size_t>(mesh.tetCapacity()))
+      labels->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
+    for (int32_t t : ids)
+      (*labels)[t] = label;
+  }
+  ensureStamp();
+  if (created)
+    *created = ids;
+  ++replacements;
+}
+
+} // namespace volgrid

@@ -1,0 +1,129 @@
+// Sizing field: the target edge length h(p) everywhere in space (paper sections 2 and 7.2).
+//
+//   1. Point distribution function (paper eq. 3): at every boundary point, the mean length of the
+//      distinct surface edges incident to it (pointDistributionFunction()).
+//   2. Sized nodes: the boundary points with their PDF, plus optional user nodes with a target size
+//      (clustering points with a size: they densify their neighbourhood).
+//   3. Optional user sizes: a callback h_user(p) and/or a background point cloud with one size per point
+//      (e.g. a VTK data set's point-data array: a coarse background mesh, a CFD solution's error estimate),
+//      interpolated linearly over the cloud's Delaunay tetrahedralization. Each node's size becomes
+//      min(own size, user sizes at the node).
+//   4. Gradation (Dijkstra-like limiting over the edges of the Delaunay tetrahedralization of the nodes):
+//      h(v) <= h(u) + (G - 1) |uv| for every background edge, G = SizingOptions::gradation. Two neighbours
+//      one size apart thus differ by at most the factor G. The limited value is the largest one that
+//      satisfies all the bounds: h(v) = min_u (h0(u) + (G-1) d(u, v)), d the shortest path along edges.
+//   5. Query: h(p) = barycentric interpolation over the background tet containing p (outside the nodes'
+//      hull: clamped barycentric interpolation on the hull face that sees p), then
+//      min(h, callback(p), cloud(p), maxEdgeLength), max(h, minEdgeLength).
+// The user sizes are not graded between nodes (only at the nodes): a user field is taken as given.
+//
+// evaluate() walks the background mesh from the last query (spatially coherent queries are cheap); it is
+// therefore not thread-safe: use one SizingField (or copy) per thread.
+#pragma once
+
+#include "OptionTable.h"
+#include "Progress.h"
+#include "Status.h"
+#include "TetMesh.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace volgrid
+{
+
+struct SizingOptions
+{
+  // Size growth bound between neighbours: h(v) <= h(u) + (gradation - 1) |uv|. Values <= 1 disable it.
+  double gradation = option::gradation.defaultValue;
+  // Global bounds on the target edge length (0 = none).
+  double maxEdgeLength = 0;
+  double minEdgeLength = 0;
+  // Multiplies the boundary PDF (< 1 gives a finer volume grid than the surface suggests).
+  double scale = option::sizeScale.defaultValue;
+};
+
+// Piecewise-linear interpolation of scattered values over the Delaunay tetrahedralization of their points.
+// Fewer than four affinely independent points: the nearest point's value.
+class LinearInterpolant
+{
+public:
+  LinearInterpolant();
+  ~LinearInterpolant();
+  LinearInterpolant(LinearInterpolant&&) noexcept;
+  LinearInterpolant& operator=(LinearInterpolant&&) noexcept;
+
+  // n points (xyz), one finite value each. Identical points keep the smallest value.
+  Status build(const double* xyz, size_t n, const double* values, Progress* progress = nullptr);
+  bool empty() const { return values_.empty(); }
+  double evaluate(const double* p) const;
+
+  // The background mesh (with ghosts) and the value per mesh vertex, for the gradation and the tests.
+  TetMesh& mesh() { return mesh_; }
+  const TetMesh& mesh() const { return mesh_; }
+  std::vector<double>& values() { return values_; }
+  const std::vector<double>& values() const { return values_; }
+  bool degenerate() const { return degenerate_; }
+
+private:
+  TetMesh mesh_;
+  std::vector<double> values_;
+  bool degenerate_ = false;
+  struct Locator;
+  std::unique_ptr<Locator> locator_;
+};
+
+// Paper eq. 3: per point, the mean length of the distinct triangle edges incident to it. Points used by no
+// triangle get 0.
+std::vector<double> pointDistributionFunction(const double* points, int32_t numPoints, const int32_t* triangles,
+  int32_t numTriangles);
+
+class SizingField
+{
+public:
+  using Function = std::function<double(const double* xyz)>;
+
+  // Optional user inputs; set them before build().
+  void setUserFunction(Function f) { user_ = std::move(f); }
+  // Background cloud of sizes (copied). Non-finite or non-positive sizes are ignored.
+  void setBackgroundCloud(const double* xyz, const double* sizes, size_t n);
+  // Extra sized nodes (clustering points with a target size). Non-finite or non-positive sizes ignored.
+  void addSizedPoints(const double* xyz, const double* sizes, size_t n);
+
+  // Build from the boundary surface (points and triangles; points used by no triangle are ignored).
+  // Errors: EmptyInput (no triangle and no sized point), InvalidOption (bad option values).
+  Status build(const double* points, int32_t numPoints, const int32_t* triangles, int32_t numTriangles,
+    const SizingOptions& options, Progress* progress = nullptr);
+
+  // A uniform field (no surface): h = size everywhere, with the same caps and user inputs.
+  Status buildUniform(double size, const SizingOptions& options);
+
+  double evaluate(const double* p) const;
+  double operator()(const double* p) const { return evaluate(p); }
+
+  // The graded interpolant (nodes = boundary points + sized points) and the options used.
+  const LinearInterpolant& nodes() const { return graded_; }
+  const SizingOptions& options() const { return options_; }
+  // Smallest and largest node size.
+  double minNodeSize() const { return minNode_; }
+  double maxNodeSize() const { return maxNode_; }
+
+private:
+  double userSize(const double* p) const;
+  SizingOptions options_;
+  Function user_;
+  std::vector<double> cloudXYZ_, cloudSize_;
+  std::vector<double> extraXYZ_, extraSize_;
+  LinearInterpolant cloud_;
+  LinearInterpolant graded_;
+  double uniform_ = 0;
+  double minNode_ = 0, maxNode_ = 0;
+};
+
+// Gradation limiting on a tet mesh's edges (the finite tets): sizes[v] <= sizes[u] + slope * |uv| for every
+// edge, by Dijkstra from the smallest sizes. Vertices with a non-finite or non-positive size are left out.
+void limitGradation(const TetMesh& mesh, double slope, std::vector<double>& sizes);
+
+} // namespace volgrid
