@@ -3,12 +3,17 @@
 #   make test    builds both flavours (ParaView plugin, VTK-only module) and runs every test
 #   make demo    meshes a bundled example and checks it
 #   make bench   VolGrid against TetGen, CGAL and vtkDelaunay3D, in one run
+#   make format  clang-format (.clang-format, VTK's style) over Core, Filters, Apps and Testing
 BUILD_DIR ?= build
 VTK_ONLY_DIR ?= $(BUILD_DIR)/vtk-only
+ASAN_DIR ?= $(BUILD_DIR)/asan
+# The sanitizer build's test selection: every Core unit test; the corpus suites (whole-corpus runs, minutes
+# in Release) are left to the Release build, where they run in full.
+ASAN_EXCLUDE ?= Corpus
 JOBS ?= $(shell nproc)
 PARAVIEW_VTK_DIR := /usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk
 
-.PHONY: build build-vtk-only test demo bench deps clean
+.PHONY: build build-vtk-only build-asan test test-asan demo bench deps clean format
 
 deps:
 	@scripts/install-deps.sh test
@@ -25,13 +30,32 @@ $(VTK_ONLY_DIR)/CMakeCache.txt:
 build-vtk-only: deps $(VTK_ONLY_DIR)/CMakeCache.txt
 	cmake --build $(VTK_ONLY_DIR) -j $(JOBS)
 
-# Both flavours always run (a failure in the first does not hide the second); the target fails if either did.
-test: build build-vtk-only
+# Core and its unit tests with AddressSanitizer + UndefinedBehaviorSanitizer and assertions on (no NDEBUG).
+$(ASAN_DIR)/CMakeCache.txt:
+	cmake -S . -B $(ASAN_DIR) -DVOLGRID_CORE_ONLY=ON -DVOLGRID_WERROR=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
+
+build-asan: deps $(ASAN_DIR)/CMakeCache.txt
+	cmake --build $(ASAN_DIR) -j $(JOBS)
+
+test-asan: build-asan
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(ASAN_DIR) --output-on-failure -j $(JOBS) --timeout 900 -E '$(ASAN_EXCLUDE)'
+
+format:
+	find Core Filters Apps Testing -name '*.h' -o -name '*.cxx' | grep -v '^Testing/Data/' | xargs clang-format -i
+
+# The three test runs always happen (a failure in one does not hide the others); the target fails if any did.
+test: build build-vtk-only build-asan
 	@status=0; \
 	echo "== ParaView flavour ($(BUILD_DIR)) =="; \
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) --timeout 900 || status=1; \
 	echo "== VTK-only flavour ($(VTK_ONLY_DIR)) =="; \
 	ctest --test-dir $(VTK_ONLY_DIR) --output-on-failure -j $(JOBS) --timeout 900 || status=1; \
+	echo "== Core under AddressSanitizer + UndefinedBehaviorSanitizer ($(ASAN_DIR)) =="; \
+	$(MAKE) --no-print-directory test-asan || status=1; \
 	exit $$status
 
 demo: build
