@@ -60,7 +60,9 @@ std::string optionUsage(const OptionSpec& spec, const char* metavar)
   std::string out = std::string("  --") + spec.name + " " + metavar;
   out.resize(std::max(out.size() + 1, kIndent), ' ');
   std::stringstream text;
-  text << spec.doc << " (default " << spec.defaultValue << ", in " << spec.rangeText() << ")";
+  std::string range = spec.rangeText(); // kept on one line: its space becomes \x01 until the end
+  range[range.find(' ')] = '\x01';
+  text << spec.doc << " (default " << spec.defaultValue << ", in " << range << ")";
   size_t column = out.size();
   bool lineStart = true;
   std::string word;
@@ -81,6 +83,7 @@ std::string optionUsage(const OptionSpec& spec, const char* metavar)
     column += word.size();
     lineStart = false;
   }
+  std::replace(out.begin(), out.end(), '\x01', ' ');
   return out + "\n";
 }
 
