@@ -16,11 +16,13 @@
 #include "Enclosures.h"
 #include "MeshChecker.h"
 #include "MeshImprovement.h"
+#include "OptionTable.h"
 #include "SurfaceMesh.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace
@@ -113,7 +115,7 @@ TEST(VolGridTetrahedralizeQuality, DefaultsGiveGoodTetsAndTheExactBoundary)
   EXPECT_TRUE(f->GetFieldPoints());
   EXPECT_TRUE(f->GetOptimize());
   EXPECT_DOUBLE_EQ(f->GetAlpha(), volgrid::ImprovementOptions().fieldPointOptions.alpha);
-  EXPECT_DOUBLE_EQ(f->GetTargetMinDihedral(), 18.0);
+  EXPECT_DOUBLE_EQ(f->GetTargetMinDihedral(), volgrid::option::targetAngle.defaultValue);
   f->SetInputData(input);
   f->CheckOutputOn(); // the mesher verifies boundary == input and the volume exactly
   f->Update();
@@ -225,25 +227,44 @@ TEST(VolGridTetrahedralizeQuality, SourcesClusterAndSize)
   EXPECT_EQ(bad->GetOutput(0)->GetNumberOfCells(), 0);
 }
 
-TEST(VolGridTetrahedralizeQuality, NumericOptionsAreClamped)
+TEST(VolGridTetrahedralizeQuality, NumericOptionsAreClampedToTheOptionTable)
 {
+  // Every numeric property is clamped to its valid range in Core's OptionTable.h (an open end to the end
+  // itself, which Core then refuses), and a valid value is kept.
   vtkNew<vtkVolGridTetrahedralize> f;
-  f->SetAlpha(100);
-  EXPECT_DOUBLE_EQ(f->GetAlpha(), 10.0);
-  f->SetAlpha(-1);
-  EXPECT_DOUBLE_EQ(f->GetAlpha(), 0.05);
-  f->SetBeta(-1);
-  EXPECT_DOUBLE_EQ(f->GetBeta(), 0.0);
-  f->SetGradation(0.5);
-  EXPECT_DOUBLE_EQ(f->GetGradation(), 1.0);
-  f->SetMaxEdgeLength(-2);
-  EXPECT_DOUBLE_EQ(f->GetMaxEdgeLength(), 0.0);
-  f->SetMaxVolume(-2);
-  EXPECT_DOUBLE_EQ(f->GetMaxVolume(), 0.0);
-  f->SetTargetMinDihedral(90);
-  EXPECT_DOUBLE_EQ(f->GetTargetMinDihedral(), 60.0);
-  f->SetMaxPasses(-3);
-  EXPECT_EQ(f->GetMaxPasses(), 0);
+  struct Property
+  {
+    const volgrid::OptionSpec& spec;
+    std::function<void(double)> set;
+    std::function<double()> get;
+  };
+  vtkVolGridTetrahedralize* p = f;
+  const Property properties[] = {
+    { volgrid::option::alpha, [p](double x) { p->SetAlpha(x); }, [p] { return p->GetAlpha(); } },
+    { volgrid::option::beta, [p](double x) { p->SetBeta(x); }, [p] { return p->GetBeta(); } },
+    { volgrid::option::gradation, [p](double x) { p->SetGradation(x); }, [p] { return p->GetGradation(); } },
+    { volgrid::option::sizeScale, [p](double x) { p->SetSizeScale(x); }, [p] { return p->GetSizeScale(); } },
+    { volgrid::option::maxEdge, [p](double x) { p->SetMaxEdgeLength(x); }, [p] { return p->GetMaxEdgeLength(); } },
+    { volgrid::option::maxVolume, [p](double x) { p->SetMaxVolume(x); }, [p] { return p->GetMaxVolume(); } },
+    { volgrid::option::targetAngle, [p](double x) { p->SetTargetMinDihedral(x); },
+      [p] { return p->GetTargetMinDihedral(); } },
+    { volgrid::option::passes, [p](double x) { p->SetMaxPasses(static_cast<int>(x)); },
+      [p] { return static_cast<double>(p->GetMaxPasses()); } },
+  };
+  for (const Property& property : properties)
+  {
+    const volgrid::OptionSpec& spec = property.spec;
+    EXPECT_EQ(property.get(), spec.defaultValue) << spec.property;
+    property.set(spec.minimum - 3);
+    EXPECT_EQ(property.get(), spec.minimum) << spec.property;
+    if (std::isfinite(spec.maximum))
+    {
+      property.set(spec.maximum + 30);
+      EXPECT_EQ(property.get(), spec.maximum) << spec.property;
+    }
+    property.set(spec.sliderMin + 1);
+    EXPECT_EQ(property.get(), spec.sliderMin + 1) << spec.property;
+  }
 }
 
 TEST(VolGridTetrahedralizeQuality, OptimisationRaisesTheMinimumAngle)
