@@ -111,21 +111,9 @@ struct DelaunayInserter::Impl
   // the bound. Uncertain cases go to the exact predicate.
   int insphere(const double* a, const double* b, const double* c, const double* d, const double* e) const
   {
-    const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
-    const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
-    const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
-    const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
-    const double m01 = x0 * y1 - x1 * y0, m02 = x0 * y2 - x2 * y0, m03 = x0 * y3 - x3 * y0;
-    const double m12 = x1 * y2 - x2 * y1, m13 = x1 * y3 - x3 * y1, m23 = x2 * y3 - x3 * y2;
-    const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
-    const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
-    const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
-    const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
-    const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
-    const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
-    const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
-    const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
-    const double det = (w0 * d123 - w1 * d023) + (w2 * d013 - w3 * d012); // > 0: e inside
+    const predicates::detail::InsphereTerms<double> t = predicates::detail::insphereTerms<double>(a, b, c, d, e);
+    const double det = -t.det; // > 0: e inside (the negation is exact)
+    const double w0 = t.w[0], w1 = t.w[1], w2 = t.w[2], w3 = t.w[3];
     const double W = std::max(std::max(w0, w1), std::max(w2, w3));
     if (W <= latticeInsphereLimit2)
       return (det > 0) - (det < 0); // exact (lattice input, differences <= 2^9 units)

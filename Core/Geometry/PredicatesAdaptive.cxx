@@ -159,33 +159,9 @@ int orient3dExtended(const double* a, const double* b, const double* c, const do
 // Sign of D = det[p - e, |p - e|^2] (insphere = -sign(D)) when certain, 0 when not decided.
 int insphereDExtended(const double* a, const double* b, const double* c, const double* d, const double* e)
 {
-  const LD x0 = LD(a[0]) - e[0], y0 = LD(a[1]) - e[1], z0 = LD(a[2]) - e[2];
-  const LD x1 = LD(b[0]) - e[0], y1 = LD(b[1]) - e[1], z1 = LD(b[2]) - e[2];
-  const LD x2 = LD(c[0]) - e[0], y2 = LD(c[1]) - e[1], z2 = LD(c[2]) - e[2];
-  const LD x3 = LD(d[0]) - e[0], y3 = LD(d[1]) - e[1], z3 = LD(d[2]) - e[2];
-  const LD x0y1 = x0 * y1, x1y0 = x1 * y0, x0y2 = x0 * y2, x2y0 = x2 * y0;
-  const LD x0y3 = x0 * y3, x3y0 = x3 * y0, x1y2 = x1 * y2, x2y1 = x2 * y1;
-  const LD x1y3 = x1 * y3, x3y1 = x3 * y1, x2y3 = x2 * y3, x3y2 = x3 * y2;
-  const LD m01 = x0y1 - x1y0, m02 = x0y2 - x2y0, m03 = x0y3 - x3y0;
-  const LD m12 = x1y2 - x2y1, m13 = x1y3 - x3y1, m23 = x2y3 - x3y2;
-  const LD d123 = (z1 * m23 - z2 * m13) + z3 * m12;
-  const LD d023 = (z0 * m23 - z2 * m03) + z3 * m02;
-  const LD d013 = (z0 * m13 - z1 * m03) + z3 * m01;
-  const LD d012 = (z0 * m12 - z1 * m02) + z2 * m01;
-  const LD w0 = (x0 * x0 + y0 * y0) + z0 * z0;
-  const LD w1 = (x1 * x1 + y1 * y1) + z1 * z1;
-  const LD w2 = (x2 * x2 + y2 * y2) + z2 * z2;
-  const LD w3 = (x3 * x3 + y3 * y3) + z3 * z3;
-  const LD det = (w1 * d023 - w0 * d123) + (w3 * d012 - w2 * d013);
-  const LD p01 = std::fabs(x0y1) + std::fabs(x1y0), p02 = std::fabs(x0y2) + std::fabs(x2y0);
-  const LD p03 = std::fabs(x0y3) + std::fabs(x3y0), p12 = std::fabs(x1y2) + std::fabs(x2y1);
-  const LD p13 = std::fabs(x1y3) + std::fabs(x3y1), p23 = std::fabs(x2y3) + std::fabs(x3y2);
-  const LD az0 = std::fabs(z0), az1 = std::fabs(z1), az2 = std::fabs(z2), az3 = std::fabs(z3);
-  const LD q123 = (az1 * p23 + az2 * p13) + az3 * p12;
-  const LD q023 = (az0 * p23 + az2 * p03) + az3 * p02;
-  const LD q013 = (az0 * p13 + az1 * p03) + az3 * p01;
-  const LD q012 = (az0 * p12 + az1 * p02) + az2 * p01;
-  const LD perm = (w1 * q023 + w0 * q123) + (w3 * q012 + w2 * q013);
+  const detail::InsphereTerms<LD> t = detail::insphereTerms<LD>(a, b, c, d, e);
+  const LD det = t.det;
+  const LD perm = t.permanent();
   const LD bound = (17 * kUnitLD) * perm;
   return det > bound ? 1 : (-det > bound ? -1 : 0);
 }

@@ -33,6 +33,55 @@ inline int signOf(double x)
   return (x > 0.0) - (x < 0.0);
 }
 
+// The lifted insphere determinant D = det[p - e, |p - e|^2] of the rows a, b, c, d in the arithmetic of
+// Real, with what its error bounds need: D = (w1 d023 - w0 d123) + (w3 d012 - w2 d013) (insphere =
+// -sign(D)), the lifted values w_i = |p_i - e|^2 and the permanents q_i of the other three rows' absolute
+// coordinates (q[0] = q123, q[1] = q023, q[2] = q013, q[3] = q012). One expression tree for the double
+// filter below, the extended-precision stage (PredicatesAdaptive.cxx) and the Delaunay kernel's filter
+// (DelaunayInserterImpl.h); what a caller does not use is optimised away.
+template <typename Real>
+struct InsphereTerms
+{
+  Real det;
+  Real w[4];
+  Real q[4];
+  Real permanent() const { return (w[1] * q[1] + w[0] * q[0]) + (w[3] * q[3] + w[2] * q[2]); }
+};
+
+template <typename Real>
+inline InsphereTerms<Real> insphereTerms(
+  const double* a, const double* b, const double* c, const double* d, const double* e)
+{
+  const Real x0 = Real(a[0]) - e[0], y0 = Real(a[1]) - e[1], z0 = Real(a[2]) - e[2];
+  const Real x1 = Real(b[0]) - e[0], y1 = Real(b[1]) - e[1], z1 = Real(b[2]) - e[2];
+  const Real x2 = Real(c[0]) - e[0], y2 = Real(c[1]) - e[1], z2 = Real(c[2]) - e[2];
+  const Real x3 = Real(d[0]) - e[0], y3 = Real(d[1]) - e[1], z3 = Real(d[2]) - e[2];
+  const Real x0y1 = x0 * y1, x1y0 = x1 * y0, x0y2 = x0 * y2, x2y0 = x2 * y0;
+  const Real x0y3 = x0 * y3, x3y0 = x3 * y0, x1y2 = x1 * y2, x2y1 = x2 * y1;
+  const Real x1y3 = x1 * y3, x3y1 = x3 * y1, x2y3 = x2 * y3, x3y2 = x3 * y2;
+  const Real m01 = x0y1 - x1y0, m02 = x0y2 - x2y0, m03 = x0y3 - x3y0;
+  const Real m12 = x1y2 - x2y1, m13 = x1y3 - x3y1, m23 = x2y3 - x3y2;
+  const Real d123 = (z1 * m23 - z2 * m13) + z3 * m12;
+  const Real d023 = (z0 * m23 - z2 * m03) + z3 * m02;
+  const Real d013 = (z0 * m13 - z1 * m03) + z3 * m01;
+  const Real d012 = (z0 * m12 - z1 * m02) + z2 * m01;
+  InsphereTerms<Real> t;
+  t.w[0] = (x0 * x0 + y0 * y0) + z0 * z0;
+  t.w[1] = (x1 * x1 + y1 * y1) + z1 * z1;
+  t.w[2] = (x2 * x2 + y2 * y2) + z2 * z2;
+  t.w[3] = (x3 * x3 + y3 * y3) + z3 * z3;
+  t.det = (t.w[1] * d023 - t.w[0] * d123) + (t.w[3] * d012 - t.w[2] * d013);
+  const Real p01 = std::fabs(x0y1) + std::fabs(x1y0), p02 = std::fabs(x0y2) + std::fabs(x2y0);
+  const Real p03 = std::fabs(x0y3) + std::fabs(x3y0), p12 = std::fabs(x1y2) + std::fabs(x2y1);
+  const Real p13 = std::fabs(x1y3) + std::fabs(x3y1), p23 = std::fabs(x2y3) + std::fabs(x3y2);
+  const Real az0 = std::fabs(z0), az1 = std::fabs(z1), az2 = std::fabs(z2), az3 = std::fabs(z3);
+  t.q[0] = (az1 * p23 + az2 * p13) + az3 * p12;
+  t.q[1] = (az0 * p23 + az2 * p03) + az3 * p02;
+  t.q[2] = (az0 * p13 + az1 * p03) + az3 * p01;
+  t.q[3] = (az0 * p12 + az1 * p02) + az2 * p01;
+  return t;
+}
+
 // Exact evaluations (Predicates.cxx), called when the filter cannot decide.
 int orient3dExact(const double* a, const double* b, const double* c, const double* d);
 int insphereExact(const double* a, const double* b, const double* c, const double* d, const double* e);
@@ -76,41 +125,15 @@ inline int orient3dInline(const double* a, const double* b, const double* c, con
 
 inline int insphereInline(const double* a, const double* b, const double* c, const double* d, const double* e)
 {
-  const double x0 = a[0] - e[0], y0 = a[1] - e[1], z0 = a[2] - e[2];
-  const double x1 = b[0] - e[0], y1 = b[1] - e[1], z1 = b[2] - e[2];
-  const double x2 = c[0] - e[0], y2 = c[1] - e[1], z2 = c[2] - e[2];
-  const double x3 = d[0] - e[0], y3 = d[1] - e[1], z3 = d[2] - e[2];
-  const double x0y1 = x0 * y1, x1y0 = x1 * y0, x0y2 = x0 * y2, x2y0 = x2 * y0;
-  const double x0y3 = x0 * y3, x3y0 = x3 * y0, x1y2 = x1 * y2, x2y1 = x2 * y1;
-  const double x1y3 = x1 * y3, x3y1 = x3 * y1, x2y3 = x2 * y3, x3y2 = x3 * y2;
-  const double m01 = x0y1 - x1y0, m02 = x0y2 - x2y0, m03 = x0y3 - x3y0;
-  const double m12 = x1y2 - x2y1, m13 = x1y3 - x3y1, m23 = x2y3 - x3y2;
-  const double d123 = (z1 * m23 - z2 * m13) + z3 * m12;
-  const double d023 = (z0 * m23 - z2 * m03) + z3 * m02;
-  const double d013 = (z0 * m13 - z1 * m03) + z3 * m01;
-  const double d012 = (z0 * m12 - z1 * m02) + z2 * m01;
-  const double w0 = (x0 * x0 + y0 * y0) + z0 * z0;
-  const double w1 = (x1 * x1 + y1 * y1) + z1 * z1;
-  const double w2 = (x2 * x2 + y2 * y2) + z2 * z2;
-  const double w3 = (x3 * x3 + y3 * y3) + z3 * z3;
-  // D = det[p - e, |p - e|^2] = -w0 d123 + w1 d023 - w2 d013 + w3 d012; insphere = -sign(D).
-  const double det = (w1 * d023 - w0 * d123) + (w3 * d012 - w2 * d013);
-
-  const double p01 = std::fabs(x0y1) + std::fabs(x1y0), p02 = std::fabs(x0y2) + std::fabs(x2y0);
-  const double p03 = std::fabs(x0y3) + std::fabs(x3y0), p12 = std::fabs(x1y2) + std::fabs(x2y1);
-  const double p13 = std::fabs(x1y3) + std::fabs(x3y1), p23 = std::fabs(x2y3) + std::fabs(x3y2);
-  const double az0 = std::fabs(z0), az1 = std::fabs(z1), az2 = std::fabs(z2), az3 = std::fabs(z3);
-  const double q123 = (az1 * p23 + az2 * p13) + az3 * p12;
-  const double q023 = (az0 * p23 + az2 * p03) + az3 * p02;
-  const double q013 = (az0 * p13 + az1 * p03) + az3 * p01;
-  const double q012 = (az0 * p12 + az1 * p02) + az2 * p01;
-  const double perm = (w1 * q023 + w0 * q123) + (w3 * q012 + w2 * q013);
-  const double wsum = ((w0 + w1) + (w2 + w3)) + 4.0;
-  const double under = 0x1p-1020 * (wsum * wsum + ((q123 + q023) + (q013 + q012)));
-  const double bound = detail::kInsphereBound * (perm + under);
-  if (std::fabs(det) > bound)
+  const detail::InsphereTerms<double> t = detail::insphereTerms<double>(a, b, c, d, e);
+  const double* w = t.w;
+  const double* q = t.q;
+  const double wsum = ((w[0] + w[1]) + (w[2] + w[3])) + 4.0;
+  const double under = 0x1p-1020 * (wsum * wsum + ((q[0] + q[1]) + (q[2] + q[3])));
+  const double bound = detail::kInsphereBound * (t.permanent() + under);
+  if (std::fabs(t.det) > bound)
   {
-    return -detail::signOf(det);
+    return -detail::signOf(t.det);
   }
   return detail::insphereExact(a, b, c, d, e);
 }
