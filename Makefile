@@ -7,9 +7,10 @@
 BUILD_DIR ?= build
 VTK_ONLY_DIR ?= $(BUILD_DIR)/vtk-only
 ASAN_DIR ?= $(BUILD_DIR)/asan
-# The sanitizer build's test selection: every Core unit test; the corpus suites (whole-corpus runs, minutes
-# in Release) are left to the Release build, where they run in full.
-ASAN_EXCLUDE ?= Corpus
+# The sanitizer build's test selection: every Core test (221 with the layout check, about 3 minutes on 2
+# cores, the corpus tests included) except MesherCorpus.CleanClosedModels, which meshes the whole clean
+# corpus (4+ minutes in Release) and runs in full in the Release build.
+ASAN_EXCLUDE ?= MesherCorpus.CleanClosedModels
 JOBS ?= $(shell nproc)
 PARAVIEW_VTK_DIR := /usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk
 
