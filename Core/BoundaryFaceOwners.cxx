@@ -36,18 +36,25 @@ struct KeyHash
 
 Status findBoundaryFaceOwners(const SolverMesh& mesh, std::vector<FaceOwner>& owners)
 {
-  const int64_t numTriangles = mesh.numberOfTriangles();
+  return findBoundaryFaceOwners(mesh.tets, mesh.triangles, owners);
+}
+
+Status findBoundaryFaceOwners(
+  const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles, std::vector<FaceOwner>& owners)
+{
+  const int64_t numTriangles = static_cast<int64_t>(triangles.size() / 3);
+  const int64_t numTets = static_cast<int64_t>(tets.size() / 4);
   owners.assign(static_cast<size_t>(numTriangles), FaceOwner());
   std::unordered_map<Key, int64_t, KeyHash> triangleOf;
   triangleOf.reserve(static_cast<size_t>(numTriangles));
   for (int64_t t = 0; t < numTriangles; ++t)
   {
-    const int32_t* v = mesh.triangles.data() + 3 * t;
+    const int32_t* v = triangles.data() + 3 * t;
     triangleOf.emplace(sortedKey(v[0], v[1], v[2]), t);
   }
-  for (int64_t t = 0; t < mesh.numberOfTets(); ++t)
+  for (int64_t t = 0; t < numTets; ++t)
   {
-    const int32_t* v = mesh.tets.data() + 4 * t;
+    const int32_t* v = tets.data() + 4 * t;
     for (int side = 0; side < 4; ++side)
     {
       const int* f = kExodusTetSide[side];

@@ -11,6 +11,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "BoundaryFaceOwners.h"
 #include "Mesher.h"
 #include "TetMesh.h"
 #include "SolverMesh.h"
@@ -110,6 +111,8 @@ void VolGridFillFromMesherResult(
       forced->SetValue(static_cast<vtkIdType>(i), result.tetForced[i]);
     volume->GetCellData()->AddArray(forced);
   }
+  volume->GetCellData()->RemoveArray("BoundaryFacePatch");
+  volume->GetCellData()->AddArray(VolGridBoundaryFacePatch(result.tets, result.boundaryTriangles, result.boundaryPatch));
   if (boundary)
   {
     boundary->SetPoints(points);
@@ -117,6 +120,22 @@ void VolGridFillFromMesherResult(
     boundary->GetCellData()->RemoveArray("PatchId");
     boundary->GetCellData()->AddArray(intArray("PatchId", result.boundaryPatch));
   }
+}
+
+vtkSmartPointer<vtkIntArray> VolGridBoundaryFacePatch(const std::vector<int32_t>& tets,
+  const std::vector<int32_t>& triangles, const std::vector<int32_t>& patches)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName("BoundaryFacePatch");
+  array->SetNumberOfComponents(4);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(tets.size() / 4));
+  array->Fill(-1);
+  std::vector<volgrid::FaceOwner> owners;
+  volgrid::findBoundaryFaceOwners(tets, triangles, owners); // a triangle without a tet has no entry
+  for (size_t t = 0; t < owners.size() && t < patches.size(); ++t)
+    if (owners[t].tet >= 0)
+      array->SetTypedComponent(static_cast<vtkIdType>(owners[t].tet), owners[t].side, patches[t]);
+  return array;
 }
 
 void VolGridSetLabelNames(vtkDataObject* data, const char* arrayName, const std::vector<int32_t>& labels,
