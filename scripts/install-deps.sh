@@ -18,10 +18,11 @@ packages=(build-essential cmake pkg-config libgtest-dev
 case "$level" in
   build) ;;
   # openmpi-bin: the pvbatch tests under mpiexec; xvfb, xauth: the ParaView GUI test on a headless machine;
-  # gmsh, python3-gmsh, python3-meshio, openfoam, cgns-convert (cgnscheck): independent readers of the solver formats;
+  # gmsh, python3-gmsh, python3-meshio (+ python3-netcdf4 for Exodus), openfoam, cgns-convert (cgnscheck):
+  # independent readers of the solver formats;
   # clang, libclang-rt-14-dev: the libFuzzer reader targets (Testing/Fuzz, -fsanitize=fuzzer,address,undefined).
   test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev openmpi-bin xvfb xauth
-    gmsh python3-gmsh python3-meshio openfoam cgns-convert clang libclang-rt-14-dev) ;;
+    gmsh python3-gmsh python3-meshio python3-netcdf4 openfoam cgns-convert clang libclang-rt-14-dev) ;;
   bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac

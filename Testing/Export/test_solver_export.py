@@ -1,8 +1,9 @@
 """Solver hand-off end to end: a VolGrid mesh written as gmsh 4.1 and 2.2, SU2, Medit, TetGen and an
-OpenFOAM case, each read back by a reader VolGrid did not write (meshio, gmsh's API, OpenFOAM's checkMesh),
+OpenFOAM case, CGNS and Exodus II, each read back by a reader VolGrid did not write (meshio, gmsh's API,
+OpenFOAM's checkMesh, cgns-convert's cgnscheck, ParaView's CGNS and Exodus readers),
 which must report the same points, tets and patch names with the same face counts; OpenFOAM's
 potentialFoam runs on the case; VolGrid Quality's non-orthogonality and skewness match checkMesh's; Medit,
-gmsh, SU2, TetGen and OpenFOAM files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
+gmsh, SU2, TetGen, OpenFOAM, CGNS and Exodus files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
 Exit 77 (skip) when the ONERA M6 domain is missing (a clone without ../shared/data/real)."""
 import json
 import os
@@ -88,7 +89,8 @@ def main():
     expected_names = mesh_case(volgrid, work, case, data_root)
     w = lambda name: os.path.join(work, name)
     for out, extra in (("mesh.msh", []), ("mesh22.msh", ["--format", "gmsh22"]), ("mesh.su2", []),
-                       ("mesh.node", []), ("case", ["--format", "openfoam"]), ("again.mesh", [])):
+                       ("mesh.node", []), ("case", ["--format", "openfoam"]), ("again.mesh", []),
+                       ("mesh.cgns", []), ("mesh.exo", [])):
         run(volgrid, "convert", w("domain.mesh"), w(out), *extra)
 
     # The reference: gmsh's own API on the 4.1 file (names and face counts per physical group).
@@ -107,6 +109,14 @@ def main():
     medit = R.meshio_medit(w("domain.mesh"), {})
     check(medit[:2] == (points, tets) and sorted(medit[2].values()) == sorted(faces.values()),
           "meshio on the Medit file: same counts, same faces per ref")
+
+    code, out = R.cgnscheck(w("mesh.cgns"))
+    check(code == 0 and "ERROR" not in out.upper().replace("0 ERRORS", ""), "cgnscheck: the CGNS file is valid")
+    check(R.paraview_reader("cgns", w("mesh.cgns")) == (points, tets, faces),
+          "ParaView's CGNS reader: same points, tets, patch names and faces (one BC per patch)")
+    check(R.paraview_reader("exodus", w("mesh.exo")) == (points, tets, faces),
+          "ParaView's Exodus II reader: same points, tets, side set names and faces")
+    check(R.meshio_exodus(w("mesh.exo")) == (points, tets), "meshio on the Exodus II file: same counts")
 
     write_potential_case(w("case"))
     foam = R.check_mesh(w("case"))
@@ -152,6 +162,18 @@ def main():
         run(volgrid, "convert", w(src), w(dst), *extra)
         with open(w(src), "rb") as a, open(w(dst), "rb") as b:
             check(a.read() == b.read(), "%s written, read back and written again: identical" % src)
+    run(volgrid, "convert", w("mesh.exo"), w("again.exo"))
+    with open(w("mesh.exo"), "rb") as a, open(w("again.exo"), "rb") as b:
+        check(a.read() == b.read(), "Exodus II written, read back and written again: identical")
+    # HDF5 stamps each object with its creation time, so two CGNS files of the same mesh differ in bytes:
+    # cgnsdiff compares every node and its data; the Medit file from the re-read CGNS file must be the original.
+    run(volgrid, "convert", w("mesh.cgns"), w("again.cgns"))
+    p = subprocess.run(["cgnsdiff", "-d", w("mesh.cgns"), w("again.cgns")], stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    check(p.returncode == 0 and p.stdout.strip() == "", "CGNS written, read back and written again: identical nodes and data")
+    run(volgrid, "convert", w("again.cgns"), w("from-cgns.mesh"))
+    with open(w("domain.mesh"), "rb") as a, open(w("from-cgns.mesh"), "rb") as b:
+        check(a.read() == b.read(), "Medit file from the re-read CGNS file: identical to the original")
     run(volgrid, "convert", w("case"), w("case-again"), "--format", "openfoam")
     same = True
     for f in ("points", "faces", "owner", "neighbour", "boundary"):
