@@ -193,6 +193,12 @@ def main():
                     "g wing upper\nf 2 3 4\n")
         run(volgrid, "mesh", w("groups.obj"), w("groups.msh"), "--no-field-points")
         check(R.gmsh_api(w("groups.msh"))[2] == {"wing upper": 3, "tip": 1}, "OBJ groups are named patches")
+        # OBJ objects too (Blender writes `o` and no `g`); a `g` inside an object names the faces after it.
+        with open(w("objects.obj"), "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\no Wing\nf 1 3 2\nf 1 2 4\no Tip\nf 1 4 3\n"
+                    "g Tip_cap\nf 2 3 4\n")
+        run(volgrid, "mesh", w("objects.obj"), w("objects.msh"), "--no-field-points")
+        check(R.gmsh_api(w("objects.msh"))[2] == {"Wing": 2, "Tip": 1, "Tip_cap": 1}, "OBJ objects are named patches")
     bad = run(volgrid, "convert", w("domain.mesh"), w("out.xyz"), expect=2)
     check(not os.path.exists(w("out.xyz")) and "extension" in bad.stderr, "unknown extension: clear error, no file")
     bad = run(volgrid, "convert", w("domain.mesh"), w("case"), "--format", "openfoam", expect=1)
