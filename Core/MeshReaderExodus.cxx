@@ -1,6 +1,7 @@
 // Exodus II reader (Debian's libexoIIv2c): the TETRA element blocks are the regions (in file order, named
 // after the block), the side sets the patches (named after the set), each side a boundary triangle taken
-// from its tet in the Exodus side order (kExodusTetSide). Blocks of other element types are refused.
+// from its tet in the Exodus side order (kExodusTetSide), nodal variables at the last time step the point
+// fields (a solver's target size, ...). Blocks of other element types are refused.
 #include "BoundaryFaceOwners.h"
 #include "MeshReader.h"
 
@@ -84,6 +85,31 @@ Status readBlocks(const std::string& path, int file, int numBlocks, int64_t numP
   return Status::success();
 }
 
+// The nodal variables at the last time step (a solver's latest result) as point fields.
+Status readNodalVariables(const std::string& path, int file, int numPoints, SolverMesh& mesh)
+{
+  int numVariables = 0;
+  const int numSteps = static_cast<int>(ex_inquire_int(file, EX_INQ_TIME));
+  if (numSteps < 1 || ex_get_variable_param(file, EX_NODAL, &numVariables) < 0 || numVariables < 1)
+    return Status::success();
+  const int length = std::max(32, static_cast<int>(ex_inquire_int(file, EX_INQ_DB_MAX_USED_NAME_LENGTH)));
+  std::vector<std::vector<char>> buffers(static_cast<size_t>(numVariables), std::vector<char>(length + 1, 0));
+  std::vector<char*> pointers;
+  for (auto& b : buffers)
+    pointers.push_back(b.data());
+  if (ex_get_variable_names(file, EX_NODAL, numVariables, pointers.data()) < 0)
+    return exodusFailure(path, "cannot read the nodal variable names");
+  for (int k = 0; k < numVariables; ++k)
+  {
+    const std::string name = buffers[k].data();
+    std::vector<double> values(static_cast<size_t>(numPoints));
+    if (ex_get_var(file, numSteps, EX_NODAL, k + 1, 1, numPoints, values.data()) < 0)
+      return exodusFailure(path, "cannot read nodal variable " + std::to_string(k + 1));
+    mesh.pointData[name.empty() ? "variable" + std::to_string(k + 1) : name] = std::move(values);
+  }
+  return Status::success();
+}
+
 Status readSideSets(const std::string& path, int file, int numSets, SolverMesh& mesh)
 {
   std::vector<int> ids(static_cast<size_t>(numSets));
@@ -141,6 +167,8 @@ Status readExodus(const std::string& path, SolverMesh& mesh)
   Status s = readBlocks(path, file.id, numBlocks, numPoints, mesh);
   if (s.ok())
     s = readSideSets(path, file.id, numSideSets, mesh);
+  if (s.ok())
+    s = readNodalVariables(path, file.id, numPoints, mesh);
   if (s.ok() && mesh.numberOfTets() == 0)
     s = exodusFailure(path, "no tets");
   if (!s.ok())

@@ -1,7 +1,7 @@
 // Exodus II writer (Debian's libexoIIv2c over netCDF): the tets in one TETRA element block per region
 // (block id = region label, named after the region), and one side set per patch (id = patch label, named
 // after it) listing each boundary triangle as (owning tet, Exodus side). Tets are numbered block by block,
-// as Exodus numbers elements.
+// as Exodus numbers elements. Point fields (SolverMesh::pointData) become nodal variables at time 0.
 #include "BoundaryFaceOwners.h"
 #include "LibraryOutput.h"
 #include "MeshWriter.h"
@@ -42,6 +42,8 @@ size_t longestName(const SolverMesh& mesh)
     longest = std::max(longest, labelName(mesh.patchNames, p, "patch").size());
   for (int32_t r : distinctLabels(mesh.tetRegion))
     longest = std::max(longest, labelName(mesh.regionNames, r, "region").size());
+  for (const auto& field : mesh.pointData)
+    longest = std::max(longest, field.first.size());
   return longest;
 }
 
@@ -89,6 +91,30 @@ bool writeSideSets(int file, const SolverMesh& mesh, const std::vector<int32_t>&
   return putNames(file, EX_SIDE_SET, patches, mesh.patchNames, "patch") >= 0;
 }
 
+// The point fields as nodal variables of one time step (time 0).
+bool writePointData(int file, const SolverMesh& mesh)
+{
+  if (mesh.pointData.empty())
+    return true;
+  std::vector<std::string> names;
+  for (const auto& field : mesh.pointData)
+    names.push_back(field.first);
+  std::vector<char*> pointers;
+  for (std::string& n : names)
+    pointers.push_back(&n[0]);
+  const double time = 0.0;
+  if (ex_put_variable_param(file, EX_NODAL, static_cast<int>(names.size())) < 0 ||
+    ex_put_variable_names(file, EX_NODAL, static_cast<int>(names.size()), pointers.data()) < 0 ||
+    ex_put_time(file, 1, &time) < 0)
+    return false;
+  int index = 1;
+  for (const auto& field : mesh.pointData)
+    if (field.second.size() != static_cast<size_t>(mesh.numberOfPoints()) ||
+      ex_put_var(file, 1, EX_NODAL, index++, 1, mesh.numberOfPoints(), field.second.data()) < 0)
+      return false;
+  return true;
+}
+
 bool writeFile(int file, const SolverMesh& mesh, const std::vector<FaceOwner>& owners)
 {
   const std::vector<int32_t> regions = distinctLabels(mesh.tetRegion);
@@ -109,7 +135,7 @@ bool writeFile(int file, const SolverMesh& mesh, const std::vector<FaceOwner>& o
   std::vector<int64_t> elementNumber;
   return ex_put_coord(file, xyz[0].data(), xyz[1].data(), xyz[2].data()) >= 0 &&
     ex_put_coord_names(file, axisNames) >= 0 && writeBlocks(file, mesh, regions, elementNumber) &&
-    writeSideSets(file, mesh, patches, owners, elementNumber);
+    writeSideSets(file, mesh, patches, owners, elementNumber) && writePointData(file, mesh);
 }
 } // namespace
 

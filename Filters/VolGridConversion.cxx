@@ -3,7 +3,9 @@
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkPointData.h"
 #include "vtkIntArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkPolyData.h"
@@ -185,4 +187,15 @@ void VolGridFillFromSolverMesh(const volgrid::SolverMesh& mesh, vtkUnstructuredG
   result.boundaryPatch.resize(mesh.triangles.size() / 3, 0);
   VolGridFillFromMesherResult(result, volume, boundary);
   VolGridSetPatchAndRegionNames(result, mesh.patchNames, mesh.regionNames, volume, boundary);
+  for (const auto& field : mesh.pointData)
+  {
+    if (field.second.size() != mesh.points.size() / 3)
+      continue;
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(field.first.c_str());
+    array->SetNumberOfValues(static_cast<vtkIdType>(field.second.size()));
+    for (size_t i = 0; i < field.second.size(); ++i)
+      array->SetValue(static_cast<vtkIdType>(i), field.second[i]);
+    volume->GetPointData()->AddArray(array);
+  }
 }

@@ -61,7 +61,8 @@ VTKVOLGRIDFILTERS_EXPORT void VolGridSetPatchAndRegionNames(const volgrid::Meshe
   vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 
 // A solver's mesh (Core/MeshReader.h) as VTK data: `volume` gets the tets with Region, PatchNames and
-// RegionNames; `boundary` (may be null) the boundary triangles with PatchId and PatchNames.
+// RegionNames and the point fields as point arrays; `boundary` (may be null) the boundary triangles with
+// PatchId and PatchNames.
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromSolverMesh(
   const volgrid::SolverMesh& mesh, vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 

@@ -6,6 +6,7 @@
 #include "vtkCellIterator.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
@@ -64,6 +65,17 @@ bool VolGridSolverMeshFromGrid(vtkUnstructuredGrid* grid, volgrid::SolverMesh& m
   mesh.points.resize(static_cast<size_t>(3 * numPoints));
   for (vtkIdType i = 0; i < numPoints; ++i)
     grid->GetPoint(i, mesh.points.data() + 3 * i);
+  vtkPointData* pointData = grid->GetPointData();
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pointData->GetArray(a);
+    if (!array || !array->GetName() || array->GetNumberOfComponents() != 1)
+      continue; // the solver formats' point fields are scalars
+    std::vector<double>& values = mesh.pointData[array->GetName()];
+    values.resize(static_cast<size_t>(numPoints));
+    for (vtkIdType i = 0; i < numPoints; ++i)
+      values[i] = array->GetComponent(i, 0);
+  }
   mesh.patchNames = VolGridReadLabelNames(grid, "PatchNames");
   mesh.regionNames = VolGridReadLabelNames(grid, "RegionNames");
   return true;

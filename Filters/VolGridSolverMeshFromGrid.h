@@ -1,6 +1,6 @@
 // A VTK tet grid back into Core's SolverMesh, for the solver writers behind ParaView's Save Data: the
 // tets, Region (else region 1) with RegionNames, and the boundary triangles with their patches from the
-// BoundaryFacePatch cell array (VolGridConversion.h) with PatchNames.
+// BoundaryFacePatch cell array (VolGridConversion.h) with PatchNames; scalar point arrays as point fields.
 #ifndef VolGridSolverMeshFromGrid_h
 #define VolGridSolverMeshFromGrid_h
 

@@ -7,6 +7,7 @@ clear error and leaves no file. Usage: pvpython test_savedata.py WORKDIR (plugin
 import collections
 import os
 import shutil
+import subprocess
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
@@ -63,6 +64,24 @@ foam = R.check_mesh(w("case"))
 check((foam["points"], foam["cells"], foam["patches"]) == expected, "checkMesh on the saved OpenFOAM case: same")
 check(PV.cgns(w("mesh.cgns")) == expected, "ParaView's CGNS reader on the saved .cgns: same")
 check(PV.exodus(w("mesh.exo")) == expected, "ParaView's Exodus II reader on the saved .exo: same")
+
+# Adaptivity on a solver's mesh: a target-size field saved with the mesh as an Exodus II nodal variable,
+# `volgrid refine` reads it back, refines where the target is finer and writes Exodus II and CGNS with the
+# same patches (the boundary is kept exactly).
+volgrid = os.environ["VOLGRID_CLI"]
+target = PythonCalculator(Input=mesh, ArrayName="TargetSize", Expression="0.1 + 0.2 * mag(inputs[0].Points)")
+SaveData(w("solver.exo"), proxy=target)
+for out, reader in (("finer.exo", PV.exodus), ("finer.cgns", PV.cgns)):
+    p = subprocess.run([volgrid, "refine", w("solver.exo"), w(out), "--size-array", "TargetSize"],
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    print(p.stdout, end="")
+    finer = reader(w(out)) if p.returncode == 0 else (0, 0, {})
+    check(finer[0] > expected[0] and finer[1] > expected[1] and finer[2] == faces,
+          "refine solver.exo %s: more points and tets (%d, %d), same patches and faces %s" % (out, finer[0], finer[1], finer[2]))
+p = subprocess.run([volgrid, "refine", w("mesh.msh"), w("none.exo"), "--size-array", "TargetSize"],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+check(p.returncode == 1 and "TargetSize" in p.stdout and not os.path.exists(w("none.exo")),
+      "refine on a mesh without the target array: clear error, no file")
 
 # A directory that does not exist: the writer reports it, no file appears.
 writer = CreateWriter(w("missing/mesh.cgns"), mesh)
