@@ -34,21 +34,22 @@ def run(volgrid, *args, expect=0):
 
 
 def mesh_case(volgrid, work, case, data_root):
-    """Meshes the case into WORK/domain.mesh; returns the expected patch names."""
+    """Meshes the case into WORK/domain.mesh; returns the expected patch names and the `volgrid mesh`
+    input and options that made it."""
     if case == "wing":
         stl = os.path.join(HERE, "..", "Data", "straight_wing.stl")
         run(volgrid, "prep", stl, os.path.join(work, "domain.vtk"), "--enclosure", "sphere",
             "--enclosure-scale", "10")
         run(volgrid, "mesh", os.path.join(work, "domain.vtk"), os.path.join(work, "domain.mesh"))
-        return {"straight_wing", "farfield"}
+        return {"straight_wing", "farfield"}, [os.path.join(work, "domain.vtk")]
     src = os.path.join(data_root, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
     if not os.path.exists(src):
         print("SKIP: %s is missing (the real corpus ../shared/data/real is not on this machine)" % src)
         raise SystemExit(SKIP)
     # Refs of the CAD faces: 1 the far-field sphere, 2 the symmetry plane y = 0, 3..12 the wing.
-    run(volgrid, "mesh", src, os.path.join(work, "domain.mesh"),
-        "--patch", "farfield=1,symmetry=2,wing=3,4,5,6,7,8,9,10,11,12")
-    return {"wing", "symmetry", "farfield"}
+    patches = ["--patch", "farfield=1,symmetry=2,wing=3,4,5,6,7,8,9,10,11,12"]
+    run(volgrid, "mesh", src, os.path.join(work, "domain.mesh"), *patches)
+    return {"wing", "symmetry", "farfield"}, [src] + patches
 
 
 def write_potential_case(case):
@@ -86,7 +87,7 @@ def main():
     data_root = sys.argv[4] if len(sys.argv) > 4 else ""
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    expected_names = mesh_case(volgrid, work, case, data_root)
+    expected_names, mesh_input = mesh_case(volgrid, work, case, data_root)
     w = lambda name: os.path.join(work, name)
     for out, extra in (("mesh.msh", []), ("mesh22.msh", ["--format", "gmsh22"]), ("mesh.su2", []),
                        ("mesh.node", []), ("case", ["--format", "openfoam"]), ("again.mesh", []),
@@ -146,6 +147,10 @@ def main():
     check(q["SevereNonOrthogonalFaces"] == foam["severe_faces"], "same number of faces above 70 deg as checkMesh")
     check(abs(q["MaxSkewness"] - foam["max_skewness"]) <= 0.01 * foam["max_skewness"],
           "VolGrid Quality's max skewness matches checkMesh's within 1%")
+    for other in ("mesh.cgns", "mesh.exo", "case"):
+        q2 = json.loads(run(volgrid, "quality", w(other), "--json").stdout)
+        check(all(q2[k] == q[k] for k in ("MaxNonOrthogonality", "SevereNonOrthogonalFaces", "MaxSkewness")),
+              "volgrid quality on %s: the same CFD figures as on the Medit file" % other)
     code, out = R.foam(w("case"), "potentialFoam")
     if code != 0 or "\nEnd" not in out:
         print(out[-3000:])
@@ -186,6 +191,26 @@ def main():
         with open(w("mesh" + ext), "rb") as a, open(w("again" + ext), "rb") as b:
             same = same and a.read() == b.read()
     check(same, "TetGen files written, read back and written again: identical")
+    # `volgrid mesh IN OUT.<ext>` writes every format itself: the same files as the conversions above
+    # (the mesh is deterministic; CGNS compared node by node, HDF5 stamps times).
+    for out, extra in (("mesh.msh", []), ("mesh22.msh", ["--format", "gmsh22"]), ("mesh.su2", []),
+                       ("mesh.node", []), ("case", ["--format", "openfoam"]), ("mesh.cgns", []), ("mesh.exo", [])):
+        direct = "direct-" + out
+        run(volgrid, "mesh", mesh_input[0], w(direct), *(mesh_input[1:] + extra))
+        if out == "case":
+            same = all(open(w("case/constant/polyMesh/" + f), "rb").read() ==
+                       open(w(direct + "/constant/polyMesh/" + f), "rb").read()
+                       for f in ("points", "faces", "owner", "neighbour", "boundary"))
+        elif out == "mesh.cgns":
+            p = subprocess.run(["cgnsdiff", "-d", w(out), w(direct)], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                               text=True)
+            same = p.returncode == 0 and p.stdout.strip() == ""
+        else:
+            exts = (".node", ".ele", ".face") if out == "mesh.node" else ("",)
+            same = all(open(w(out[:-5] + e if e else out), "rb").read() ==
+                       open(w(direct[:-5] + e if e else direct), "rb").read() for e in exts)
+        check(same, "volgrid mesh ... %s: the same mesh as the conversion" % direct)
+
     if case == "wing":
         # OBJ groups become named patches (a tet whose faces are in two `g` groups, one of them twice).
         with open(w("groups.obj"), "w") as f:
