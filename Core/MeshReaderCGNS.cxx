@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cgnslib.h>
 #include <map>
+#include <sys/stat.h>
 
 namespace volgrid
 {
@@ -25,6 +26,14 @@ struct CgnsFile
 Status cgnsFailure(const std::string& path, const std::string& reason)
 {
   return Status::failure(ErrorKind::InvalidOption, "cannot read CGNS file '" + path + "': " + reason);
+}
+
+// A damaged file must not make the reader allocate more than the file could hold: every stored value
+// takes at least one byte (CGNS does not compress).
+cgsize_t countLimit(const std::string& path)
+{
+  struct stat info;
+  return stat(path.c_str(), &info) == 0 ? static_cast<cgsize_t>(std::min<long long>(info.st_size, 2147483647LL)) : 0;
 }
 
 Status readCoordinates(const std::string& path, int file, int zone, cgsize_t numPoints, SolverMesh& mesh)
@@ -64,7 +73,7 @@ Status readSections(const std::string& path, int file, int zone, cgsize_t numPoi
     if (perCell == 0)
       return cgnsFailure(path, "section '" + std::string(name) + "' holds " +
           cg_ElementTypeName(type) + " elements (only TETRA_4 and TRI_3 are read)");
-    if (end < start || dataSize != (end - start + 1) * perCell)
+    if (end < start || dataSize != (end - start + 1) * perCell || dataSize > countLimit(path))
       return cgnsFailure(path, "section '" + std::string(name) + "' has an inconsistent size");
     std::vector<cgsize_t> connectivity(static_cast<size_t>(dataSize));
     if (cg_elements_read(file, 1, zone, section, connectivity.data(), nullptr) != CG_OK)
@@ -108,7 +117,9 @@ Status conditionTriangles(const std::string& path, int file, int zone, int bc, c
     cg_boco_gridlocation_read(file, 1, zone, bc, &location) != CG_OK)
     return cgnsFailure(path, cg_get_error());
   name = text;
-  std::vector<cgsize_t> set(static_cast<size_t>(std::max<cgsize_t>(numSetPoints, 0)));
+  if (numSetPoints < 0 || numSetPoints > countLimit(path))
+    return cgnsFailure(path, "boundary condition '" + name + "' claims " + std::to_string(numSetPoints) + " entries");
+  std::vector<cgsize_t> set(static_cast<size_t>(numSetPoints));
   if (cg_boco_read(file, 1, zone, bc, set.data(), nullptr) != CG_OK)
     return cgnsFailure(path, cg_get_error());
   const bool range = setType == CGNS_ENUMV(PointRange) || setType == CGNS_ENUMV(ElementRange);
@@ -198,6 +209,9 @@ Status readCGNS(const std::string& path, SolverMesh& mesh)
     return cgnsFailure(path, cg_get_error());
   if (zoneType != CGNS_ENUMV(Unstructured))
     return cgnsFailure(path, "zone '" + std::string(zoneName) + "' is structured (a tet mesh is unstructured)");
+  if (size[0] < 4 || size[0] > countLimit(path) / 3)
+    return cgnsFailure(path, "zone '" + std::string(zoneName) + "' claims " + std::to_string(size[0]) +
+        " points, impossible in a file of this size");
   std::map<cgsize_t, int64_t> triangleOf;
   Status s = readCoordinates(path, file.id, 1, size[0], mesh);
   if (s.ok())

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <exodusII.h>
+#include <sys/stat.h>
 
 namespace volgrid
 {
@@ -50,7 +51,7 @@ std::vector<std::string> entityNames(int file, ex_entity_type kind, int count)
   return names;
 }
 
-Status readBlocks(const std::string& path, int file, int numBlocks, int64_t numPoints, SolverMesh& mesh)
+Status readBlocks(const std::string& path, int file, int numBlocks, int64_t numPoints, int numElements, SolverMesh& mesh)
 {
   std::vector<int> ids(static_cast<size_t>(numBlocks));
   if (numBlocks > 0 && ex_get_elem_blk_ids(file, ids.data()) < 0)
@@ -65,6 +66,9 @@ Status readBlocks(const std::string& path, int file, int numBlocks, int64_t numP
     const std::string kind = upper(type);
     if (count == 0)
       continue;
+    if (count < 0 || count > numElements)
+      return exodusFailure(path, "element block " + std::to_string(ids[b]) + " claims " + std::to_string(count) +
+          " elements of " + std::to_string(numElements));
     if (kind.compare(0, 3, "TET") != 0 || perElement != 4)
       return exodusFailure(path, "element block " + std::to_string(ids[b]) + " holds " + type + " elements with " +
           std::to_string(perElement) + " nodes (only 4-node tets are read)");
@@ -119,8 +123,9 @@ Status readSideSets(const std::string& path, int file, int numSets, SolverMesh& 
   for (int k = 0; k < numSets; ++k)
   {
     int numSides = 0, numFactors = 0;
-    if (ex_get_side_set_param(file, ids[k], &numSides, &numFactors) < 0)
-      return exodusFailure(path, "cannot read side set " + std::to_string(ids[k]));
+    if (ex_get_side_set_param(file, ids[k], &numSides, &numFactors) < 0 || numSides < 0 ||
+      numSides > 4 * mesh.numberOfTets())
+      return exodusFailure(path, "cannot read side set " + std::to_string(ids[k]) + " (or it has more sides than the tets)");
     std::vector<int> elements(static_cast<size_t>(numSides)), sides(static_cast<size_t>(numSides));
     if (numSides > 0 && ex_get_side_set(file, ids[k], elements.data(), sides.data()) < 0)
       return exodusFailure(path, "cannot read the sides of side set " + std::to_string(ids[k]));
@@ -156,6 +161,14 @@ Status readExodus(const std::string& path, SolverMesh& mesh)
     return exodusFailure(path, "cannot read the header");
   if (dimensions != 3)
     return exodusFailure(path, std::to_string(dimensions) + "-dimensional (a tet mesh is 3-dimensional)");
+  // A damaged header must not make the reader allocate more than the file could hold (a byte per value).
+  struct stat info;
+  const long long limit = stat(path.c_str(), &info) == 0 ? static_cast<long long>(info.st_size) : 0;
+  if (numPoints < 0 || numElements < 0 || numBlocks < 0 || numSideSets < 0 || 3LL * numPoints > limit ||
+    4LL * numElements > limit || numBlocks > limit || numSideSets > limit)
+    return exodusFailure(path, "the header claims " + std::to_string(numPoints) + " nodes, " +
+        std::to_string(numElements) + " elements, " + std::to_string(numBlocks) + " blocks and " +
+        std::to_string(numSideSets) + " side sets, impossible in a file of this size");
   std::vector<double> xyz[3];
   for (auto& axis : xyz)
     axis.resize(static_cast<size_t>(numPoints));
@@ -164,7 +177,7 @@ Status readExodus(const std::string& path, SolverMesh& mesh)
   for (int i = 0; i < numPoints; ++i)
     for (int axis = 0; axis < 3; ++axis)
       mesh.points.push_back(xyz[axis][i]);
-  Status s = readBlocks(path, file.id, numBlocks, numPoints, mesh);
+  Status s = readBlocks(path, file.id, numBlocks, numPoints, numElements, mesh);
   if (s.ok())
     s = readSideSets(path, file.id, numSideSets, mesh);
   if (s.ok())

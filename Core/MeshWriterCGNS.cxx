@@ -35,10 +35,22 @@ CGNS_ENUMT(BCType_t) bcTypeFor(const std::string& name)
   return CGNS_ENUMV(BCWall);
 }
 
-// CGNS names are at most 32 characters.
+// CGNS names are at most 32 characters (checked by longNameError before anything is written).
 std::string cgnsName(const std::string& name)
 {
   return name.substr(0, 32);
+}
+
+// The first patch or region name CGNS cannot hold whole, as an error message ("" when all fit).
+std::string longNameError(const SolverMesh& mesh)
+{
+  for (int32_t p : distinctLabels(mesh.trianglePatch))
+    if (labelName(mesh.patchNames, p, "patch").size() > 32)
+      return "patch name '" + labelName(mesh.patchNames, p, "patch") + "' is longer than CGNS's 32 characters";
+  for (int32_t r : distinctLabels(mesh.tetRegion))
+    if (labelName(mesh.regionNames, r, "region").size() > 32)
+      return "region name '" + labelName(mesh.regionNames, r, "region") + "' is longer than CGNS's 32 characters";
+  return "";
 }
 
 // Writes the element sections of one label kind: cells of `type` with `perCell` vertices, grouped by
@@ -122,6 +134,10 @@ Status writeCGNS(const std::string& path, const SolverMesh& mesh)
   if (mesh.numberOfPoints() > 2147483647LL || mesh.numberOfTets() + mesh.numberOfTriangles() > 2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
       "cannot write CGNS file '" + path + "': more than 2^31 points or elements (Debian's libcgns is 32-bit)");
+  const std::string tooLong = longNameError(mesh);
+  if (!tooLong.empty())
+    return Status::failure(ErrorKind::InvalidOption, "cannot write CGNS file '" + path + "': " + tooLong +
+        " (rename it with --patch NAME=ID)");
   LibraryOutput out;
   Status s = out.open(path, "CGNS");
   if (!s.ok())

@@ -113,3 +113,14 @@ TEST(MeshFormatsCgnsExodus, UnwritablePathLeavesNoFile)
     EXPECT_TRUE(contents(path).empty());
   }
 }
+
+TEST(MeshFormatsCgnsExodus, CgnsRefusesANameLongerThan32Characters)
+{
+  SolverMesh mesh = twoTets();
+  mesh.patchNames[2] = "a_far_field_name_that_is_longer_than_32";
+  const std::string path = temp("long.cgns");
+  const Status s = writeSolverMesh(path, mesh, MeshFormat::CGNS);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("longer than CGNS's 32 characters"), std::string::npos) << s.message;
+  EXPECT_TRUE(contents(path).empty());
+}
