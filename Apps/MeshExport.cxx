@@ -13,10 +13,10 @@ namespace volgrid
 namespace cli
 {
 const char* const kExportUsage =
-  "Solver output (by OUT's extension: .msh gmsh 4.1, .su2, .mesh Medit, .node/.ele/.face TetGen;\n"
-  ".vtu VTK):\n"
+  "Solver output (by OUT's extension: .msh gmsh 4.1, .su2, .mesh Medit, .node/.ele/.face TetGen,\n"
+  ".cgns CGNS, .exo/.e Exodus II; .vtu VTK):\n"
   "  --format NAME        gmsh | gmsh22 | su2 | openfoam (OUT is a new case directory: OUT/constant/polyMesh)\n"
-  "                       | medit | tetgen | vtu, when the extension does not say it\n"
+  "                       | medit | tetgen | cgns | exodus | vtu, when the extension does not say it\n"
   "  --patch NAME=ID,...  names boundary patches and groups input patch ids under a name, e.g.\n"
   "                       --patch farfield=1,symmetry=2,wing=3,4,5 (new PatchId 1, 2, 3 in that order;\n"
   "                       ids not listed keep their own patch after these)\n"
@@ -79,7 +79,7 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
     format = meshFormatFromName(request.format);
     if (vtk || format != MeshFormat::Unknown)
       return true;
-    std::fprintf(stderr, "volgrid %s: unknown --format '%s' (gmsh, gmsh22, su2, openfoam, medit, tetgen, vtu)\n",
+    std::fprintf(stderr, "volgrid %s: unknown --format '%s' (gmsh, gmsh22, su2, openfoam, medit, tetgen, cgns, exodus, vtu)\n",
       command, request.format.c_str());
     return false;
   }
@@ -89,7 +89,7 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
   if (vtk || format != MeshFormat::Unknown)
     return true;
   std::fprintf(stderr,
-    "volgrid %s: cannot tell the output format of '%s' from its extension '%s' (.vtu .msh .su2 .mesh .node; "
+    "volgrid %s: cannot tell the output format of '%s' from its extension '%s' (.vtu .msh .su2 .mesh .node .cgns .exo; "
     "--format NAME for others, e.g. --format openfoam)\n",
     command, out.c_str(), ext.c_str());
   return false;

@@ -1,12 +1,16 @@
 #include "PointFiles.h"
 
+#include "VolGridConversion.h"
 #include "XmlDataFiles.h"
+
+#include "MeshReader.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkGenericDataObjectReader.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +34,19 @@ bool endsWith(const std::string& s, const std::string& e)
 vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path)
 {
   vtkSmartPointer<vtkDataObject> data;
+  if (volgrid::solverMeshReaderSupports(path))
+  {
+    volgrid::SolverMesh mesh;
+    const volgrid::Status s = volgrid::readSolverMesh(path, mesh);
+    if (!s.ok())
+    {
+      std::fprintf(stderr, "volgrid: %s\n", s.message.c_str());
+      return nullptr;
+    }
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    VolGridFillFromSolverMesh(mesh, grid, nullptr);
+    return grid;
+  }
   if (endsWith(path, ".vtk"))
   {
     vtkNew<vtkGenericDataObjectReader> reader;

@@ -13,7 +13,8 @@ namespace volgrid
 namespace cli
 {
 
-// A .vtk (legacy) or VTK XML data set, or nullptr.
+// A solver mesh (Core/IO/MeshReader.h: .exo .cgns .msh ...; its point fields as point arrays), a .vtk
+// (legacy) or VTK XML data set, or nullptr.
 vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path);
 
 // Points (x,y,z each) and one value per point: text files (.txt .xyz .csv: 'x y z [value]' lines) or any

@@ -1,13 +1,17 @@
-// volgrid refine MESH.vtu OUT.vtu --size-array NAME: adaptivity (paper section 4). An existing tet mesh and
+// volgrid refine MESH OUT --size-array NAME: adaptivity (paper section 4). An existing tet mesh and
 // a target edge length per point (e.g. from a solver's error estimate) -> field points where the target
 // is smaller than the current spacing, then optimisation. The boundary (and the faces between regions of
-// the cell array Region, if present) is kept exactly.
+// the cell array Region, if present) is kept exactly. MESH and OUT may also be solver meshes (.exo with the
+// target as a nodal variable, .msh .su2 .mesh .cgns .node, an OpenFOAM case): the patches are kept.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "MeshExport.h"
 #include "OutputPaths.h"
 #include "PointFiles.h"
 #include "SizeLimit.h"
+#include "SurfaceFile.h"
 #include "VolGridConversion.h"
+#include "VolGridSolverMeshFromGrid.h"
 #include "XmlDataFiles.h"
 
 #include "MeshImprovement.h"
@@ -40,8 +44,12 @@ namespace
 using volgrid::cli::optionUsage;
 namespace option = volgrid::option;
 const std::string kUsage = std::string(
-  "usage: volgrid refine MESH.{vtu,vtk} OUT.vtu --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
-  "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json]\n"
+  "usage: volgrid refine MESH OUT --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
+  "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json] [--format NAME]\n"
+  "  MESH: .vtu/.vtk, or a solver mesh (.exo/.e with NAME a nodal variable, its last time step; .msh .su2\n"
+  "  .mesh .cgns .node or an OpenFOAM case carry no point fields). OUT: .vtu or any solver format of\n"
+  "  `volgrid mesh` (--format NAME where the extension does not say it); the boundary patches of MESH\n"
+  "  (PatchNames and BoundaryFacePatch of a VolGrid .vtu, or the solver file's) are kept by name.\n"
   "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
   "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
   "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
@@ -82,10 +90,35 @@ std::string smallestTarget(const std::vector<double>& target)
   std::snprintf(buffer, sizeof buffer, "%g", smallest);
   return buffer;
 }
+// The input's boundary triangles (unchanged by refinement, same point ids) with their patches and names
+// on the refined grid: BoundaryFacePatch, PatchNames and RegionNames.
+void attachPatches(const volgrid::SolverMesh& patches, vtkUnstructuredGrid* out)
+{
+  std::vector<int32_t> tets;
+  tets.reserve(static_cast<size_t>(4 * out->GetNumberOfCells()));
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts = 0;
+    const vtkIdType* ids = nullptr;
+    out->GetCellPoints(c, npts, ids);
+    for (int k = 0; k < 4; ++k)
+      tets.push_back(static_cast<int32_t>(ids[k]));
+  }
+  out->GetCellData()->AddArray(VolGridBoundaryFacePatch(tets, patches.triangles, patches.trianglePatch));
+  VolGridSetLabelNames(out, "PatchNames", patches.trianglePatch, patches.patchNames, "patch");
+  std::vector<int32_t> regions;
+  for (const auto& entry : patches.regionNames)
+    regions.push_back(entry.first);
+  if (!regions.empty())
+    VolGridSetLabelNames(out, "RegionNames", regions, patches.regionNames, "region");
+}
 } // namespace
 
 int runRefineCommand(int argc, char** argv)
 {
+  volgrid::cli::ExportRequest exportRequest; // --format, --patch-type (MeshExport.h)
+  if (!volgrid::cli::takeExportOptions("refine", argc, argv, exportRequest))
+    return 2;
   std::vector<std::string> positional;
   std::string arrayName;
   bool json = false;
@@ -162,12 +195,19 @@ int runRefineCommand(int argc, char** argv)
   }
   if (positional.size() != 2 || arrayName.empty())
   {
-    std::fprintf(stderr, "volgrid refine: expected MESH.vtu OUT.vtu --size-array NAME\n%s", kUsage.c_str());
+    std::fprintf(stderr, "volgrid refine: expected MESH OUT --size-array NAME\n%s", kUsage.c_str());
     return 2;
   }
 
-  if (const int code = volgrid::cli::checkOutputPath("refine", "OUT", positional[1], { "vtu" }, { positional[0] }))
-    return code;
+  volgrid::MeshFormat format = volgrid::MeshFormat::Unknown;
+  bool vtkOutput = true;
+  if (!volgrid::cli::chooseFormat("refine", positional[1], exportRequest, format, vtkOutput))
+    return 2;
+  // An OpenFOAM case is a directory, checked by its writer.
+  if (format != volgrid::MeshFormat::OpenFOAM)
+    if (const int code = volgrid::cli::checkOutputPath("refine", "OUT", positional[1],
+          { vtkOutput ? std::string("vtu") : volgrid::surfaceFileExtension(positional[1]) }, { positional[0] }))
+      return code;
   vtkSmartPointer<vtkDataSet> data = volgrid::cli::readDataSet(positional[0]);
   auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
   if (!grid || grid->GetNumberOfCells() == 0)
@@ -194,6 +234,16 @@ int runRefineCommand(int argc, char** argv)
     grid->GetCellPoints(c, npts, ids);
     for (int k = 0; k < 4; ++k)
       tets.push_back(static_cast<int32_t>(ids[k]));
+  }
+  // The boundary patches, when MESH has them (kept exactly, so they carry over to the output).
+  volgrid::SolverMesh patches;
+  std::string patchError;
+  const bool hasPatches = VolGridSolverMeshFromGrid(grid, patches, patchError);
+  if (!hasPatches && !vtkOutput)
+  {
+    std::fprintf(stderr, "volgrid refine: cannot write a solver mesh from '%s': %s\n", positional[0].c_str(),
+      patchError.c_str());
+    return 1;
   }
   vtkDataArray* sizeArray = grid->GetPointData()->GetArray(arrayName.c_str());
   if (!sizeArray)
@@ -256,10 +306,23 @@ int runRefineCommand(int argc, char** argv)
   vtkIdType cell = 0;
   mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
   out->GetCellData()->AddArray(region);
+  if (hasPatches && boundaryIdentical)
+    attachPatches(patches, out);
   std::string writeError;
   if (!boundaryIdentical)
     std::fprintf(stderr, "volgrid refine: the boundary changed (a bug: please report it); '%s' not written\n",
       positional[1].c_str());
+  else if (!vtkOutput)
+  {
+    volgrid::SolverMesh refined;
+    if (!VolGridSolverMeshFromGrid(out, refined, writeError) ||
+      !volgrid::cli::writeSolverOutput("refine", positional[1], format, refined, exportRequest, json))
+    {
+      if (!writeError.empty())
+        std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());
+      return 1;
+    }
+  }
   else if (!volgrid::cli::writeXmlDataSet(positional[1], out, writeError))
   {
     std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());

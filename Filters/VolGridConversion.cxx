@@ -3,7 +3,9 @@
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkPointData.h"
 #include "vtkIntArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkPolyData.h"
@@ -11,6 +13,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "BoundaryFaceOwners.h"
 #include "Mesher.h"
 #include "TetMesh.h"
 #include "SolverMesh.h"
@@ -110,6 +113,8 @@ void VolGridFillFromMesherResult(
       forced->SetValue(static_cast<vtkIdType>(i), result.tetForced[i]);
     volume->GetCellData()->AddArray(forced);
   }
+  volume->GetCellData()->RemoveArray("BoundaryFacePatch");
+  volume->GetCellData()->AddArray(VolGridBoundaryFacePatch(result.tets, result.boundaryTriangles, result.boundaryPatch));
   if (boundary)
   {
     boundary->SetPoints(points);
@@ -117,6 +122,22 @@ void VolGridFillFromMesherResult(
     boundary->GetCellData()->RemoveArray("PatchId");
     boundary->GetCellData()->AddArray(intArray("PatchId", result.boundaryPatch));
   }
+}
+
+vtkSmartPointer<vtkIntArray> VolGridBoundaryFacePatch(const std::vector<int32_t>& tets,
+  const std::vector<int32_t>& triangles, const std::vector<int32_t>& patches)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName("BoundaryFacePatch");
+  array->SetNumberOfComponents(4);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(tets.size() / 4));
+  array->Fill(-1);
+  std::vector<volgrid::FaceOwner> owners;
+  volgrid::findBoundaryFaceOwners(tets, triangles, owners); // a triangle without a tet has no entry
+  for (size_t t = 0; t < owners.size() && t < patches.size(); ++t)
+    if (owners[t].tet >= 0)
+      array->SetTypedComponent(static_cast<vtkIdType>(owners[t].tet), owners[t].side, patches[t]);
+  return array;
 }
 
 void VolGridSetLabelNames(vtkDataObject* data, const char* arrayName, const std::vector<int32_t>& labels,
@@ -166,4 +187,15 @@ void VolGridFillFromSolverMesh(const volgrid::SolverMesh& mesh, vtkUnstructuredG
   result.boundaryPatch.resize(mesh.triangles.size() / 3, 0);
   VolGridFillFromMesherResult(result, volume, boundary);
   VolGridSetPatchAndRegionNames(result, mesh.patchNames, mesh.regionNames, volume, boundary);
+  for (const auto& field : mesh.pointData)
+  {
+    if (field.second.size() != mesh.points.size() / 3)
+      continue;
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(field.first.c_str());
+    array->SetNumberOfValues(static_cast<vtkIdType>(field.second.size()));
+    for (size_t i = 0; i < field.second.size(); ++i)
+      array->SetValue(static_cast<vtkIdType>(i), field.second[i]);
+    volume->GetPointData()->AddArray(array);
+  }
 }

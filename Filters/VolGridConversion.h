@@ -2,6 +2,7 @@
 #ifndef VolGridConversion_h
 #define VolGridConversion_h
 
+#include "vtkSmartPointer.h"
 #include "vtkType.h"
 #include "vtkVolGridFiltersModule.h" // for export macro
 
@@ -11,6 +12,7 @@
 #include <vector>
 
 class vtkDataObject;
+class vtkIntArray;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 namespace volgrid
@@ -26,7 +28,15 @@ struct SolverMesh;
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillUnstructuredGrid(
   const volgrid::TetMesh& mesh, const std::vector<int32_t>& keptVertices, vtkUnstructuredGrid* grid);
 
-// Fills `volume` with the mesher's points and tets (cell arrays Region and Forced) and `boundary` (may be null) with
+// The cell array BoundaryFacePatch of a tet grid: 4 components, component k the patch of the tet's face
+// that is Exodus II side k + 1 (volgrid::kExodusTetSide: vertices 013, 123, 032, 021, outward), -1 where
+// that face is not a boundary triangle. It carries the patches on the volume output itself, so that a
+// writer given only the volume (ParaView's Save Data) still writes every patch.
+VTKVOLGRIDFILTERS_EXPORT vtkSmartPointer<vtkIntArray> VolGridBoundaryFacePatch(const std::vector<int32_t>& tets,
+  const std::vector<int32_t>& triangles, const std::vector<int32_t>& patches);
+
+// Fills `volume` with the mesher's points and tets (cell arrays Region, Forced and BoundaryFacePatch) and
+// `boundary` (may be null) with
 // the same points and the boundary triangles (cell array PatchId). Replaces their points, cells and the
 // named arrays; other arrays are left to the caller. Forced (unsigned char): 1 where the input surface
 // forces the tet's shape (MesherResult::tetForced).
@@ -51,7 +61,8 @@ VTKVOLGRIDFILTERS_EXPORT void VolGridSetPatchAndRegionNames(const volgrid::Meshe
   vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 
 // A solver's mesh (Core/IO/MeshReader.h) as VTK data: `volume` gets the tets with Region, PatchNames and
-// RegionNames; `boundary` (may be null) the boundary triangles with PatchId and PatchNames.
+// RegionNames and the point fields as point arrays; `boundary` (may be null) the boundary triangles with
+// PatchId and PatchNames.
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromSolverMesh(
   const volgrid::SolverMesh& mesh, vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 

@@ -11,16 +11,18 @@ level="${1:-build}"
 # (its targets name the vtkmodules .so files). Never add libvtk9-dev: it removes python3-paraview/pvpython.
 # zlib1g-dev: Core reads gzip-compressed surfaces (.stl.gz ...). qttools5-dev(-tools), qtxmlpatterns5-dev-tools:
 # Qt5Help, qhelpgenerator and xmlpatterns, for the plugin's XML documentation (the "?" button of each filter's panel).
+# libcgns-dev, libexodusii-dev: Core's CGNS and Exodus II writers and readers.
 packages=(build-essential cmake pkg-config libgtest-dev
   paraview paraview-dev python3-paraview libopenmpi-dev libdouble-conversion-dev libutfcpp-dev
-  zlib1g-dev qttools5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools)
+  zlib1g-dev qttools5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools libcgns-dev libexodusii-dev)
 case "$level" in
   build) ;;
   # openmpi-bin: the pvbatch tests under mpiexec; xvfb, xauth: the ParaView GUI test on a headless machine;
-  # gmsh, python3-gmsh, python3-meshio, openfoam: independent readers of the solver formats;
+  # gmsh, python3-gmsh, python3-meshio (+ python3-netcdf4 for Exodus), openfoam, cgns-convert (cgnscheck):
+  # independent readers of the solver formats;
   # clang, libclang-rt-14-dev: the libFuzzer reader targets (Testing/Fuzz, -fsanitize=fuzzer,address,undefined).
   test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev openmpi-bin xvfb xauth
-    gmsh python3-gmsh python3-meshio openfoam clang libclang-rt-14-dev) ;;
+    gmsh python3-gmsh python3-meshio python3-netcdf4 openfoam cgns-convert clang libclang-rt-14-dev) ;;
   bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac

@@ -1,7 +1,7 @@
 // Solver mesh readers: a tet mesh with its named boundary patches and regions back into a SolverMesh,
 // so that `volgrid convert`, `refine` and `quality` take a solver's mesh. One format per file
 // (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx,
-// MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx). Errors name the file, the line and the problem.
+// MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx, MeshReaderCGNS.cxx, MeshReaderExodus.cxx). Errors name the file, the line and the problem.
 #pragma once
 
 #include "SolverMesh.h"
@@ -15,7 +15,8 @@ namespace volgrid
 // True when readSolverMesh knows the path's extension.
 bool solverMeshReaderSupports(const std::string& path);
 
-// Reads by extension (.mesh, .msh, .su2, .node/.ele/.face), or an OpenFOAM case directory. The mesh is cleared first.
+// Reads by extension (.mesh, .msh, .su2, .node/.ele/.face, .cgns, .exo/.e/.ex2), or an OpenFOAM case
+// directory. The mesh is cleared first.
 Status readSolverMesh(const std::string& path, SolverMesh& mesh);
 
 // Medit .mesh (ASCII): Vertices, Triangles (ref = patch), Tetrahedra (ref = region); other sections
@@ -30,6 +31,11 @@ Status readSU2(const std::string& path, SolverMesh& mesh);
 // TetGen STEM.node/.ele/.face (`path` any of them or the stem): region = first tet attribute (else 1),
 // patch = face marker (else 1); 0- or 1-based as the first node says. No names.
 Status readTetGenVolume(const std::string& path, SolverMesh& mesh);
+// CGNS: the first unstructured zone; TETRA_4 sections are regions (named after the section), boundary
+// conditions over TRI_3 elements (or their vertices) are patches named after the condition.
+Status readCGNS(const std::string& path, SolverMesh& mesh);
+// Exodus II: TETRA element blocks are regions, side sets are patches, both named as in the file.
+Status readExodus(const std::string& path, SolverMesh& mesh);
 // True when `path` is a directory with constant/polyMesh/faces.
 bool isOpenFoamCase(const std::string& path);
 // OpenFOAM polyMesh of CASE (ASCII, tetrahedral cells): patches labelled 1.. in the boundary file's order

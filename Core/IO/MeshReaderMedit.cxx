@@ -63,7 +63,7 @@ bool solverMeshReaderSupports(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
   return ext == "mesh" || ext == "msh" || ext == "su2" || ext == "node" || ext == "ele" || ext == "face" ||
-    isOpenFoamCase(path);
+    ext == "cgns" || ext == "exo" || ext == "e" || ext == "ex2" || isOpenFoamCase(path);
 }
 
 Status readSolverMesh(const std::string& path, SolverMesh& mesh)
@@ -76,10 +76,15 @@ Status readSolverMesh(const std::string& path, SolverMesh& mesh)
     return readGmshVolume(path, mesh);
   if (lowerExtension(path) == "su2")
     return readSU2(path, mesh);
+  if (lowerExtension(path) == "cgns")
+    return readCGNS(path, mesh);
+  const std::string ext = lowerExtension(path);
+  if (ext == "exo" || ext == "e" || ext == "ex2")
+    return readExodus(path, mesh);
   if (solverMeshReaderSupports(path))
     return readTetGenVolume(path, mesh);
   return Status::failure(ErrorKind::InvalidOption,
-    "cannot read a volume mesh from '" + path + "': unknown extension (.mesh .msh .su2 .node)");
+    "cannot read a volume mesh from '" + path + "': unknown extension (.mesh .msh .su2 .node .cgns .exo)");
 }
 
 Status readMeditVolume(const std::string& path, SolverMesh& mesh)

@@ -44,6 +44,10 @@ MeshFormat meshFormatFromName(const std::string& name)
     return MeshFormat::Medit;
   if (n == "tetgen")
     return MeshFormat::TetGen;
+  if (n == "cgns")
+    return MeshFormat::CGNS;
+  if (n == "exodus" || n == "exo" || n == "exodusii")
+    return MeshFormat::Exodus;
   return MeshFormat::Unknown;
 }
 
@@ -62,6 +66,10 @@ MeshFormat meshFormatFromPath(const std::string& path)
     return MeshFormat::Medit;
   if (ext == "node" || ext == "ele" || ext == "face")
     return MeshFormat::TetGen;
+  if (ext == "cgns")
+    return MeshFormat::CGNS;
+  if (ext == "exo" || ext == "e" || ext == "ex2")
+    return MeshFormat::Exodus;
   return MeshFormat::Unknown;
 }
 
@@ -75,6 +83,8 @@ const char* meshFormatName(MeshFormat format)
     case MeshFormat::OpenFOAM: return "OpenFOAM polyMesh";
     case MeshFormat::Medit: return "Medit";
     case MeshFormat::TetGen: return "TetGen";
+    case MeshFormat::CGNS: return "CGNS";
+    case MeshFormat::Exodus: return "Exodus II";
     default: return "unknown";
   }
 }
@@ -106,6 +116,8 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
     case MeshFormat::OpenFOAM: return writeOpenFOAM(path, mesh, options);
     case MeshFormat::Medit: return writeMedit(path, mesh);
     case MeshFormat::TetGen: return writeTetGen(path, mesh);
+    case MeshFormat::CGNS: return writeCGNS(path, mesh);
+    case MeshFormat::Exodus: return writeExodus(path, mesh);
     default: break;
   }
   return Status::failure(ErrorKind::InvalidOption, "no writer for '" + path + "'");

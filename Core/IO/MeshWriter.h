@@ -1,5 +1,6 @@
 // Solver mesh writers: one format per file (MeshWriterGmsh.cxx, MeshWriterSU2.cxx,
-// MeshWriterOpenFOAM.cxx, MeshWriterMedit.cxx, MeshWriterTetGen.cxx), chosen here by name or extension.
+// MeshWriterOpenFOAM.cxx, MeshWriterMedit.cxx, MeshWriterTetGen.cxx, MeshWriterCGNS.cxx,
+// MeshWriterExodus.cxx), chosen here by name or extension.
 // Every writer takes a SolverMesh with normalized labels (SolverMesh.h), writes through OutputFile (no
 // partial file on failure) and returns a Status naming the path and the reason.
 #pragma once
@@ -22,12 +23,15 @@ enum class MeshFormat
   OpenFOAM, // a case directory: CASE/constant/polyMesh/{points,faces,owner,neighbour,boundary}
   Medit,    // .mesh: refs; names in "# VolGrid patch|region LABEL NAME" comment lines
   TetGen,   // .node/.ele/.face (the path is any of them or the stem) with region attributes and markers
+  CGNS,     // .cgns: a section per region and per patch, one boundary condition (and family) per patch
+  Exodus,   // .exo/.e: an element block per region, a side set per patch, names kept
 };
 
 // By --format name: "gmsh"/"msh"/"gmsh41", "gmsh22", "su2", "openfoam"/"polymesh", "medit"/"mesh",
-// "tetgen". Unknown otherwise.
+// "tetgen", "cgns", "exodus"/"exo". Unknown otherwise.
 MeshFormat meshFormatFromName(const std::string& name);
-// By the path's extension (case-insensitive): .msh .su2 .mesh .node/.ele/.face. Unknown otherwise
+// By the path's extension (case-insensitive): .msh .su2 .mesh .node/.ele/.face .cgns .exo/.e/.ex2.
+// Unknown otherwise
 // (OpenFOAM has no extension: it is chosen by name only).
 MeshFormat meshFormatFromPath(const std::string& path);
 
@@ -56,6 +60,9 @@ Status writeSU2(const std::string& path, const SolverMesh& mesh);
 Status writeMedit(const std::string& path, const SolverMesh& mesh);
 // `path` names the stem or any of the three files; all three are written (each atomically).
 Status writeTetGen(const std::string& path, const SolverMesh& mesh);
+Status writeCGNS(const std::string& path, const SolverMesh& mesh);
+// Fails when a boundary triangle is not a face of a tet (a side set lists faces as tet sides).
+Status writeExodus(const std::string& path, const SolverMesh& mesh);
 // `caseDir` must not exist; it is built under a temporary name and renamed when complete. Patch names
 // must be OpenFOAM words.
 Status writeOpenFOAM(const std::string& caseDir, const SolverMesh& mesh, const MeshWriteOptions& options);

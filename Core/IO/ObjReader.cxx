@@ -1,8 +1,9 @@
 // Wavefront OBJ reader: `v` lines (x y z, an optional w or colour ignored), `f` lines (polygons of
 // v, v/t, v/t/n or v//n references; negative references count back from the last vertex), polygons
-// triangulated by ear clipping; `g` groups become named patches (one per distinct name, in order of first
-// appearance; faces before the first `g` are in "default"); texture coordinates, normals, materials and
-// lines are ignored.
+// triangulated by ear clipping; `g` groups and `o` objects become named patches (one per distinct name, in
+// order of first appearance; the latest `g` or `o` statement names the faces that follow, so an object's
+// groups split it and an object without groups is one patch; faces before the first are in "default");
+// texture coordinates, normals, materials and lines are ignored.
 // Strict: every coordinate is a whole finite number ("nan", "1x", "abc" are errors naming the line), and
 // every face reference must name an existing vertex (all bad references are counted, the first named).
 #include "ObjReader.h"
@@ -26,10 +27,10 @@ struct ObjFaces
   std::vector<int64_t> refs;    // vertex references, 1-based after resolving negatives (0: unresolvable)
   std::vector<size_t> starts;   // first ref of each face, plus the end
   std::vector<int64_t> lines;   // line of each face
-  std::vector<int32_t> groups;  // group of each face (-1: before any `g` statement)
+  std::vector<int32_t> groups;  // group of each face (-1: before any `g` or `o` statement)
 };
 
-// `g` statements: the group of the faces that follow, by name.
+// `g` and `o` statements: the group of the faces that follow, by name.
 struct ObjGroups
 {
   std::map<std::string, int32_t> idOfName;
@@ -143,7 +144,7 @@ Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
       s = readVertex(sc, toks, mesh);
     else if (toks[0] == "f" || toks[0] == "fo")
       s = readFace(sc, toks, mesh.numberOfPoints(), groups.current, faces);
-    else if (toks[0] == "g")
+    else if (toks[0] == "g" || toks[0] == "o")
       groups.start(toks, mesh);
     else if (toks[0] == "l" || toks[0] == "p")
       ++info.skippedElements;

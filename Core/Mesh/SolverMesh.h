@@ -7,6 +7,8 @@
 #include "PatchNames.h"
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace volgrid
@@ -21,6 +23,9 @@ struct SolverMesh
   std::vector<int32_t> trianglePatch;  // one per boundary triangle
   NameTable patchNames;                // patch label -> name
   NameTable regionNames;               // region label -> name
+  // Point fields by name, one value per point (a solver's target size, ...): kept by the formats that
+  // hold them (Exodus II nodal variables), ignored by the others.
+  std::map<std::string, std::vector<double>> pointData;
 
   int64_t numberOfPoints() const { return static_cast<int64_t>(points.size() / 3); }
   int64_t numberOfTets() const { return static_cast<int64_t>(tets.size() / 4); }

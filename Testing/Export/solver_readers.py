@@ -1,6 +1,7 @@
 """Independent readers of VolGrid's solver files: each returns (points, tets, {patch name: faces}) as the
 reader saw them. None of this code parses the files itself: meshio, gmsh's own API and OpenFOAM do."""
 import collections
+import json
 import os
 import re
 import subprocess
@@ -43,6 +44,33 @@ def meshio_su2(path):
 def meshio_tetgen(path):
     m = meshio.read(path)
     return len(m.points), _count(m, "tetra")
+
+
+def meshio_exodus(path):
+    """meshio 7.0 reads Exodus element blocks (not side sets): points and tets."""
+    m = meshio.read(path)
+    return len(m.points), _count(m, "tetra")
+
+
+PVPYTHON = os.environ.get("VOLGRID_PVPYTHON", "/usr/bin/pvpython")
+
+
+def paraview_reader(kind, path):
+    """ParaView's CGNS or Exodus II reader (paraview_readers.py under pvpython): (points, tets, faces)."""
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "paraview_readers.py")
+    p = subprocess.run([PVPYTHON, script, kind, path], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    lines = [l for l in p.stdout.splitlines() if l.startswith("{")]
+    if p.returncode != 0 or not lines:
+        print(p.stdout + p.stderr)
+        return None
+    r = json.loads(lines[-1])
+    return r["points"], r["tets"], r["patches"]
+
+
+def cgnscheck(path):
+    """cgns-convert's cgnscheck: (exit code, output); a valid file prints no ERROR line."""
+    p = subprocess.run(["cgnscheck", path], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    return p.returncode, p.stdout
 
 
 def gmsh_api(path):

@@ -1,8 +1,9 @@
 """Solver hand-off end to end: a VolGrid mesh written as gmsh 4.1 and 2.2, SU2, Medit, TetGen and an
-OpenFOAM case, each read back by a reader VolGrid did not write (meshio, gmsh's API, OpenFOAM's checkMesh),
+OpenFOAM case, CGNS and Exodus II, each read back by a reader VolGrid did not write (meshio, gmsh's API,
+OpenFOAM's checkMesh, cgns-convert's cgnscheck, ParaView's CGNS and Exodus readers),
 which must report the same points, tets and patch names with the same face counts; OpenFOAM's
 potentialFoam runs on the case; VolGrid Quality's non-orthogonality and skewness match checkMesh's; Medit,
-gmsh, SU2, TetGen and OpenFOAM files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
+gmsh, SU2, TetGen, OpenFOAM, CGNS and Exodus files read and written again are identical; bad requests fail cleanly. Usage: test_solver_export.py VOLGRID WORKDIR wing|onera [DATA_ROOT]
 Exit 77 (skip) when the ONERA M6 domain is missing (a clone without ../shared/data/real)."""
 import json
 import os
@@ -33,21 +34,22 @@ def run(volgrid, *args, expect=0):
 
 
 def mesh_case(volgrid, work, case, data_root):
-    """Meshes the case into WORK/domain.mesh; returns the expected patch names."""
+    """Meshes the case into WORK/domain.mesh; returns the expected patch names and the `volgrid mesh`
+    input and options that made it."""
     if case == "wing":
         stl = os.path.join(HERE, "..", "Data", "straight_wing.stl")
         run(volgrid, "prep", stl, os.path.join(work, "domain.vtk"), "--enclosure", "sphere",
             "--enclosure-scale", "10")
         run(volgrid, "mesh", os.path.join(work, "domain.vtk"), os.path.join(work, "domain.mesh"))
-        return {"straight_wing", "farfield"}
+        return {"straight_wing", "farfield"}, [os.path.join(work, "domain.vtk")]
     src = os.path.join(data_root, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
     if not os.path.exists(src):
         print("SKIP: %s is missing (the real corpus ../shared/data/real is not on this machine)" % src)
         raise SystemExit(SKIP)
     # Refs of the CAD faces: 1 the far-field sphere, 2 the symmetry plane y = 0, 3..12 the wing.
-    run(volgrid, "mesh", src, os.path.join(work, "domain.mesh"),
-        "--patch", "farfield=1,symmetry=2,wing=3,4,5,6,7,8,9,10,11,12")
-    return {"wing", "symmetry", "farfield"}
+    patches = ["--patch", "farfield=1,symmetry=2,wing=3,4,5,6,7,8,9,10,11,12"]
+    run(volgrid, "mesh", src, os.path.join(work, "domain.mesh"), *patches)
+    return {"wing", "symmetry", "farfield"}, [src] + patches
 
 
 def write_potential_case(case):
@@ -85,10 +87,11 @@ def main():
     data_root = sys.argv[4] if len(sys.argv) > 4 else ""
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    expected_names = mesh_case(volgrid, work, case, data_root)
+    expected_names, mesh_input = mesh_case(volgrid, work, case, data_root)
     w = lambda name: os.path.join(work, name)
     for out, extra in (("mesh.msh", []), ("mesh22.msh", ["--format", "gmsh22"]), ("mesh.su2", []),
-                       ("mesh.node", []), ("case", ["--format", "openfoam"]), ("again.mesh", [])):
+                       ("mesh.node", []), ("case", ["--format", "openfoam"]), ("again.mesh", []),
+                       ("mesh.cgns", []), ("mesh.exo", [])):
         run(volgrid, "convert", w("domain.mesh"), w(out), *extra)
 
     # The reference: gmsh's own API on the 4.1 file (names and face counts per physical group).
@@ -107,6 +110,14 @@ def main():
     medit = R.meshio_medit(w("domain.mesh"), {})
     check(medit[:2] == (points, tets) and sorted(medit[2].values()) == sorted(faces.values()),
           "meshio on the Medit file: same counts, same faces per ref")
+
+    code, out = R.cgnscheck(w("mesh.cgns"))
+    check(code == 0 and "ERROR" not in out.upper().replace("0 ERRORS", ""), "cgnscheck: the CGNS file is valid")
+    check(R.paraview_reader("cgns", w("mesh.cgns")) == (points, tets, faces),
+          "ParaView's CGNS reader: same points, tets, patch names and faces (one BC per patch)")
+    check(R.paraview_reader("exodus", w("mesh.exo")) == (points, tets, faces),
+          "ParaView's Exodus II reader: same points, tets, side set names and faces")
+    check(R.meshio_exodus(w("mesh.exo")) == (points, tets), "meshio on the Exodus II file: same counts")
 
     write_potential_case(w("case"))
     foam = R.check_mesh(w("case"))
@@ -136,6 +147,12 @@ def main():
     check(q["SevereNonOrthogonalFaces"] == foam["severe_faces"], "same number of faces above 70 deg as checkMesh")
     check(abs(q["MaxSkewness"] - foam["max_skewness"]) <= 0.01 * foam["max_skewness"],
           "VolGrid Quality's max skewness matches checkMesh's within 1%")
+    # An OpenFOAM case lists each face's vertices in another order: the same figures up to the last bit.
+    for other in ("mesh.cgns", "mesh.exo", "case"):
+        q2 = json.loads(run(volgrid, "quality", w(other), "--json").stdout)
+        check(q2["SevereNonOrthogonalFaces"] == q["SevereNonOrthogonalFaces"] and
+              all(abs(q2[k] - q[k]) <= 1e-12 * abs(q[k]) for k in ("MaxNonOrthogonality", "MaxSkewness")),
+              "volgrid quality on %s: the same CFD figures as on the Medit file" % other)
     code, out = R.foam(w("case"), "potentialFoam")
     if code != 0 or "\nEnd" not in out:
         print(out[-3000:])
@@ -152,6 +169,18 @@ def main():
         run(volgrid, "convert", w(src), w(dst), *extra)
         with open(w(src), "rb") as a, open(w(dst), "rb") as b:
             check(a.read() == b.read(), "%s written, read back and written again: identical" % src)
+    run(volgrid, "convert", w("mesh.exo"), w("again.exo"))
+    with open(w("mesh.exo"), "rb") as a, open(w("again.exo"), "rb") as b:
+        check(a.read() == b.read(), "Exodus II written, read back and written again: identical")
+    # HDF5 stamps each object with its creation time, so two CGNS files of the same mesh differ in bytes:
+    # cgnsdiff compares every node and its data; the Medit file from the re-read CGNS file must be the original.
+    run(volgrid, "convert", w("mesh.cgns"), w("again.cgns"))
+    p = subprocess.run(["cgnsdiff", "-d", w("mesh.cgns"), w("again.cgns")], stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    check(p.returncode == 0 and p.stdout.strip() == "", "CGNS written, read back and written again: identical nodes and data")
+    run(volgrid, "convert", w("again.cgns"), w("from-cgns.mesh"))
+    with open(w("domain.mesh"), "rb") as a, open(w("from-cgns.mesh"), "rb") as b:
+        check(a.read() == b.read(), "Medit file from the re-read CGNS file: identical to the original")
     run(volgrid, "convert", w("case"), w("case-again"), "--format", "openfoam")
     same = True
     for f in ("points", "faces", "owner", "neighbour", "boundary"):
@@ -164,6 +193,26 @@ def main():
         with open(w("mesh" + ext), "rb") as a, open(w("again" + ext), "rb") as b:
             same = same and a.read() == b.read()
     check(same, "TetGen files written, read back and written again: identical")
+    # `volgrid mesh IN OUT.<ext>` writes every format itself: the same files as the conversions above
+    # (the mesh is deterministic; CGNS compared node by node, HDF5 stamps times).
+    for out, extra in (("mesh.msh", []), ("mesh22.msh", ["--format", "gmsh22"]), ("mesh.su2", []),
+                       ("mesh.node", []), ("case", ["--format", "openfoam"]), ("mesh.cgns", []), ("mesh.exo", [])):
+        direct = "direct-" + out
+        run(volgrid, "mesh", mesh_input[0], w(direct), *(mesh_input[1:] + extra))
+        if out == "case":
+            same = all(open(w("case/constant/polyMesh/" + f), "rb").read() ==
+                       open(w(direct + "/constant/polyMesh/" + f), "rb").read()
+                       for f in ("points", "faces", "owner", "neighbour", "boundary"))
+        elif out == "mesh.cgns":
+            p = subprocess.run(["cgnsdiff", "-d", w(out), w(direct)], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                               text=True)
+            same = p.returncode == 0 and p.stdout.strip() == ""
+        else:
+            exts = (".node", ".ele", ".face") if out == "mesh.node" else ("",)
+            same = all(open(w(out[:-5] + e if e else out), "rb").read() ==
+                       open(w(direct[:-5] + e if e else direct), "rb").read() for e in exts)
+        check(same, "volgrid mesh ... %s: the same mesh as the conversion" % direct)
+
     if case == "wing":
         # OBJ groups become named patches (a tet whose faces are in two `g` groups, one of them twice).
         with open(w("groups.obj"), "w") as f:
@@ -171,6 +220,12 @@ def main():
                     "g wing upper\nf 2 3 4\n")
         run(volgrid, "mesh", w("groups.obj"), w("groups.msh"), "--no-field-points")
         check(R.gmsh_api(w("groups.msh"))[2] == {"wing upper": 3, "tip": 1}, "OBJ groups are named patches")
+        # OBJ objects too (Blender writes `o` and no `g`); a `g` inside an object names the faces after it.
+        with open(w("objects.obj"), "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\no Wing\nf 1 3 2\nf 1 2 4\no Tip\nf 1 4 3\n"
+                    "g Tip_cap\nf 2 3 4\n")
+        run(volgrid, "mesh", w("objects.obj"), w("objects.msh"), "--no-field-points")
+        check(R.gmsh_api(w("objects.msh"))[2] == {"Wing": 2, "Tip": 1, "Tip_cap": 1}, "OBJ objects are named patches")
     bad = run(volgrid, "convert", w("domain.mesh"), w("out.xyz"), expect=2)
     check(not os.path.exists(w("out.xyz")) and "extension" in bad.stderr, "unknown extension: clear error, no file")
     bad = run(volgrid, "convert", w("domain.mesh"), w("case"), "--format", "openfoam", expect=1)

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -71,4 +72,18 @@ TEST(ObjReader, ZeroAndGarbageReferencesAreErrors)
   EXPECT_FALSE(readSurface(writeObj("garbage", std::string(kTet) + "f 1 x 2\n"), m).ok());
   EXPECT_FALSE(readSurface(writeObj("two", std::string(kTet) + "f 1 2\n"), m).ok());
   EXPECT_FALSE(readSurface(writeObj("empty", ""), m).ok());
+}
+
+// `o` objects name patches like `g` groups: the latest of the two names the faces that follow.
+TEST(ObjReader, ObjectsAndGroupsAreNamedPatches)
+{
+  SurfaceMesh m;
+  const Status s = readSurface(
+    writeObj("objects", std::string(kTet) + "o Wing\nf 1 3 2\nf 1 2 4\no Tip\nf 1 4 3\ng Tip_cap\nf 2 3 4\n"), m);
+  ASSERT_TRUE(s.ok()) << s.message;
+  ASSERT_EQ(m.patchIds.size(), 4u);
+  std::vector<std::string> names;
+  for (int32_t id : m.patchIds)
+    names.push_back(m.patchNames.at(id));
+  EXPECT_EQ(names, (std::vector<std::string>{ "Wing", "Wing", "Tip", "Tip_cap" }));
 }

@@ -1,0 +1,157 @@
+// CGNS writer (Debian's libcgns, HDF5): one base, one unstructured zone; the tets in one TETRA_4 section
+// per region (named after the region), then the boundary triangles in one TRI_3 section per patch, and one
+// boundary condition per patch, named after it, over that section's element range (face-centred). Each
+// condition is FamilySpecified, its family (same name) holding the type (wall, symmetry, far field ...):
+// the usual CGNS practice, and the form ParaView's reader takes for every type.
+#include "LibraryOutput.h"
+#include "MeshWriter.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cgnslib.h>
+
+namespace volgrid
+{
+namespace
+{
+bool nameHas(const std::string& name, const char* word)
+{
+  std::string lower(name);
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  return lower.find(word) != std::string::npos;
+}
+
+// The same choice by name as OpenFOAM's patch types (defaultOpenFoamPatchType).
+CGNS_ENUMT(BCType_t) bcTypeFor(const std::string& name)
+{
+  if (nameHas(name, "symmetry"))
+    return CGNS_ENUMV(BCSymmetryPlane);
+  if (nameHas(name, "farfield"))
+    return CGNS_ENUMV(BCFarfield);
+  if (nameHas(name, "inlet"))
+    return CGNS_ENUMV(BCInflow);
+  if (nameHas(name, "outlet"))
+    return CGNS_ENUMV(BCOutflow);
+  return CGNS_ENUMV(BCWall);
+}
+
+// CGNS names are at most 32 characters (checked by longNameError before anything is written).
+std::string cgnsName(const std::string& name)
+{
+  return name.substr(0, 32);
+}
+
+// The first patch or region name CGNS cannot hold whole, as an error message ("" when all fit).
+std::string longNameError(const SolverMesh& mesh)
+{
+  for (int32_t p : distinctLabels(mesh.trianglePatch))
+    if (labelName(mesh.patchNames, p, "patch").size() > 32)
+      return "patch name '" + labelName(mesh.patchNames, p, "patch") + "' is longer than CGNS's 32 characters";
+  for (int32_t r : distinctLabels(mesh.tetRegion))
+    if (labelName(mesh.regionNames, r, "region").size() > 32)
+      return "region name '" + labelName(mesh.regionNames, r, "region") + "' is longer than CGNS's 32 characters";
+  return "";
+}
+
+// Writes the element sections of one label kind: cells of `type` with `perCell` vertices, grouped by
+// label in ascending order, numbered from `next`. Returns each group's first and last element number.
+bool writeSections(int file, int base, int zone, CGNS_ENUMT(ElementType_t) type, int perCell,
+  const std::vector<int32_t>& cells, const std::vector<int32_t>& labels, const NameTable& names,
+  const char* prefix, cgsize_t& next, std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
+{
+  for (int32_t label : distinctLabels(labels))
+  {
+    std::vector<cgsize_t> connectivity;
+    for (size_t c = 0; c < labels.size(); ++c)
+      if (labels[c] == label)
+        for (int k = 0; k < perCell; ++k)
+          connectivity.push_back(static_cast<cgsize_t>(cells[perCell * c + k]) + 1);
+    const cgsize_t count = static_cast<cgsize_t>(connectivity.size() / perCell);
+    int section = 0;
+    if (cg_section_write(file, base, zone, cgnsName(labelName(names, label, prefix)).c_str(), type, next,
+          next + count - 1, 0, connectivity.data(), &section) != CG_OK)
+      return false;
+    ranges.emplace_back(next, next + count - 1);
+    next += count;
+  }
+  return true;
+}
+
+bool writeBoundaryConditions(int file, int base, int zone, const SolverMesh& mesh,
+  const std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
+{
+  const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
+  for (size_t k = 0; k < patches.size(); ++k)
+  {
+    const std::string name = cgnsName(labelName(mesh.patchNames, patches[k], "patch"));
+    int family = 0, familyBC = 0, bc = 0;
+    cgsize_t range[2] = { ranges[k].first, ranges[k].second };
+    if (cg_family_write(file, base, name.c_str(), &family) != CG_OK ||
+      cg_fambc_write(file, base, family, name.c_str(), bcTypeFor(name), &familyBC) != CG_OK ||
+      cg_boco_write(file, base, zone, name.c_str(), CGNS_ENUMV(FamilySpecified), CGNS_ENUMV(PointRange), 2, range,
+        &bc) != CG_OK ||
+      cg_boco_gridlocation_write(file, base, zone, bc, CGNS_ENUMV(FaceCenter)) != CG_OK ||
+      cg_goto(file, base, "Zone_t", zone, "ZoneBC_t", 1, "BC_t", bc, "end") != CG_OK ||
+      cg_famname_write(name.c_str()) != CG_OK)
+      return false;
+  }
+  return true;
+}
+
+bool writeZone(int file, const SolverMesh& mesh)
+{
+  int base = 0, zone = 0, coordinate = 0;
+  cgsize_t size[3] = { static_cast<cgsize_t>(mesh.numberOfPoints()), static_cast<cgsize_t>(mesh.numberOfTets()), 0 };
+  if (cg_base_write(file, "Base", 3, 3, &base) != CG_OK ||
+    cg_zone_write(file, base, "Zone", size, CGNS_ENUMV(Unstructured), &zone) != CG_OK ||
+    cg_goto(file, base, "end") != CG_OK || cg_dataclass_write(CGNS_ENUMV(NormalizedByUnknownDimensional)) != CG_OK)
+    return false; // the data class: the coordinates are in the input's (unknown) units
+  static const char* const axes[3] = { "CoordinateX", "CoordinateY", "CoordinateZ" };
+  std::vector<double> values(static_cast<size_t>(mesh.numberOfPoints()));
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (size_t i = 0; i < values.size(); ++i)
+      values[i] = mesh.points[3 * i + axis];
+    // Coordinates are lengths: exponent 1 of length (mass, length, time, temperature, angle).
+    const float lengthExponents[5] = { 0, 1, 0, 0, 0 };
+    if (cg_coord_write(file, base, zone, CGNS_ENUMV(RealDouble), axes[axis], values.data(), &coordinate) != CG_OK ||
+      cg_goto(file, base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", coordinate, "end") != CG_OK ||
+      cg_exponents_write(CGNS_ENUMV(RealSingle), lengthExponents) != CG_OK)
+      return false;
+  }
+  cgsize_t next = 1;
+  std::vector<std::pair<cgsize_t, cgsize_t>> tetRanges, triangleRanges;
+  return writeSections(file, base, zone, CGNS_ENUMV(TETRA_4), 4, mesh.tets, mesh.tetRegion, mesh.regionNames,
+           "region", next, tetRanges) &&
+    writeSections(file, base, zone, CGNS_ENUMV(TRI_3), 3, mesh.triangles, mesh.trianglePatch, mesh.patchNames,
+      "patch", next, triangleRanges) &&
+    writeBoundaryConditions(file, base, zone, mesh, triangleRanges);
+}
+} // namespace
+
+Status writeCGNS(const std::string& path, const SolverMesh& mesh)
+{
+  if (mesh.numberOfPoints() > 2147483647LL || mesh.numberOfTets() + mesh.numberOfTriangles() > 2147483647LL)
+    return Status::failure(ErrorKind::InvalidOption,
+      "cannot write CGNS file '" + path + "': more than 2^31 points or elements (Debian's libcgns is 32-bit)");
+  const std::string tooLong = longNameError(mesh);
+  if (!tooLong.empty())
+    return Status::failure(ErrorKind::InvalidOption, "cannot write CGNS file '" + path + "': " + tooLong +
+        " (rename it with --patch NAME=ID)");
+  LibraryOutput out;
+  Status s = out.open(path, "CGNS");
+  if (!s.ok())
+    return s;
+  int file = 0;
+  if (cg_open(out.temporaryPath().c_str(), CG_MODE_WRITE, &file) != CG_OK)
+    return out.failure(cg_get_error());
+  const bool written = writeZone(file, mesh);
+  const std::string error = written ? "" : cg_get_error();
+  if (cg_close(file) != CG_OK && written)
+    return out.failure(cg_get_error());
+  if (!written)
+    return out.failure(error);
+  return out.commit();
+}
+
+} // namespace volgrid
