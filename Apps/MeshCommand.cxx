@@ -368,12 +368,14 @@ int runMeshCommand(int argc, char** argv)
   // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
   volgrid::TetMesh outMesh;
   volgrid::DihedralSummary dihedral;
-  if (volgrid::tetMeshFromTets(result.points, result.tets, outMesh).ok())
-    dihedral = volgrid::summarizeDihedrals(outMesh);
   // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
   const double gradation = args.options.improvement.sizing.gradation;
-  const volgrid::SizeRatioSummary ratio =
-    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, gradation);
+  volgrid::SizeRatioSummary ratio;
+  if (volgrid::tetMeshFromTets(result.points, result.tets, outMesh).ok())
+  {
+    dihedral = volgrid::summarizeDihedrals(outMesh);
+    ratio = volgrid::summarizeSizeRatios(outMesh, gradation);
+  }
   if (args.json)
   {
     const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };

@@ -1,5 +1,7 @@
 #include "SizeRatio.h"
 
+#include "TetMesh.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,6 +25,11 @@ double meanEdge(const double* points, const int32_t* t)
   return sum / 6;
 }
 
+double ratioOf(double a, double b)
+{
+  return std::max(a, b) / std::max(std::min(a, b), 1e-300);
+}
+
 // One face of one tet: the sorted vertex ids and the tet.
 struct Face
 {
@@ -36,6 +43,17 @@ double percentile(std::vector<float>& r, double q)
   const size_t k = std::min(r.size() - 1, static_cast<size_t>(q * static_cast<double>(r.size())));
   std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(k), r.end());
   return r[k];
+}
+
+// Fills s from the ratios (reordered).
+void summarize(std::vector<float>& ratios, SizeRatioSummary& s)
+{
+  s.faces = static_cast<int64_t>(ratios.size());
+  if (ratios.empty())
+    return;
+  s.max = *std::max_element(ratios.begin(), ratios.end());
+  s.p99 = percentile(ratios, 0.99);
+  s.median = percentile(ratios, 0.5);
 }
 } // namespace
 
@@ -63,18 +81,39 @@ SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, 
   {
     if (faces[k].v != faces[k + 1].v)
       continue;
-    const double a = size[faces[k].tet], b = size[faces[k + 1].tet];
-    const double r = std::max(a, b) / std::max(std::min(a, b), 1e-300);
+    const double r = ratioOf(size[faces[k].tet], size[faces[k + 1].tet]);
     ratios.push_back(static_cast<float>(r));
     s.aboveThreshold += threshold > 0 && r > threshold;
     ++k; // a face is shared by at most two tets in a valid mesh
   }
-  s.faces = static_cast<int64_t>(ratios.size());
-  if (ratios.empty())
-    return s;
-  s.max = *std::max_element(ratios.begin(), ratios.end());
-  s.p99 = percentile(ratios, 0.99);
-  s.median = percentile(ratios, 0.5);
+  summarize(ratios, s);
+  return s;
+}
+
+SizeRatioSummary summarizeSizeRatios(const TetMesh& mesh, double threshold)
+{
+  SizeRatioSummary s;
+  std::vector<double> size(static_cast<size_t>(mesh.tetCapacity()), 0);
+  mesh.forEachTet([&](int32_t t) {
+    if (!mesh.isGhost(t))
+      size[t] = meanEdge(mesh.points.data(), mesh.vertices(t));
+  });
+  std::vector<float> ratios;
+  ratios.reserve(2 * static_cast<size_t>(mesh.numTets()));
+  mesh.forEachTet([&](int32_t t) {
+    if (mesh.isGhost(t))
+      return;
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = mesh.neighbor(t, i);
+      if (u < t || mesh.isGhost(u)) // no neighbour (< 0), or the face is counted from its lower tet
+        continue;
+      const double r = ratioOf(size[t], size[u]);
+      ratios.push_back(static_cast<float>(r));
+      s.aboveThreshold += threshold > 0 && r > threshold;
+    }
+  });
+  summarize(ratios, s);
   return s;
 }
 

@@ -13,6 +13,8 @@
 namespace volgrid
 {
 
+class TetMesh;
+
 struct SizeRatioSummary
 {
   int64_t faces = 0;          // interior faces measured
@@ -22,5 +24,7 @@ struct SizeRatioSummary
 
 // points: xyz per point; tets: 4 point ids per tet. Threshold <= 0: aboveThreshold stays 0.
 SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets, double threshold = 0);
+// The same over a mesh with adjacency (faces with a neighbour; ghost tets, if any, are skipped).
+SizeRatioSummary summarizeSizeRatios(const TetMesh& mesh, double threshold = 0);
 
 } // namespace volgrid

@@ -1,6 +1,9 @@
 // SizeRatio.h: the size ratio between face-neighbouring tets (size = mean edge length).
 #include "SizeRatio.h"
 
+#include "MeshImprovement.h"
+#include "TetMesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -53,4 +56,21 @@ TEST(SizeRatio, NoInteriorFace)
   EXPECT_EQ(s.faces, 0);
   EXPECT_EQ(s.p99, 1.0);
   EXPECT_EQ(s.max, 1.0);
+}
+
+TEST(SizeRatio, MeshWithAdjacencyGivesTheSameFigures)
+{
+  // Three tets in a fan around the z axis edge (0, 3), plus one below: four interior faces.
+  const std::vector<double> p = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, -0.2, 0, 0.3, 0.2, -2 };
+  const std::vector<int32_t> t = { 0, 1, 2, 3, 0, 2, 4, 3, 0, 4, 1, 3, 0, 2, 1, 5 };
+  TetMesh mesh;
+  ASSERT_TRUE(tetMeshFromTets(p, t, mesh).ok());
+  const SizeRatioSummary flat = summarizeSizeRatios(p.data(), t.data(), 4, 1.2);
+  const SizeRatioSummary adj = summarizeSizeRatios(mesh, 1.2);
+  EXPECT_EQ(flat.faces, 4);
+  EXPECT_EQ(adj.faces, flat.faces);
+  EXPECT_EQ(adj.p99, flat.p99);
+  EXPECT_EQ(adj.max, flat.max);
+  EXPECT_EQ(adj.median, flat.median);
+  EXPECT_EQ(adj.aboveThreshold, flat.aboveThreshold);
 }
