@@ -48,11 +48,13 @@ test-asan: build-asan
 format:
 	find Core Filters Apps Testing -name '*.h' -o -name '*.cxx' | grep -v '^Testing/Data/' | xargs clang-format -i
 
+# Tests labelled "acceptance" check open acceptance lines of issues and fail on today's mesher; they run
+# with `ctest --test-dir build -L acceptance`, not in make test.
 # The three test runs always happen (a failure in one does not hide the others); the target fails if any did.
 test: build build-vtk-only build-asan
 	@status=0; \
 	echo "== ParaView flavour ($(BUILD_DIR)) =="; \
-	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) --timeout 900 || status=1; \
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) --timeout 900 -LE acceptance || status=1; \
 	echo "== VTK-only flavour ($(VTK_ONLY_DIR)) =="; \
 	ctest --test-dir $(VTK_ONLY_DIR) --output-on-failure -j $(JOBS) --timeout 900 || status=1; \
 	echo "== Core under AddressSanitizer + UndefinedBehaviorSanitizer ($(ASAN_DIR)) =="; \

@@ -14,6 +14,7 @@
 #include "Mesher.h"
 #include "OptionValues.h"
 #include "SizeEstimate.h"
+#include "SizeRatio.h"
 #include "SurfaceMesh.h"
 
 #include "vtkNew.h"
@@ -350,8 +351,14 @@ int runMeshCommand(int argc, char** argv)
   // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
   volgrid::TetMesh outMesh;
   volgrid::DihedralSummary dihedral;
+  // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
+  const double gradation = args.options.improvement.sizing.gradation;
+  volgrid::SizeRatioSummary ratio;
   if (volgrid::tetMeshFromTets(result.points, result.tets, outMesh).ok())
+  {
     dihedral = volgrid::summarizeDihedrals(outMesh);
+    ratio = volgrid::summarizeSizeRatios(outMesh, gradation);
+  }
   if (args.json)
   {
     const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
@@ -362,7 +369,10 @@ int runMeshCommand(int argc, char** argv)
                 "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
                 "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
                 "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
-                "\"seconds_improvement\": %.6f, "
+                "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
+                "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
+                "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
+                "\"field_points\": %.6f, \"optimization\": %.6f}, "
                 "\"seconds\": %.6f, "
                 "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
@@ -375,8 +385,10 @@ int runMeshCommand(int argc, char** argv)
       static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
       json(dihedral.minDihedral, "%.4f").c_str(), json(dihedral.maxDihedral, "%.4f").c_str(),
       json(dihedral.shareBelow10(), "%.6g").c_str(), static_cast<long long>(s.improvement.boundaryForcedBelow10),
-      static_cast<long long>(s.forcedTets), s.secondsImprovement,
-      seconds, volgrid::cli::peakResidentMiB());
+      static_cast<long long>(s.forcedTets), ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold),
+      s.secondsImprovement, s.secondsCheck, s.secondsDelaunay, s.secondsRecovery, s.secondsExterior, s.secondsSteiner,
+      s.improvement.secondsSizing, s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds,
+      volgrid::cli::peakResidentMiB());
   }
   else
   {
@@ -389,6 +401,10 @@ int runMeshCommand(int argc, char** argv)
                 "under 10 deg\n",
       static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
       dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
+    std::printf("size ratio between face-neighbouring tets (mean edge length): 99th percentile %.3f, max %.3f; "
+                "%lld of %lld faces above the gradation %.3g\n",
+      ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
+      gradation);
     if (s.forcedTets > 0)
       std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
                   "over 170 deg: cell array Forced)\n",

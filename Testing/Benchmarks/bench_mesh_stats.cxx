@@ -4,11 +4,14 @@
 //   the same for the interior tets (no vertex on the mesh boundary, i.e. on a face held by one tet only:
 //   for a one-region domain the input boundary);
 //   the size ratio between face-neighbouring tets (size = mean edge length; ratio = larger / smaller),
-//   its 99th percentile and maximum over the interior faces.
+//   its 99th percentile and maximum over the interior faces (Core/SizeRatio.h, as volgrid mesh --json);
+//   checkMesh's maximum non-orthogonality and its count of faces above 70 degrees (Core/CfdQuality.h).
 // Reads VTK XML (.vtu) or legacy (.vtk) unstructured grids; cells that are not tets are ignored.
 //
 // usage: volgrid_bench_mesh_stats MESH.{vtu,vtk}
+#include "CfdQuality.h"
 #include "Quality.h"
+#include "SizeRatio.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellTypes.h"
@@ -118,20 +121,6 @@ int main(int argc, char** argv)
     }
   std::sort(faces.begin(), faces.end());
   std::vector<uint8_t> onBoundary(static_cast<size_t>(np), 0);
-  std::vector<double> size(static_cast<size_t>(nt));
-  for (int32_t t = 0; t < nt; ++t)
-  {
-    double sum = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-      {
-        const double *a = P(tets[t][i]), *b = P(tets[t][j]);
-        sum += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-      }
-    size[t] = sum / 6;
-  }
-  std::vector<float> ratios;
-  ratios.reserve(2 * static_cast<size_t>(nt));
   for (size_t k = 0; k < faces.size();)
   {
     size_t e = k + 1;
@@ -140,11 +129,6 @@ int main(int argc, char** argv)
     if (e - k == 1)
       for (int32_t v : faces[k].v)
         onBoundary[v] = 1;
-    else if (e - k == 2)
-    {
-      const double a = size[faces[k].tet], b = size[faces[k + 1].tet];
-      ratios.push_back(static_cast<float>(std::max(a, b) / std::max(std::min(a, b), 1e-300)));
-    }
     k = e;
   }
   faces.clear();
@@ -160,19 +144,20 @@ int main(int argc, char** argv)
     if (!onBoundary[q[0]] && !onBoundary[q[1]] && !onBoundary[q[2]] && !onBoundary[q[3]])
       interior.add(a);
   }
-  double p99 = 1, rmax = 1;
-  if (!ratios.empty())
-  {
-    const size_t k = std::min(ratios.size() - 1, static_cast<size_t>(0.99 * static_cast<double>(ratios.size())));
-    std::nth_element(ratios.begin(), ratios.begin() + static_cast<std::ptrdiff_t>(k), ratios.end());
-    p99 = ratios[k];
-    rmax = *std::max_element(ratios.begin(), ratios.end());
-  }
+  // Size ratio between face neighbours (Core/SizeRatio.h) and checkMesh's non-orthogonality (Core/CfdQuality.h).
+  std::vector<int32_t> flat;
+  flat.reserve(4 * static_cast<size_t>(nt));
+  for (const auto& q : tets)
+    flat.insert(flat.end(), q.begin(), q.end());
+  const volgrid::SizeRatioSummary ratio = volgrid::summarizeSizeRatios(xyz.data(), flat.data(), tets.size());
+  const volgrid::quality::CfdSummary cfd = volgrid::quality::cfdMetrics(xyz, flat, nullptr);
   std::printf("{\"tets\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, \"share_below_10\": %.6g, "
               "\"interior_tets\": %lld, \"interior_min_dihedral\": %.4f, \"interior_max_dihedral\": %.4f, "
-              "\"interior_share_below_10\": %.6g, \"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f}\n",
+              "\"interior_share_below_10\": %.6g, \"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, "
+              "\"max_non_orthogonality\": %.4f, \"severe_non_orthogonal_faces\": %lld}\n",
     static_cast<long long>(all.tets), all.minDihedral, all.maxDihedral,
     all.tets ? double(all.below10) / all.tets : 0.0, static_cast<long long>(interior.tets), interior.minDihedral,
-    interior.maxDihedral, interior.tets ? double(interior.below10) / interior.tets : 0.0, p99, rmax);
+    interior.maxDihedral, interior.tets ? double(interior.below10) / interior.tets : 0.0, ratio.p99, ratio.max,
+    cfd.maxNonOrthogonality, static_cast<long long>(cfd.severelyNonOrthogonalFaces));
   return 0;
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # make bench, scale section (issue 16): quality meshing at scale, every engine in one run.
 # Cases (each a closed domain written once with `volgrid prep`, meshed by every engine):
+#   wing-demo    the bundled wing (Testing/Data/straight_wing.stl) in a sphere 5x its size: `make demo`;
 #   m6-default   the ONERA M6 CFD domain (../shared/data/real/derived-onera-m6), default settings;
 #   m6-1M, m6-5M the same domain with a size cap (--max-edge) giving about 1M and 5M VolGrid tets;
 #   sis          sphere-in-sphere: an icosphere body (r = 1) inside an icosphere far field (r = 10);
@@ -13,7 +14,8 @@
 # the engine's own meshing seconds where it reports them, tets/s, peak RSS (MB, /usr/bin/time), bytes per
 # tet, min and max dihedral, share of tets under 10 deg, the same for the tets with no vertex on the
 # boundary (volgrid_bench_mesh_stats), the size ratio between face neighbours (99th percentile and
-# maximum), and for VolGrid the share of tets it reports as forced by the surface
+# maximum; Core/SizeRatio.h), checkMesh's maximum non-orthogonality and its faces above 70 deg
+# (Core/CfdQuality.h, the same figures as OpenFOAM's checkMesh), and for VolGrid the share of tets it reports as forced by the surface
 # (forced_tets / tets: the cell array Forced of its output).
 #
 #   Testing/Benchmarks/bench_scale.sh [BUILD_DIR] [--cases m6-default,sis,...] [--timeout S]
@@ -43,6 +45,7 @@ m6 = os.path.join(data, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
 # Size caps: about 1M and 5M VolGrid tets on the M6 domain, about 10M on the pypan wing (edit when the
 # sizing changes; the table says what each run really gave).
 CASES = {
+    "wing-demo": {"surface": "wing", "cap": None},
     "m6-default": {"surface": m6, "cap": None},
     "m6-1M": {"surface": m6, "cap": 2.6},
     "m6-5M": {"surface": m6, "cap": 1.5},
@@ -89,6 +92,9 @@ def domain(case):
               "--edge-length", "0.0329", body])
         must([volgrid, "prep", "--enclosure", "sphere", "--center", "0,0,0", "--dimensions", "10", far])
         must([volgrid, "prep", body, far, off])
+    elif src == "wing":
+        must([volgrid, "prep", os.path.join(repo, "Testing", "Data", "straight_wing.stl"), off,
+              "--enclosure", "sphere", "--enclosure-scale", "5"])
     elif src == "pypan":
         wing = os.path.join(data, "aero-pypan", "swept_wing_and_tail.stl") # closed: wing and tail shells
         if not os.path.exists(wing):
@@ -166,18 +172,54 @@ def bench_tetgen(surface, volume_bound):
            "seconds": float(tot.group(1)) - (float(outs.group(1)) if outs else 0.0)}
     return finish(res, vtk, wall, peak)
 
+def off_shells(path):
+    """The shells of a triangulated .off (connected by shared points), largest bounding box first: a list of
+    (points, triangles)."""
+    with open(path) as f:
+        tok = [t for line in f for t in line.split("#")[0].split()]
+    nv, nf = int(tok[1]), int(tok[2])
+    pts = [tuple(map(float, tok[4 + 3 * i:7 + 3 * i])) for i in range(nv)]
+    tris, i = [], 4 + 3 * nv
+    for _ in range(nf):
+        tris.append(tuple(int(x) for x in tok[i + 1:i + 4]))
+        i += 1 + int(tok[i])
+    parent = list(range(nv))
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    for a, b, c in tris:
+        parent[find(b)] = find(a)
+        parent[find(c)] = find(a)
+    groups = {}
+    for t in tris:
+        groups.setdefault(find(t[0]), []).append(t)
+    def extent(ts):
+        vs = [pts[v] for t in ts for v in t]
+        return max(max(p[k] for p in vs) - min(p[k] for p in vs) for k in range(3))
+    return [(pts, ts) for ts in sorted(groups.values(), key=extent, reverse=True)]
+
+def write_stl(path, pts, tris):
+    with open(path, "w") as o:
+        o.write("solid s\n")
+        for t in tris:
+            o.write("facet normal 0 0 0\nouter loop\n%sendloop\nendfacet\n"
+                    % "".join("vertex %.17g %.17g %.17g\n" % pts[v] for v in t))
+        o.write("endsolid s\n")
+
 def bench_gmsh(surface, cap):
     exe = shutil.which("gmsh")
     if not exe:
         return {"engine": "gmsh-hxt", "error": "gmsh not installed"}
     geo = os.path.join(work, "out.gm.geo")
-    shells = [os.path.join(work, n) for n in ("sis_body.off", "sis_far.off")] if surface.endswith("sis.off") else []
+    shells = off_shells(surface)
     with open(geo, "w") as g:
-        if shells:
+        if len(shells) == 2:
             # HXT needs one surface loop per shell here: far field first, then the body (a hole).
             stls = [os.path.join(work, "out.gm%d.stl" % k) for k in range(2)]
-            must([volgrid, "prep", shells[1], stls[0]])
-            must([volgrid, "prep", shells[0], stls[1]])
+            for k, shell in enumerate(shells):
+                write_stl(stls[k], *shell)
             g.write('Merge "%s";\nMerge "%s";\nSurface Loop(1) = {1};\nSurface Loop(2) = {2};\n'
                     'Volume(1) = {1, 2};\nPhysical Volume(1) = {1};\n' % tuple(stls))
         else:
@@ -199,7 +241,8 @@ COLS = [("engine", "%-18s"), ("tets", "%10s"), ("wall_seconds", "%9s"), ("tets_p
         ("peak_mb", "%8s"), ("bytes_per_tet", "%7s"), ("min_dihedral", "%8s"), ("max_dihedral", "%8s"),
         ("share_below_10", "%9s"), ("interior_min_dihedral", "%8s"), ("interior_max_dihedral", "%8s"),
         ("interior_share_below_10", "%9s"), ("forced_share", "%9s"), ("size_ratio_p99", "%7s"),
-        ("size_ratio_max", "%8s")]
+        ("size_ratio_max", "%8s"), ("max_non_orthogonality", "%8s"),
+        ("severe_non_orthogonal_faces", "%7s")]
 lines = ["| case | " + " | ".join(c for c, _ in COLS) + " |", "|" + " --- |" * (len(COLS) + 1)]
 for case in cases:
     if case not in CASES:
