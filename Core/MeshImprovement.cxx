@@ -257,7 +257,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       fc.add(v[0], v[1], v[2]);
   }
   stats.interfaceFaces = static_cast<int64_t>(fc.size());
-  stats.before = summarizeDihedrals(mesh);
+  stats.before = summarizeDihedrals(mesh, options.threads);
   if (tetRegion.size() < static_cast<size_t>(mesh.tetCapacity()))
     tetRegion.resize(static_cast<size_t>(mesh.tetCapacity()), -1);
 
@@ -572,15 +572,16 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       InsertionImprovementOptions io;
       io.rounds = options.insertionRounds;
       io.plateauDegrees = options.optimization.targetDegrees;
+      io.threads = options.threads;
       const int64_t kept =
         improveWorstByInsertion(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, io);
       stats.splitPoints += kept;
     }
-    stats.after = summarizeDihedrals(mesh);
+    stats.after = summarizeDihedrals(mesh, options.threads);
     stats.secondsOptimization = since(t0);
   }
   else
-    stats.after = summarizeDihedrals(mesh);
+    stats.after = summarizeDihedrals(mesh, options.threads);
 
   // Tets below 10 degrees whose four vertices lie on constrained faces: their shape is set by the
   // boundary triangles (no flip or move can change it without touching the boundary).

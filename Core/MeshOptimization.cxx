@@ -1,4 +1,5 @@
 #include "MeshOptimization.h"
+#include "ParallelFor.h"
 
 #include "Predicates.h"
 #include "PredicatesInline.h"
@@ -9,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <thread>
 
 namespace volgrid
 {
@@ -133,7 +133,7 @@ void minMaxDihedral(const double* p0, const double* p1, const double* p2, const 
 }
 } // namespace
 
-DihedralSummary summarizeDihedrals(const TetMesh& mesh)
+DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads)
 {
   // Runs over the whole mesh several times per optimisation and insertion round (a tenth of a second per
   // 800,000 tets): the tet slots are split between threads, the partial summaries merged (min, max and
@@ -158,16 +158,11 @@ DihedralSummary summarizeDihedrals(const TetMesh& mesh)
     }
   };
   const int32_t n = mesh.tetCapacity();
-  const unsigned hw = std::thread::hardware_concurrency();
-  const int threads = n < 50000 ? 1 : static_cast<int>(std::clamp(hw, 1u, 8u));
-  std::vector<DihedralSummary> parts(static_cast<size_t>(threads));
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k)
-    pool.emplace_back(summarize, static_cast<int32_t>(int64_t(n) * k / threads),
-      static_cast<int32_t>(int64_t(n) * (k + 1) / threads), std::ref(parts[static_cast<size_t>(k)]));
-  summarize(0, static_cast<int32_t>(int64_t(n) / threads), parts[0]);
-  for (std::thread& th : pool)
-    th.join();
+  constexpr int64_t kMinPerThread = 25000;
+  std::vector<DihedralSummary> parts(static_cast<size_t>(parallelRanges(threads, n, kMinPerThread)));
+  parallelFor(threads, n, kMinPerThread, [&](int k, int64_t begin, int64_t end) {
+    summarize(static_cast<int32_t>(begin), static_cast<int32_t>(end), parts[static_cast<size_t>(k)]);
+  });
   DihedralSummary s;
   for (const DihedralSummary& p : parts)
   {

@@ -71,7 +71,8 @@ struct DihedralSummary
   int64_t inverted = 0; // exact orient3d <= 0
   double shareBelow10() const { return tets ? double(below10) / tets : 0; }
 };
-DihedralSummary summarizeDihedrals(const TetMesh& mesh);
+// threads: the rule of ParallelFor.h (0 = all cores); the summary is the same for any value.
+DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads = 0);
 
 struct OptimizationReport
 {
