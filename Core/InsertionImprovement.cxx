@@ -31,9 +31,9 @@ double minDihedral(const TetMesh& m, int32_t t)
 
 // The smallest and the largest dihedral angle of the mesh (two angles per tet, not six: this runs twice
 // per round over the whole mesh).
-std::pair<double, double> dihedralRange(const TetMesh& mesh)
+std::pair<double, double> dihedralRange(const TetMesh& mesh, int threads)
 {
-  const DihedralSummary s = summarizeDihedrals(mesh);
+  const DihedralSummary s = summarizeDihedrals(mesh, threads);
   return { s.minDihedral, s.maxDihedral };
 }
 
@@ -170,11 +170,9 @@ public:
       m_.points.resize(m_.points.size() - 3);
       return false;
     }
-    // Insert at the best position, then improve the new tets; restore unless the region improved.
-    TetMesh saved = m_;
-    std::vector<int32_t> savedLabels;
-    if (ed_.labels)
-      savedLabels = *ed_.labels;
+    // Insert at the best position, then improve the new tets; undo (the editor's journal) unless the
+    // region improved.
+    const EditJournal::Mark saved = ed_.journal->mark(m_, ed_.labels);
     std::copy(bestAt_.begin(), bestAt_.end(), m_.points.data() + 3 * static_cast<size_t>(nv_));
     const int32_t start = ed_.locate(m_.point(nv_), t);
     created_.clear();
@@ -186,10 +184,8 @@ public:
     improveAround(qt);
     if (minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_)
       return true;
-    m_ = std::move(saved);
+    ed_.journal->rollback(saved, m_, ed_.labels);
     m_.points.resize(m_.points.size() - 3); // the new point, used by no tet
-    if (ed_.labels)
-      *ed_.labels = std::move(savedLabels);
     ed_.rebuildVertexMap();
     return false;
   }
@@ -383,12 +379,17 @@ private:
         const int32_t* v = m_.vertices(c);
         const int32_t cv[4] = { v[0], v[1], v[2], v[3] };
         for (int32_t u : cv)
-          if (u != nv_ && !isLocked(u) && smoothVertex(ed_, u, smooth) != SmoothMove::None)
+        {
+          if (u == nv_ || isLocked(u))
+            continue;
+          ed_.journal->savePoint(m_, u); // undone with the attempt
+          if (smoothVertex(ed_, u, smooth) != SmoothMove::None)
           {
             ed_.star(u, made);
             created_.insert(created_.end(), made.begin(), made.end());
             changed = true;
           }
+        }
       }
       if (!changed)
         break;
@@ -417,6 +418,8 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   InsertionImprovementReport local;
   InsertionImprovementReport& rep = report ? *report : local;
   TetEditor editor(mesh, constraints, labels);
+  EditJournal journal; // undo of an attempt and of a round (no copy of the mesh)
+  editor.journal = &journal;
   editor.rebuildVertexMap();
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
@@ -459,9 +462,9 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     // A round must raise the smallest angle or leave the largest alone: where the worst tet is forced by
     // the surface (a wedge's 1 degree edge), new points replace it with tets that the sine quality ranks
     // better but whose largest angle reaches 178 degrees, for nothing.
-    const std::pair<double, double> rangeBefore = dihedralRange(mesh);
-    const TetMesh before = mesh;
-    const std::vector<int32_t> labelsBefore = labels ? *labels : std::vector<int32_t>();
+    const std::pair<double, double> rangeBefore = dihedralRange(mesh, options.threads);
+    journal.clear();
+    const EditJournal::Mark before = journal.mark(mesh, labels);
     std::sort(worst.begin(), worst.end());
     quads.clear();
     size_t n = 0;
@@ -492,12 +495,10 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     }
     if (kept == keptBefore)
       break;
-    const std::pair<double, double> rangeAfter = dihedralRange(mesh);
+    const std::pair<double, double> rangeAfter = dihedralRange(mesh, options.threads);
     if (!(rangeAfter.first > rangeBefore.first) && rangeAfter.second > rangeBefore.second)
     {
-      mesh = before;
-      if (labels)
-        *labels = labelsBefore;
+      journal.rollback(before, mesh, labels);
       editor.rebuildVertexMap();
       kept = keptBefore;
       break;
