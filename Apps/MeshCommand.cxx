@@ -365,10 +365,8 @@ int runMeshCommand(int argc, char** argv)
 
   const volgrid::MesherStatistics& s = result.stats;
   // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
-  volgrid::TetMesh outMesh;
-  volgrid::DihedralSummary dihedral;
-  if (volgrid::tetMeshFromTets(result.points, result.tets, outMesh).ok())
-    dihedral = volgrid::summarizeDihedrals(outMesh);
+  const volgrid::DihedralSummary dihedral = volgrid::summarizeDihedrals(result.points.data(), result.tets.data(),
+    nullptr, static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
   if (args.json)
   {
     const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };

@@ -135,18 +135,26 @@ void minMaxDihedral(const double* p0, const double* p1, const double* p2, const 
 
 DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads)
 {
+  return summarizeDihedrals(mesh.points.data(), mesh.tetVertices.data(), mesh.tetFlags.data(), mesh.tetCapacity(),
+    threads);
+}
+
+DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags,
+  int64_t n, int threads)
+{
   // Runs over the whole mesh several times per optimisation and insertion round (a tenth of a second per
   // 800,000 tets): the tet slots are split between threads, the partial summaries merged (min, max and
   // counts, so the result does not depend on the split).
-  auto summarize = [&mesh](int32_t begin, int32_t end, DihedralSummary& s) {
-    for (int32_t t = begin; t < end; ++t)
+  auto point = [points](int32_t v) { return points + 3 * static_cast<size_t>(v); };
+  auto summarize = [&](int64_t begin, int64_t end, DihedralSummary& s) {
+    for (int64_t t = begin; t < end; ++t)
     {
-      if (mesh.isFree(t))
+      if (tetFlags && (tetFlags[t] & TetMesh::kFree))
         continue;
-      const int32_t* w = mesh.vertices(t);
+      const int32_t* w = tetVertices + 4 * t;
       if ((w[0] | w[1] | w[2] | w[3]) < 0)
         continue;
-      const double *a = mesh.point(w[0]), *b = mesh.point(w[1]), *c = mesh.point(w[2]), *d = mesh.point(w[3]);
+      const double *a = point(w[0]), *b = point(w[1]), *c = point(w[2]), *d = point(w[3]);
       double lo, hi;
       minMaxDihedral(a, b, c, d, lo, hi);
       ++s.tets;
@@ -157,12 +165,10 @@ DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads)
       s.inverted += predicates::orient3dInline(a, b, c, d) <= 0;
     }
   };
-  const int32_t n = mesh.tetCapacity();
   constexpr int64_t kMinPerThread = 25000;
   std::vector<DihedralSummary> parts(static_cast<size_t>(parallelRanges(threads, n, kMinPerThread)));
-  parallelFor(threads, n, kMinPerThread, [&](int k, int64_t begin, int64_t end) {
-    summarize(static_cast<int32_t>(begin), static_cast<int32_t>(end), parts[static_cast<size_t>(k)]);
-  });
+  parallelFor(threads, n, kMinPerThread,
+    [&](int k, int64_t begin, int64_t end) { summarize(begin, end, parts[static_cast<size_t>(k)]); });
   DihedralSummary s;
   for (const DihedralSummary& p : parts)
   {

@@ -73,6 +73,10 @@ struct DihedralSummary
 };
 // threads: the rule of ParallelFor.h (0 = all cores); the summary is the same for any value.
 DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads = 0);
+// The same over plain arrays: n tets of 4 vertex ids each (rows with a negative id are skipped), and
+// optional per-tet flags (TetMesh::kFree rows skipped). No adjacency needed.
+DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags,
+  int64_t n, int threads = 0);
 
 struct OptimizationReport
 {
