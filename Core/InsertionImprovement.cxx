@@ -1,6 +1,7 @@
 #include "InsertionImprovement.h"
 
 #include "MeshOptimization.h"
+#include "MeshScan.h"
 #include "MeshSmoothing.h"
 #include "Predicates.h"
 #include "Quality.h"
@@ -431,25 +432,20 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   std::vector<std::array<int32_t, 4>> quads;
   double previousWorst = -3;
   int stale = 0; // rounds in a row after which the mesh's worst tet was no better
+  std::pair<double, double> lastRange{ 0, 0 }; // the dihedral range after the previous round
   for (int round = 0; round < options.rounds; ++round)
   {
     // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound (a tet tried in
     // vain is tried again: the points kept since may have made room). Rounds go on while points are kept and the mesh's worst tet improves at least every second
     // round (two equal worst tets need a round each when the first point pushes into the second's).
-    double q0 = 2;
-    mesh.forEachTet([&](int32_t t) { q0 = std::min(q0, tetQuality(mesh, t)); });
+    const double q0 = minSineQuality(mesh, options.threads);
     stale = q0 > previousWorst ? 0 : stale + 1;
     if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60 || stale >= 2)
       break;
     previousWorst = q0;
     const int64_t keptBefore = kept;
     const double qLimit = degreesToQuality(sineQualityToDegrees(q0) + options.aboveWorst);
-    worst.clear();
-    mesh.forEachTet([&](int32_t t) {
-      const double q = tetQuality(mesh, t);
-      if (q < qLimit)
-        worst.emplace_back(q, t);
-    });
+    collectSineBelow(mesh, qLimit, options.threads, worst);
     // A plateau of many tets near a worst tet already at the optimisation's target gains little per point.
     if (sineQualityToDegrees(q0) >= options.plateauDegrees &&
       static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
@@ -462,7 +458,8 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     // A round must raise the smallest angle or leave the largest alone: where the worst tet is forced by
     // the surface (a wedge's 1 degree edge), new points replace it with tets that the sine quality ranks
     // better but whose largest angle reaches 178 degrees, for nothing.
-    const std::pair<double, double> rangeBefore = dihedralRange(mesh, options.threads);
+    // (The mesh has not changed since the last round's rangeAfter, when there was one.)
+    const std::pair<double, double> rangeBefore = round > 0 ? lastRange : dihedralRange(mesh, options.threads);
     journal.clear();
     const EditJournal::Mark before = journal.mark(mesh, labels);
     std::sort(worst.begin(), worst.end());
@@ -496,6 +493,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     if (kept == keptBefore)
       break;
     const std::pair<double, double> rangeAfter = dihedralRange(mesh, options.threads);
+    lastRange = rangeAfter;
     if (!(rangeAfter.first > rangeBefore.first) && rangeAfter.second > rangeBefore.second)
     {
       journal.rollback(before, mesh, labels);

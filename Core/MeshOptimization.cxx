@@ -1,4 +1,5 @@
 #include "MeshOptimization.h"
+#include "MeshScan.h"
 #include "ParallelFor.h"
 
 #include "Predicates.h"
@@ -341,7 +342,8 @@ namespace
 // quality is under sin(targetDegrees), as optimizeMesh collects them): a tet with an angle under the
 // target is among them, so when their smallest angle is under the target (with a margin far above the
 // rounding of either measure) it is the mesh's. Otherwise a sweep.
-double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees)
+double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees,
+  int threads)
 {
   double m = 180;
   for (const auto& b : below)
@@ -351,7 +353,7 @@ double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double,
     minMaxDihedral(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), lo, hi);
     m = std::min(m, lo);
   }
-  return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh).minDihedral;
+  return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh, threads).minDihedral;
 }
 
 // Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
@@ -399,7 +401,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   OptimizationReport local;
   OptimizationReport& report = reportOut ? *reportOut : local;
   if (options.summaries)
-    report.before = summarizeDihedrals(mesh);
+    report.before = summarizeDihedrals(mesh, options.threads);
   TetEditor editor(mesh, constraints, labels);
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
@@ -413,11 +415,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   // the same (quality, slot) order, as a sweep over the whole mesh, at a cost proportional to the work.
   std::vector<std::pair<double, int32_t>> bad, worst;
   std::vector<int32_t> queue, created, verts, touched, candidates, star;
-  mesh.forEachTet([&](int32_t t) {
-    const double q = tetQ(mesh, t);
-    if (q < qT)
-      bad.emplace_back(q, t);
-  });
+  collectSineBelow(mesh, qT, options.threads, bad);
   std::sort(bad.begin(), bad.end());
   auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out) {
     candidates.clear();
@@ -438,7 +436,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   };
   report.belowTargetBefore = static_cast<int64_t>(bad.size());
   report.minDihedralBefore =
-    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
+    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees, options.threads);
   for (int pass = 0; pass < options.maxPasses && !bad.empty(); ++pass)
   {
     if (progress)
@@ -515,9 +513,9 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   }
   report.belowTargetAfter = static_cast<int64_t>(bad.size());
   if (options.summaries)
-    report.after = summarizeDihedrals(mesh);
+    report.after = summarizeDihedrals(mesh, options.threads);
   report.minDihedralAfter =
-    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
+    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees, options.threads);
   report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return Status::success();
 }

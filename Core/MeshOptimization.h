@@ -57,6 +57,8 @@ struct OptimizationOptions
   // call. false leaves them empty; report.minDihedralBefore/After are set either way (from the tets below
   // the target when the minimum lies among them, else by a sweep).
   bool summaries = true;
+  // Threads for the whole-mesh sweeps (ParallelFor.h: 0 = all cores); the result is the same for any value.
+  int threads = 0;
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
 };
 
