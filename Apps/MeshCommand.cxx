@@ -349,16 +349,12 @@ int runMeshCommand(int argc, char** argv)
 
   const volgrid::MesherStatistics& s = result.stats;
   // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
-  volgrid::TetMesh outMesh;
-  volgrid::DihedralSummary dihedral;
+  const volgrid::DihedralSummary dihedral = volgrid::summarizeDihedrals(result.points.data(), result.tets.data(),
+    nullptr, static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
   // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
   const double gradation = args.options.improvement.sizing.gradation;
-  volgrid::SizeRatioSummary ratio;
-  if (volgrid::tetMeshFromTets(result.points, result.tets, outMesh).ok())
-  {
-    dihedral = volgrid::summarizeDihedrals(outMesh);
-    ratio = volgrid::summarizeSizeRatios(outMesh, gradation);
-  }
+  const volgrid::SizeRatioSummary ratio =
+    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, gradation);
   if (args.json)
   {
     const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };

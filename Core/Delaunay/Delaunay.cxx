@@ -1,4 +1,5 @@
 #include "Delaunay.h"
+#include "ParallelFor.h"
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -13,7 +14,6 @@
 #include <cmath>
 #include <cstring>
 #include <string>
-#include <thread>
 
 namespace volgrid
 {
@@ -49,7 +49,6 @@ bool latticeUnit(const double* xyz, size_t n, double& unit)
   unit = std::ldexp(1.0, lowest);
   return true;
 }
-
 
 // Merge exact duplicates among Hilbert-sorted ids (equal coordinates have equal keys). Fills
 // inputToVertex for the merged ones and removes them from ids; the representative is the lowest id.
@@ -257,8 +256,7 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     return true;
   };
 
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::max(1, std::min(threads, 2));
+  const int threads = std::min(resolveThreads(options.threads), 2); // the kernel splits rounds in two
   int32_t done = 0; // order[0..done) handled
   std::vector<int32_t> rest; // points left over by the parallel stage
   if (threads > 1 && options.location == PointLocation::Walk && roundStarts.size() > 2 &&

@@ -19,8 +19,7 @@
 // per tet). (An in-place cycle-following permutation would need no row array but costs a dependent
 // cache miss per row: several times slower.) Cost: a few linear passes over the tet arrays.
 #include "DelaunayInserterImpl.h"
-
-#include <thread>
+#include "ParallelFor.h"
 
 namespace volgrid
 {
@@ -84,9 +83,7 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
   auto inHalves = [threads](int32_t n, const auto& work) {
     if (threads > 1 && n >= (1 << 16))
     {
-      std::thread helper(work, n / 2, n);
-      work(0, n / 2);
-      helper.join();
+      parallelRun(2, [&](int w) { w == 0 ? work(0, n / 2) : work(n / 2, n); });
     }
     else
       work(0, n);

@@ -1,8 +1,8 @@
 // Two-thread Delaunay construction (buildDelaunay with threads > 1).
 #include "DelaunayInserterImpl.h"
+#include "ParallelFor.h"
 
 #include <memory>
-#include <thread>
 
 namespace volgrid
 {
@@ -73,9 +73,7 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
           inputToVertex[order[k]] = order[res.duplicateOf];
       }
     };
-    std::thread helper(work, 1, mid, b);
-    work(0, a, mid);
-    helper.join();
+    parallelRun(2, [&](int w) { w == 0 ? work(0, a, mid) : work(1, mid, b); });
     for (int i = 0; i < 2; ++i)
       for (int32_t k : deferred[i])
       {

@@ -1,6 +1,7 @@
 #include "InsertionImprovement.h"
 
 #include "MeshOptimization.h"
+#include "MeshScan.h"
 #include "MeshSmoothing.h"
 #include "Predicates.h"
 #include "Quality.h"
@@ -31,9 +32,9 @@ double minDihedral(const TetMesh& m, int32_t t)
 
 // The smallest and the largest dihedral angle of the mesh (two angles per tet, not six: this runs twice
 // per round over the whole mesh).
-std::pair<double, double> dihedralRange(const TetMesh& mesh)
+std::pair<double, double> dihedralRange(const TetMesh& mesh, int threads)
 {
-  const DihedralSummary s = summarizeDihedrals(mesh);
+  const DihedralSummary s = summarizeDihedrals(mesh, threads);
   return { s.minDihedral, s.maxDihedral };
 }
 
@@ -170,11 +171,9 @@ public:
       m_.points.resize(m_.points.size() - 3);
       return false;
     }
-    // Insert at the best position, then improve the new tets; restore unless the region improved.
-    TetMesh saved = m_;
-    std::vector<int32_t> savedLabels;
-    if (ed_.labels)
-      savedLabels = *ed_.labels;
+    // Insert at the best position, then improve the new tets; undo (the editor's journal) unless the
+    // region improved.
+    const EditJournal::Mark saved = ed_.journal->mark(m_, ed_.labels);
     std::copy(bestAt_.begin(), bestAt_.end(), m_.points.data() + 3 * static_cast<size_t>(nv_));
     const int32_t start = ed_.locate(m_.point(nv_), t);
     created_.clear();
@@ -186,10 +185,8 @@ public:
     improveAround(qt);
     if (minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_)
       return true;
-    m_ = std::move(saved);
+    ed_.journal->rollback(saved, m_, ed_.labels);
     m_.points.resize(m_.points.size() - 3); // the new point, used by no tet
-    if (ed_.labels)
-      *ed_.labels = std::move(savedLabels);
     ed_.rebuildVertexMap();
     return false;
   }
@@ -383,12 +380,17 @@ private:
         const int32_t* v = m_.vertices(c);
         const int32_t cv[4] = { v[0], v[1], v[2], v[3] };
         for (int32_t u : cv)
-          if (u != nv_ && !isLocked(u) && smoothVertex(ed_, u, smooth) != SmoothMove::None)
+        {
+          if (u == nv_ || isLocked(u))
+            continue;
+          ed_.journal->savePoint(m_, u); // undone with the attempt
+          if (smoothVertex(ed_, u, smooth) != SmoothMove::None)
           {
             ed_.star(u, made);
             created_.insert(created_.end(), made.begin(), made.end());
             changed = true;
           }
+        }
       }
       if (!changed)
         break;
@@ -417,6 +419,8 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   InsertionImprovementReport local;
   InsertionImprovementReport& rep = report ? *report : local;
   TetEditor editor(mesh, constraints, labels);
+  EditJournal journal; // undo of an attempt and of a round (no copy of the mesh)
+  editor.journal = &journal;
   editor.rebuildVertexMap();
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
@@ -428,25 +432,20 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   std::vector<std::array<int32_t, 4>> quads;
   double previousWorst = -3;
   int stale = 0; // rounds in a row after which the mesh's worst tet was no better
+  std::pair<double, double> lastRange{ 0, 0 }; // the dihedral range after the previous round
   for (int round = 0; round < options.rounds; ++round)
   {
     // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound (a tet tried in
     // vain is tried again: the points kept since may have made room). Rounds go on while points are kept and the mesh's worst tet improves at least every second
     // round (two equal worst tets need a round each when the first point pushes into the second's).
-    double q0 = 2;
-    mesh.forEachTet([&](int32_t t) { q0 = std::min(q0, tetQuality(mesh, t)); });
+    const double q0 = minSineQuality(mesh, options.threads);
     stale = q0 > previousWorst ? 0 : stale + 1;
     if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60 || stale >= 2)
       break;
     previousWorst = q0;
     const int64_t keptBefore = kept;
     const double qLimit = degreesToQuality(sineQualityToDegrees(q0) + options.aboveWorst);
-    worst.clear();
-    mesh.forEachTet([&](int32_t t) {
-      const double q = tetQuality(mesh, t);
-      if (q < qLimit)
-        worst.emplace_back(q, t);
-    });
+    collectSineBelow(mesh, qLimit, options.threads, worst);
     // A plateau of many tets near a worst tet already at the optimisation's target gains little per point.
     if (sineQualityToDegrees(q0) >= options.plateauDegrees &&
       static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
@@ -459,9 +458,10 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     // A round must raise the smallest angle or leave the largest alone: where the worst tet is forced by
     // the surface (a wedge's 1 degree edge), new points replace it with tets that the sine quality ranks
     // better but whose largest angle reaches 178 degrees, for nothing.
-    const std::pair<double, double> rangeBefore = dihedralRange(mesh);
-    const TetMesh before = mesh;
-    const std::vector<int32_t> labelsBefore = labels ? *labels : std::vector<int32_t>();
+    // (The mesh has not changed since the last round's rangeAfter, when there was one.)
+    const std::pair<double, double> rangeBefore = round > 0 ? lastRange : dihedralRange(mesh, options.threads);
+    journal.clear();
+    const EditJournal::Mark before = journal.mark(mesh, labels);
     std::sort(worst.begin(), worst.end());
     quads.clear();
     size_t n = 0;
@@ -492,12 +492,11 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     }
     if (kept == keptBefore)
       break;
-    const std::pair<double, double> rangeAfter = dihedralRange(mesh);
+    const std::pair<double, double> rangeAfter = dihedralRange(mesh, options.threads);
+    lastRange = rangeAfter;
     if (!(rangeAfter.first > rangeBefore.first) && rangeAfter.second > rangeBefore.second)
     {
-      mesh = before;
-      if (labels)
-        *labels = labelsBefore;
+      journal.rollback(before, mesh, labels);
       editor.rebuildVertexMap();
       kept = keptBefore;
       break;

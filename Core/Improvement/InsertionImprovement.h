@@ -41,6 +41,7 @@ struct InsertionImprovementOptions
   // than max(plateauTets, tets / 200) tets are within aboveWorst of it.
   double plateauDegrees = 18.0;
   int64_t plateauTets = 64;
+  int threads = 0; // for the whole-mesh summaries (ParallelFor.h rule; same result for any value)
 };
 
 struct InsertionImprovementReport

@@ -2,6 +2,7 @@
 
 #include "BadTetSplitting.h"
 #include "InsertionImprovement.h"
+#include "MeshScan.h"
 
 #include "Predicates.h"
 
@@ -54,26 +55,15 @@ Status checkOptions(const ImprovementOptions& o)
         option::targetAngle.rangeText() + " and maxPasses in " + option::passes.rangeText() + ".");
   return Status::success();
 }
-// The worst tet's min(theta_min, 180 - theta_max) in degrees.
-double worstSineDegrees(const TetMesh& mesh)
+// The worst tet's min(theta_min, 180 - theta_max) in degrees (a sweep on `threads`, MeshScan.h).
+double worstSineDegrees(const TetMesh& mesh, int threads)
 {
-  double q = 2;
-  mesh.forEachTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    q = std::min(q, tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])));
-  });
-  return sineQualityToDegrees(q);
+  return sineQualityToDegrees(minSineQuality(mesh, threads));
 }
 
-int64_t countBelow(const TetMesh& mesh, double degrees)
+int64_t countBelow(const TetMesh& mesh, double degrees, int threads)
 {
-  const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
-  int64_t n = 0;
-  mesh.forEachTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    n += tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < qT;
-  });
-  return n;
+  return countSineBelow(mesh, std::sin(degrees * 3.14159265358979323846 / 180.0), threads);
 }
 
 // A sizing field sampled on an adaptive octree over a box, with trilinear interpolation in the leaves.
@@ -257,7 +247,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       fc.add(v[0], v[1], v[2]);
   }
   stats.interfaceFaces = static_cast<int64_t>(fc.size());
-  stats.before = summarizeDihedrals(mesh);
+  stats.before = summarizeDihedrals(mesh, options.threads);
   if (tetRegion.size() < static_cast<size_t>(mesh.tetCapacity()))
     tetRegion.resize(static_cast<size_t>(mesh.tetCapacity()), -1);
 
@@ -398,6 +388,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
   {
     const auto t0 = std::chrono::steady_clock::now();
     OptimizationOptions one = options.optimization;
+    one.threads = options.threads;
     one.maxPasses = 1;
     one.vertexRemoval = false; // a second attempt, below
     one.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
@@ -430,12 +421,12 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       {
         if (progress && progress->cancelled())
           return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-        const double worst = worstSineDegrees(mesh);
+        const double worst = worstSineDegrees(mesh, options.threads);
         if (!(worst > 0) || worst >= 60)
           break;
         one.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
         // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
-        if (countBelow(mesh, one.targetDegrees) > std::max<int64_t>(64, mesh.numTets() / 200))
+        if (countBelow(mesh, one.targetDegrees, options.threads) > std::max<int64_t>(64, mesh.numTets() / 200))
           break;
         Status fs = optimise(2);
         if (!fs.ok())
@@ -444,7 +435,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
         fs = optimise(1);
         if (!fs.ok())
           return fs;
-        if (worstSineDegrees(mesh) < worst + 0.05)
+        if (worstSineDegrees(mesh, options.threads) < worst + 0.05)
           break;
       }
       return Status::success();
@@ -494,7 +485,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     s = optimiseSplitFloor();
     if (!s.ok())
       return s;
-    const double worstKept = worstSineDegrees(mesh);
+    const double worstKept = worstSineDegrees(mesh, options.threads);
     const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
     if (removal && worstKept < removalDegrees && hasUnlockedVertexBelow(mesh, fc, clusterLock, removalDegrees))
     {
@@ -509,7 +500,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       if (!s.ok())
         return s;
       one.vertexRemoval = false;
-      if (!(worstSineDegrees(mesh) > worstKept))
+      if (!(worstSineDegrees(mesh, options.threads) > worstKept))
       {
         mesh = std::move(keptMesh);
         tetRegion = std::move(keptRegion);
@@ -528,10 +519,10 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     int speculativeRounds = options.speculativeRounds;
     for (int round = 0, skip = 0; round < speculativeRounds && mesh.numTets() <= 5000; ++round)
     {
-      const double worst = worstSineDegrees(mesh);
+      const double worst = worstSineDegrees(mesh, options.threads);
       if (!(worst > 0) || worst >= 60)
         break;
-      if (countBelow(mesh, std::max(worst + 2.0, options.optimization.targetDegrees)) > kSpeculativeMaxBad)
+      if (countBelow(mesh, std::max(worst + 2.0, options.optimization.targetDegrees), options.threads) > kSpeculativeMaxBad)
         speculativeRounds = std::min(speculativeRounds, kSpeculativeRoundsManyBad);
       const TetMesh savedMesh = mesh;
       const std::vector<int32_t> savedRegion = tetRegion;
@@ -550,7 +541,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
         s = optimise(3);
         if (!s.ok())
           return s;
-        improved = worstSineDegrees(mesh) > worst + 0.01;
+        improved = worstSineDegrees(mesh, options.threads) > worst + 0.01;
       }
       if (improved)
       {
@@ -561,7 +552,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       mesh = savedMesh;
       tetRegion = savedRegion;
       stats.after = savedAfter;
-      if (countBelow(mesh, one.targetDegrees) <= ++skip)
+      if (countBelow(mesh, one.targetDegrees, options.threads) <= ++skip)
         break;
     }
     // What is still worst (typically tets of four boundary vertices on a needle triangle in a thin wedge,
@@ -572,15 +563,16 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       InsertionImprovementOptions io;
       io.rounds = options.insertionRounds;
       io.plateauDegrees = options.optimization.targetDegrees;
+      io.threads = options.threads;
       const int64_t kept =
         improveWorstByInsertion(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, io);
       stats.splitPoints += kept;
     }
-    stats.after = summarizeDihedrals(mesh);
+    stats.after = summarizeDihedrals(mesh, options.threads);
     stats.secondsOptimization = since(t0);
   }
   else
-    stats.after = summarizeDihedrals(mesh);
+    stats.after = summarizeDihedrals(mesh, options.threads);
 
   // Tets below 10 degrees whose four vertices lie on constrained faces: their shape is set by the
   // boundary triangles (no flip or move can change it without touching the boundary).

@@ -86,6 +86,9 @@ struct ImprovementOptions
   // Rounds of vertex insertion as an improvement operation for the worst tets, any mesh size
   // (InsertionImprovement.h; 0 = none).
   int insertionRounds = 12;
+  // Threads for the stage's threaded steps (ParallelFor.h rule: 0 = all cores; meshSurface sets it from
+  // MesherOptions::threads). The result is the same for any value.
+  int threads = 0;
 };
 
 struct ImprovementStatistics

@@ -1,4 +1,6 @@
 #include "MeshOptimization.h"
+#include "MeshScan.h"
+#include "ParallelFor.h"
 
 #include "Predicates.h"
 #include "PredicatesInline.h"
@@ -9,7 +11,6 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <thread>
 
 namespace volgrid
 {
@@ -78,20 +79,28 @@ void minMaxDihedral(const double* p0, const double* p1, const double* p2, const 
 }
 } // namespace
 
-DihedralSummary summarizeDihedrals(const TetMesh& mesh)
+DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads)
+{
+  return summarizeDihedrals(mesh.points.data(), mesh.tetVertices.data(), mesh.tetFlags.data(), mesh.tetCapacity(),
+    threads);
+}
+
+DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags,
+  int64_t n, int threads)
 {
   // Runs over the whole mesh several times per optimisation and insertion round (a tenth of a second per
   // 800,000 tets): the tet slots are split between threads, the partial summaries merged (min, max and
   // counts, so the result does not depend on the split).
-  auto summarize = [&mesh](int32_t begin, int32_t end, DihedralSummary& s) {
-    for (int32_t t = begin; t < end; ++t)
+  auto point = [points](int32_t v) { return points + 3 * static_cast<size_t>(v); };
+  auto summarize = [&](int64_t begin, int64_t end, DihedralSummary& s) {
+    for (int64_t t = begin; t < end; ++t)
     {
-      if (mesh.isFree(t))
+      if (tetFlags && (tetFlags[t] & TetMesh::kFree))
         continue;
-      const int32_t* w = mesh.vertices(t);
+      const int32_t* w = tetVertices + 4 * t;
       if ((w[0] | w[1] | w[2] | w[3]) < 0)
         continue;
-      const double *a = mesh.point(w[0]), *b = mesh.point(w[1]), *c = mesh.point(w[2]), *d = mesh.point(w[3]);
+      const double *a = point(w[0]), *b = point(w[1]), *c = point(w[2]), *d = point(w[3]);
       double lo, hi;
       minMaxDihedral(a, b, c, d, lo, hi);
       ++s.tets;
@@ -102,17 +111,10 @@ DihedralSummary summarizeDihedrals(const TetMesh& mesh)
       s.inverted += predicates::orient3dInline(a, b, c, d) <= 0;
     }
   };
-  const int32_t n = mesh.tetCapacity();
-  const unsigned hw = std::thread::hardware_concurrency();
-  const int threads = n < 50000 ? 1 : static_cast<int>(std::clamp(hw, 1u, 8u));
-  std::vector<DihedralSummary> parts(static_cast<size_t>(threads));
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k)
-    pool.emplace_back(summarize, static_cast<int32_t>(int64_t(n) * k / threads),
-      static_cast<int32_t>(int64_t(n) * (k + 1) / threads), std::ref(parts[static_cast<size_t>(k)]));
-  summarize(0, static_cast<int32_t>(int64_t(n) / threads), parts[0]);
-  for (std::thread& th : pool)
-    th.join();
+  constexpr int64_t kMinPerThread = 25000;
+  std::vector<DihedralSummary> parts(static_cast<size_t>(parallelRanges(threads, n, kMinPerThread)));
+  parallelFor(threads, n, kMinPerThread,
+    [&](int k, int64_t begin, int64_t end) { summarize(begin, end, parts[static_cast<size_t>(k)]); });
   DihedralSummary s;
   for (const DihedralSummary& p : parts)
   {
@@ -285,7 +287,8 @@ namespace
 // quality is under sin(targetDegrees), as optimizeMesh collects them): a tet with an angle under the
 // target is among them, so when their smallest angle is under the target (with a margin far above the
 // rounding of either measure) it is the mesh's. Otherwise a sweep.
-double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees)
+double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees,
+  int threads)
 {
   double m = 180;
   for (const auto& b : below)
@@ -295,7 +298,7 @@ double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double,
     minMaxDihedral(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), lo, hi);
     m = std::min(m, lo);
   }
-  return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh).minDihedral;
+  return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh, threads).minDihedral;
 }
 
 // Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
@@ -343,7 +346,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   OptimizationReport local;
   OptimizationReport& report = reportOut ? *reportOut : local;
   if (options.summaries)
-    report.before = summarizeDihedrals(mesh);
+    report.before = summarizeDihedrals(mesh, options.threads);
   TetEditor editor(mesh, constraints, labels);
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
@@ -357,11 +360,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   // the same (quality, slot) order, as a sweep over the whole mesh, at a cost proportional to the work.
   std::vector<std::pair<double, int32_t>> bad, worst;
   std::vector<int32_t> queue, created, verts, touched, candidates, star;
-  mesh.forEachTet([&](int32_t t) {
-    const double q = tetQ(mesh, t);
-    if (q < qT)
-      bad.emplace_back(q, t);
-  });
+  collectSineBelow(mesh, qT, options.threads, bad);
   std::sort(bad.begin(), bad.end());
   auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out) {
     candidates.clear();
@@ -382,7 +381,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   };
   report.belowTargetBefore = static_cast<int64_t>(bad.size());
   report.minDihedralBefore =
-    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
+    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees, options.threads);
   for (int pass = 0; pass < options.maxPasses && !bad.empty(); ++pass)
   {
     if (progress)
@@ -459,9 +458,9 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   }
   report.belowTargetAfter = static_cast<int64_t>(bad.size());
   if (options.summaries)
-    report.after = summarizeDihedrals(mesh);
+    report.after = summarizeDihedrals(mesh, options.threads);
   report.minDihedralAfter =
-    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees);
+    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees, options.threads);
   report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return Status::success();
 }

@@ -58,6 +58,8 @@ struct OptimizationOptions
   // call. false leaves them empty; report.minDihedralBefore/After are set either way (from the tets below
   // the target when the minimum lies among them, else by a sweep).
   bool summaries = true;
+  // Threads for the whole-mesh sweeps (ParallelFor.h: 0 = all cores); the result is the same for any value.
+  int threads = 0;
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
 };
 
@@ -72,7 +74,12 @@ struct DihedralSummary
   int64_t inverted = 0; // exact orient3d <= 0
   double shareBelow10() const { return tets ? double(below10) / tets : 0; }
 };
-DihedralSummary summarizeDihedrals(const TetMesh& mesh);
+// threads: the rule of ParallelFor.h (0 = all cores); the summary is the same for any value.
+DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads = 0);
+// The same over plain arrays: n tets of 4 vertex ids each (rows with a negative id are skipped), and
+// optional per-tet flags (TetMesh::kFree rows skipped). No adjacency needed.
+DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags,
+  int64_t n, int threads = 0);
 
 struct OptimizationReport
 {

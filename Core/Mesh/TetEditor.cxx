@@ -337,12 +337,16 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
   const uint8_t userBits = mesh.tetFlags[oldTets[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
   const int32_t label = labels && static_cast<size_t>(oldTets[0]) < labels->size() ? (*labels)[oldTets[0]] : -1;
   for (int32_t t : oldTets)
+  {
+    journalTet(t);
     mesh.freeTet(t);
+  }
   std::vector<int32_t>& ids = queue_;
   ids.resize(newTets.size());
   for (size_t n = 0; n < newTets.size(); ++n)
   {
     const auto& q = newTets[n];
+    journalTet(mesh.freeListHead());
     const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
     mesh.tetFlags[t] = userBits;
     ids[n] = t;
@@ -371,7 +375,10 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
       if (a.code < 0)
         mesh.unlink(tb, b.face);
       else
+      {
+        journalTet(a.code >> 2);
         mesh.link(tb, b.face, a.code >> 2, a.code & 3);
+      }
     }
     else
       mesh.link(ids[a.owner], a.face, tb, b.face);
@@ -804,7 +811,10 @@ void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
     mesh.tetFlags[cavity_[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
   const int32_t label = labels && static_cast<size_t>(cavity_[0]) < labels->size() ? (*labels)[cavity_[0]] : -1;
   for (int32_t t : cavity_)
+  {
+    journalTet(t);
     mesh.freeTet(t);
+  }
   const size_t n = newTets_.size();
   std::vector<int32_t>& ids = queue_;
   ids.resize(n);
@@ -814,13 +824,17 @@ void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
   for (size_t k = 0; k < n; ++k)
   {
     const auto& q = newTets_[k];
+    journalTet(mesh.freeListHead());
     const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
     mesh.tetFlags[t] = userBits;
     ids[k] = t;
     const int i = outerFace_[k];
     const int32_t c = outerCode_[k];
     if (c >= 0)
+    {
+      journalTet(c >> 2);
       mesh.link(t, i, c >> 2, c & 3);
+    }
     for (int j = 0; j < 4; ++j)
     {
       vertTet_[q[j]] = t;

@@ -24,6 +24,7 @@
 //   all positive whether or not the mesh is Delaunay (e.g. after boundary recovery flips).
 #pragma once
 
+#include "EditJournal.h"
 #include "TetMesh.h"
 #include "TetStamps.h"
 #include "VertexKeys.h"
@@ -70,6 +71,9 @@ public:
   TetMesh& mesh;
   const FaceConstraints* constraints;
   std::vector<int32_t>* labels;
+  // Optional undo log: when set, every tet slot is saved in it before replace() or an insertion writes
+  // it (EditJournal.h). Points are the caller's to save before it moves them.
+  EditJournal* journal = nullptr;
 
   // Vertex -> one incident live tet. Rebuilt from scratch; edits keep it up to date.
   void rebuildVertexMap();
@@ -145,6 +149,11 @@ public:
 
 private:
   void ensureStamp();
+  void journalTet(int32_t t)
+  {
+    if (journal && t >= 0)
+      journal->saveTet(mesh, labels, t);
+  }
   uint32_t newStamp();
   std::vector<int32_t> vertTet_;
   TetStamps stamp_;

@@ -216,6 +216,19 @@ public:
   // the number of ghosts by writing tetVertices directly must report it here.
   void adjustGhostCount(int32_t delta) { numGhost_ += delta; }
   int32_t freeListHead() const { return freeHead_; }
+  // The free list's head and the counters as one value, for an undo log of local edits (EditJournal.h)
+  // that restores the slots themselves.
+  struct Bookkeeping
+  {
+    int32_t freeHead, numFree, numGhost;
+  };
+  Bookkeeping bookkeeping() const { return { freeHead_, numFree_, numGhost_ }; }
+  void restoreBookkeeping(const Bookkeeping& b)
+  {
+    freeHead_ = b.freeHead;
+    numFree_ = b.numFree;
+    numGhost_ = b.numGhost;
+  }
 
 private:
   int32_t freeHead_ = -1;

@@ -203,8 +203,8 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   for (int c = 0; c < 8; ++c)
     kinds[N + c] = VertexKind::Box;
   const bool mayRetry = options.allowSteinerPoints && options.removeBoundarySteiner;
-  const TetMesh delaunayMesh = mayRetry ? mesh : TetMesh();
-  const std::vector<VertexKind> delaunayKinds = kinds;
+  TetMesh delaunayMesh = mayRetry ? mesh : TetMesh();
+  std::vector<VertexKind> delaunayKinds = kinds;
   BoundaryConstraints bc;
   MeshEditor ed(mesh);
   RegionResult regions;
@@ -270,12 +270,17 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
       presplit = rr.splitSegments;
     }
   }
+  // The retries' start is not needed past recovery: released before the quality stage grows the mesh.
+  delaunayMesh = TetMesh();
+  std::vector<VertexKind>().swap(delaunayKinds);
   if (!s.ok())
     return s;
 
   // 5b. Grid control and quality (MeshImprovement.h).
   t0 = std::chrono::steady_clock::now();
-  s = improveDomainMesh(ed, bc, surf, kinds, regions.tetRegion, options.improvement, st.improvement, pr);
+  ImprovementOptions improvement = options.improvement;
+  improvement.threads = options.threads;
+  s = improveDomainMesh(ed, bc, surf, kinds, regions.tetRegion, improvement, st.improvement, pr);
   if (!s.ok())
     return s;
   st.secondsImprovement = since(t0);

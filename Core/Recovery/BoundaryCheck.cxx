@@ -4,6 +4,7 @@
 #include "Predicates.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
@@ -83,18 +84,20 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
   const int64_t np = static_cast<int64_t>(points.size() / 3);
   const int64_t nt = static_cast<int64_t>(tets.size() / 4);
   r.tets = nt;
-  struct Use
-  {
-    int32_t tet;
-    int32_t v[3]; // orientation as seen from the tet (outward normal... as listed by the tet)
-    int count;
-  };
-  std::unordered_map<TriKey, Use, TriKeyHash> faces;
-  faces.reserve(static_cast<size_t>(nt) * 2 + 16);
+  // Tets with valid ids: orientation and volume; their faces are then matched by a counting sort on the
+  // smallest vertex (4 bytes per face and 8 per vertex; a hash table of faces took about 150 bytes per tet,
+  // the CLI's peak at a million tets). Face codes are 4 * tet + face in 32 bits (TetMesh's own limit is
+  // lower: 2^29 tets).
+  std::vector<uint8_t> valid(static_cast<size_t>(nt), 0);
+  std::vector<int64_t> events; // 8 * tet + slot (0 bad or inverted, 1 + face): notes in tet order
   Sum vol;
-  auto note = [&](int64_t id) {
-    if (r.firstProblems.size() < 8)
-      r.firstProblems.push_back(id);
+  std::vector<int64_t> start(static_cast<size_t>(np) + 1, 0);
+  auto faceOf = [&](uint32_t code, int32_t f[3]) {
+    const int32_t* v = tets.data() + 4 * static_cast<int64_t>(code >> 2);
+    const int* fv = TetMesh::kFaceVertex[code & 3];
+    f[0] = v[fv[0]];
+    f[1] = v[fv[1]];
+    f[2] = v[fv[2]];
   };
   for (int64_t t = 0; t < nt; ++t)
   {
@@ -110,74 +113,126 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
     if (bad)
     {
       ++r.badIds;
-      note(t);
+      events.push_back(8 * t);
       continue;
     }
+    valid[static_cast<size_t>(t)] = 1;
     const double *a = &points[3 * static_cast<size_t>(v[0])], *b = &points[3 * static_cast<size_t>(v[1])],
                  *c = &points[3 * static_cast<size_t>(v[2])], *d = &points[3 * static_cast<size_t>(v[3])];
     if (predicates::orient3d(a, b, c, d) <= 0)
     {
       ++r.invertedTets;
-      note(t);
+      events.push_back(8 * t);
     }
     vol.add(det3(a, b, c, d) / 6.0);
     for (int i = 0; i < 4; ++i)
     {
-      const int* fv = TetMesh::kFaceVertex[i];
-      const int32_t f[3] = { v[fv[0]], v[fv[1]], v[fv[2]] };
-      auto it = faces.find(TriKey(f[0], f[1], f[2]));
-      if (it == faces.end())
-        faces.emplace(TriKey(f[0], f[1], f[2]), Use{ static_cast<int32_t>(t), { f[0], f[1], f[2] }, 1 });
-      else
-      {
-        ++it->second.count;
-        if (it->second.count == 2 && sameCyclic(f, it->second.v))
-        {
-          ++r.sameOrientationFaces;
-          note(t);
-        }
-        if (it->second.count == 3)
-        {
-          ++r.overSharedFaces;
-          note(t);
-        }
-      }
+      int32_t f[3];
+      faceOf(static_cast<uint32_t>(4 * t + i), f);
+      ++start[static_cast<size_t>(std::min({ f[0], f[1], f[2] })) + 1];
     }
   }
   r.tetVolume = vol.value();
   r.enclosedVolume = expected;
   r.relativeVolumeError = std::fabs(r.tetVolume - expected) / std::max(std::fabs(expected), 1e-300);
-  // Boundary faces vs input triangles.
+  for (int64_t v = 0; v < np; ++v)
+    start[static_cast<size_t>(v) + 1] += start[static_cast<size_t>(v)];
+  std::vector<uint32_t> codes(static_cast<size_t>(start[static_cast<size_t>(np)]));
+  {
+    std::vector<int64_t> next(start.begin(), start.end() - 1);
+    for (int64_t t = 0; t < nt; ++t)
+      if (valid[static_cast<size_t>(t)])
+        for (int i = 0; i < 4; ++i)
+        {
+          int32_t f[3];
+          faceOf(static_cast<uint32_t>(4 * t + i), f);
+          codes[static_cast<size_t>(next[static_cast<size_t>(std::min({ f[0], f[1], f[2] }))]++)] =
+            static_cast<uint32_t>(4 * t + i);
+        }
+  }
+  std::vector<uint8_t>().swap(valid);
+  // Input triangles by key; per triangle, how many tets use it as a face (0 = missing).
   std::unordered_map<TriKey, int32_t, TriKeyHash> input;
   const int64_t ntri = static_cast<int64_t>(triangles.size() / 3);
   input.reserve(static_cast<size_t>(ntri) * 2 + 16);
   for (int64_t t = 0; t < ntri; ++t)
     input.emplace(TriKey(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]), static_cast<int32_t>(t));
+  std::vector<int32_t> uses(static_cast<size_t>(ntri), 0);
   std::vector<uint8_t> onBoundary(static_cast<size_t>(np), 0);
-  for (auto& [key, use] : faces)
+  std::vector<std::pair<std::array<int32_t, 2>, uint32_t>> group; // (other two vertices sorted, code)
+  std::vector<int64_t> boundaryNotes;
+  for (int64_t v = 0; v < np; ++v)
   {
-    if (use.count != 1)
-      continue;
-    ++r.boundaryFaces;
-    if (!input.count(key))
+    group.clear();
+    for (int64_t k = start[static_cast<size_t>(v)]; k < start[static_cast<size_t>(v) + 1]; ++k)
     {
-      ++r.boundaryFacesNotInput;
-      note(use.tet);
+      int32_t f[3];
+      faceOf(codes[static_cast<size_t>(k)], f);
+      std::sort(f, f + 3);
+      group.push_back({ { f[1], f[2] }, codes[static_cast<size_t>(k)] });
     }
-    for (int k = 0; k < 3; ++k)
-      onBoundary[key.v[k]] = 1;
+    std::sort(group.begin(), group.end()); // equal faces together, in tet order (as first seen)
+    for (size_t k = 0; k < group.size();)
+    {
+      size_t e = k + 1;
+      while (e < group.size() && group[e].first == group[k].first)
+        ++e;
+      const int64_t count = static_cast<int64_t>(e - k);
+      if (count >= 2)
+      {
+        int32_t f0[3], f1[3];
+        faceOf(group[k].second, f0);
+        faceOf(group[k + 1].second, f1);
+        if (sameCyclic(f1, f0))
+        {
+          ++r.sameOrientationFaces;
+          events.push_back(8 * static_cast<int64_t>(group[k + 1].second >> 2) + 1 + (group[k + 1].second & 3));
+        }
+      }
+      if (count >= 3)
+      {
+        ++r.overSharedFaces;
+        events.push_back(8 * static_cast<int64_t>(group[k + 2].second >> 2) + 1 + (group[k + 2].second & 3));
+      }
+      const TriKey key(static_cast<int32_t>(v), group[k].first[0], group[k].first[1]);
+      const auto it = input.find(key);
+      if (it != input.end())
+        uses[static_cast<size_t>(it->second)] = static_cast<int32_t>(std::min<int64_t>(count, 3));
+      if (count == 1)
+      {
+        ++r.boundaryFaces;
+        if (it == input.end())
+        {
+          ++r.boundaryFacesNotInput;
+          boundaryNotes.push_back(group[k].second >> 2);
+        }
+        onBoundary[static_cast<size_t>(v)] = 1;
+        onBoundary[static_cast<size_t>(group[k].first[0])] = 1;
+        onBoundary[static_cast<size_t>(group[k].first[1])] = 1;
+      }
+      k = e;
+    }
   }
+  // The first problems: the tet loop's (in tet order), then the boundary's, then the input's.
+  std::sort(events.begin(), events.end());
+  for (size_t k = 0; k < events.size() && r.firstProblems.size() < 8; ++k)
+    r.firstProblems.push_back(events[k] / 8);
+  for (size_t k = 0; k < boundaryNotes.size() && r.firstProblems.size() < 8; ++k)
+    r.firstProblems.push_back(boundaryNotes[k]);
   for (int64_t v = numInputPoints; v < np; ++v)
-    r.boundaryPointsAdded += onBoundary[v];
-  for (auto& [key, t] : input)
+    r.boundaryPointsAdded += onBoundary[static_cast<size_t>(v)];
+  for (int64_t t = 0; t < ntri; ++t)
   {
-    auto it = faces.find(key);
-    if (it == faces.end())
+    const auto it = input.find(TriKey(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]));
+    if (it->second != t)
+      continue; // a repeated input triangle: counted once
+    if (uses[static_cast<size_t>(t)] == 0)
     {
       ++r.inputTrianglesNotFaces;
-      note(t);
+      if (r.firstProblems.size() < 8)
+        r.firstProblems.push_back(t);
     }
-    else if (it->second.count == 2)
+    else if (uses[static_cast<size_t>(t)] == 2)
       ++r.inputTrianglesInterior;
   }
   return r;

@@ -1,9 +1,9 @@
 #include "IntersectingPairs.h"
+#include "ParallelFor.h"
 
 #include "SurfaceChecks.h"
 
 #include <algorithm>
-#include <thread>
 
 namespace volgrid::detail
 {
@@ -184,13 +184,7 @@ std::vector<std::pair<int32_t, int32_t>> findIntersectingPairs(const SurfaceMesh
   }
   BVH bvh;
   bvh.build(candidates, boxes);
-  int nthreads = threads > 0 ? threads : 2;
-  const unsigned hw = std::thread::hardware_concurrency();
-  if (threads <= 0 && hw > 0)
-  {
-    nthreads = std::min<int>(nthreads, static_cast<int>(hw));
-  }
-  nthreads = std::max(1, std::min(nthreads, 16));
+  const int nthreads = std::min(resolveThreads(threads), 16);
   // Node pairs to traverse, split a few levels down so that the threads share the work.
   std::vector<std::pair<int32_t, int32_t>> tasks;
   if (!bvh.nodes.empty())
@@ -233,22 +227,7 @@ std::vector<std::pair<int32_t, int32_t>> findIntersectingPairs(const SurfaceMesh
           found[w].emplace_back(t, u);
       });
   };
-  if (nthreads == 1)
-  {
-    work(0);
-  }
-  else
-  {
-    std::vector<std::thread> pool;
-    for (int w = 0; w < nthreads; ++w)
-    {
-      pool.emplace_back(work, w);
-    }
-    for (auto& th : pool)
-    {
-      th.join();
-    }
-  }
+  parallelRun(nthreads, work);
   std::vector<std::pair<int32_t, int32_t>> pairs;
   for (auto& f : found)
   {

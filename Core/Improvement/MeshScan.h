@@ -1,0 +1,25 @@
+// Whole-mesh scans of the quality stage (the smallest sine quality, the tets below a quality, how many of
+// them) on Core's thread pool (ParallelFor.h: 0 = all cores). Each range of tet slots gives a partial;
+// the partials are merged in slot order, so the result is the same for any thread count. The mesh must
+// be free of ghost tets. Sine quality: tetSineQuality (TetEditor.h).
+#pragma once
+
+#include "TetMesh.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace volgrid
+{
+
+// The smallest sine quality of the live tets; 2 when there is none.
+double minSineQuality(const TetMesh& mesh, int threads);
+
+// How many live tets have a sine quality under q.
+int64_t countSineBelow(const TetMesh& mesh, double q, int threads);
+
+// Every live tet with a sine quality under q as (quality, tet), in slot order (out is cleared first).
+void collectSineBelow(const TetMesh& mesh, double q, int threads, std::vector<std::pair<double, int32_t>>& out);
+
+} // namespace volgrid

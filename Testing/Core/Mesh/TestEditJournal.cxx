@@ -1,0 +1,105 @@
+// The undo log of local edits (Core/EditJournal.h): edits made through a TetEditor with a journal, and
+// point moves saved by the caller, are undone exactly (every array slot for slot, the free list and the
+// counters, the labels), also for nested marks.
+#include "Delaunay.h"
+#include "EditJournal.h"
+#include "MeshChecker.h"
+#include "MeshOptimization.h"
+#include "TetEditor.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+using namespace volgrid;
+
+namespace
+{
+void randomDelaunay(TetMesh& mesh, int n)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xyz;
+  for (int i = 0; i < 3 * n; ++i)
+    xyz.push_back(u(rng));
+  std::vector<int32_t> map;
+  DelaunayOptions opt;
+  opt.keepGhosts = false;
+  ASSERT_TRUE(buildDelaunay(xyz.data(), static_cast<size_t>(n), opt, mesh, map).ok());
+}
+
+void expectSame(const TetMesh& a, const TetMesh& b)
+{
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.tetVertices, b.tetVertices);
+  EXPECT_EQ(a.tetNeighbors, b.tetNeighbors);
+  EXPECT_EQ(a.tetFlags, b.tetFlags);
+  EXPECT_EQ(a.numTets(), b.numTets());
+  EXPECT_EQ(a.numFreeTets(), b.numFreeTets());
+  EXPECT_EQ(a.numGhostTets(), b.numGhostTets());
+  EXPECT_EQ(a.freeListHead(), b.freeListHead());
+}
+
+// Inserts a point at the centroid of each of `count` tets and runs 2-3 flips; returns the edits made.
+int edit(TetEditor& ed, int count, int32_t firstTet)
+{
+  TetMesh& m = ed.mesh;
+  int edits = 0;
+  for (int32_t t = firstTet; edits < count && t < m.tetCapacity(); ++t)
+  {
+    if (m.isFree(t))
+      continue;
+    double c[3] = { 0, 0, 0 };
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k)
+        c[k] += 0.25 * m.point(m.vertex(t, i))[k];
+    const int32_t v = m.addPoint(c);
+    if (ed.insertPoint(v, t) == TetEditor::InsertStatus::Inserted)
+      ++edits;
+    else
+      m.points.resize(m.points.size() - 3);
+    for (int f = 0; f < 4 && !m.isFree(t); ++f)
+      edits += tryFlip23(ed, t, f, nullptr) ? 1 : 0;
+  }
+  return edits;
+}
+} // namespace
+
+TEST(EditJournal, RollbackRestoresTheMeshAndLabelsExactly)
+{
+  TetMesh mesh;
+  randomDelaunay(mesh, 400);
+  std::vector<int32_t> labels(static_cast<size_t>(mesh.tetCapacity()));
+  for (size_t t = 0; t < labels.size(); ++t)
+    labels[t] = static_cast<int32_t>(t % 3);
+  TetEditor ed(mesh, nullptr, &labels);
+  EditJournal journal;
+  ed.journal = &journal;
+  ed.rebuildVertexMap();
+  // Some edits kept before the marks (free slots on the free list, which the undone edits reuse).
+  ASSERT_GT(edit(ed, 20, 0), 0);
+  const TetMesh start = mesh;
+  const std::vector<int32_t> startLabels = labels;
+  const EditJournal::Mark outer = journal.mark(mesh, &labels);
+  ASSERT_GT(edit(ed, 30, 100), 0);
+  journal.savePoint(mesh, 5);
+  mesh.points[15] += 0.001; // a caller's move of vertex 5
+  const TetMesh middle = mesh;
+  const std::vector<int32_t> middleLabels = labels;
+  const EditJournal::Mark inner = journal.mark(mesh, &labels);
+  ASSERT_GT(edit(ed, 30, 300), 0);
+  journal.rollback(inner, mesh, &labels);
+  expectSame(mesh, middle);
+  EXPECT_EQ(labels, middleLabels);
+  journal.rollback(outer, mesh, &labels);
+  expectSame(mesh, start);
+  EXPECT_EQ(labels, startLabels);
+  // The restored mesh is a valid one (adjacency, orientation) and the editor goes on from it.
+  ed.rebuildVertexMap();
+  MeshCheckOptions o;
+  o.delaunay = false;
+  EXPECT_TRUE(checkMesh(mesh, o).valid) << checkMesh(mesh, o).summary();
+  EXPECT_GT(edit(ed, 10, 0), 0);
+  EXPECT_TRUE(checkMesh(mesh, o).valid) << checkMesh(mesh, o).summary();
+}
