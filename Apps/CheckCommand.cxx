@@ -90,18 +90,19 @@ int runCheckCommand(int argc, char** argv)
   const volgrid::SurfaceCheckReport r = volgrid::checkSurface(mesh, options);
   const volgrid::Status status = volgrid::surfaceStatus(r);
   const int64_t wrongWay = misoriented(r);
-  const bool clean = status.ok() && r.consistentlyOriented() && wrongWay == 0 && r.nonManifoldVertices == 0 &&
-    r.coincidentPoints == 0;
+  const bool clean =
+    status.ok() && r.consistentlyOriented() && wrongWay == 0 && r.nonManifoldVertices == 0 && r.coincidentPoints == 0;
 
   if (json)
   {
-    std::printf("{\"file\":%s,\"format\":%s,\"points\":%d,\"triangles\":%d,\"shells\":%zu,\"watertight\":%s,"
-                "\"boundary_edges\":%lld,\"boundary_loops\":%lld,\"non_manifold_edges\":%lld,"
-                "\"non_manifold_vertices\":%lld,\"inconsistent_edges\":%lld,\"degenerate_triangles\":%lld,"
-                "\"duplicate_triangles\":%lld,\"self_intersecting_pairs\":%lld,\"shell_intersecting_pairs\":%lld,"
-                "\"inward_shells\":%d,\"misoriented_shells\":%lld,\"unreferenced_points\":%lld,\"coincident_points\":%lld,"
-                "\"first_boundary_edge_triangles\":%s,\"first_non_manifold_edge_triangles\":%s,"
-                "\"first_self_intersecting_pairs\":%s,\"meshable\":%s,\"clean\":%s,\"status\":%s,\"seconds\":%.3f}\n",
+    std::printf(
+      "{\"file\":%s,\"format\":%s,\"points\":%d,\"triangles\":%d,\"shells\":%zu,\"watertight\":%s,"
+      "\"boundary_edges\":%lld,\"boundary_loops\":%lld,\"non_manifold_edges\":%lld,"
+      "\"non_manifold_vertices\":%lld,\"inconsistent_edges\":%lld,\"degenerate_triangles\":%lld,"
+      "\"duplicate_triangles\":%lld,\"self_intersecting_pairs\":%lld,\"shell_intersecting_pairs\":%lld,"
+      "\"inward_shells\":%d,\"misoriented_shells\":%lld,\"unreferenced_points\":%lld,\"coincident_points\":%lld,"
+      "\"first_boundary_edge_triangles\":%s,\"first_non_manifold_edge_triangles\":%s,"
+      "\"first_self_intersecting_pairs\":%s,\"meshable\":%s,\"clean\":%s,\"status\":%s,\"seconds\":%.3f}\n",
       volgrid::cli::jsonString(path).c_str(), volgrid::cli::jsonString(info).c_str(), r.points, r.triangles,
       r.shells.size(), r.watertight() ? "true" : "false", static_cast<long long>(r.boundaryEdges),
       static_cast<long long>(r.boundaryLoops), static_cast<long long>(r.nonManifoldEdges),
@@ -110,9 +111,9 @@ int runCheckCommand(int argc, char** argv)
       intersections ? static_cast<long long>(r.selfIntersectingPairs) : -1LL,
       intersections ? static_cast<long long>(r.shellIntersectingPairs) : -1LL, r.inwardShells(),
       static_cast<long long>(wrongWay), static_cast<long long>(r.unreferencedPoints),
-      static_cast<long long>(r.coincidentPoints),
-      ids(r.firstBoundaryEdgeTriangles).c_str(), ids(r.firstNonManifoldEdgeTriangles).c_str(),
-      ids(r.firstSelfIntersectingPairs).c_str(), r.meshable() ? "true" : "false", clean ? "true" : "false",
+      static_cast<long long>(r.coincidentPoints), ids(r.firstBoundaryEdgeTriangles).c_str(),
+      ids(r.firstNonManifoldEdgeTriangles).c_str(), ids(r.firstSelfIntersectingPairs).c_str(),
+      r.meshable() ? "true" : "false", clean ? "true" : "false",
       volgrid::cli::jsonString(status.ok() ? "meshable" : status.message).c_str(), clock.seconds());
   }
   else
@@ -120,7 +121,8 @@ int runCheckCommand(int argc, char** argv)
     std::printf("%s: %s\n", path.c_str(), info.c_str());
     std::fputs(volgrid::formatSurfaceReport(r).c_str(), stdout);
     if (wrongWay > 0)
-      std::printf("misoriented shells         %lld (not oriented away from the domain)\n", static_cast<long long>(wrongWay));
+      std::printf("misoriented shells         %lld (not oriented away from the domain)\n",
+                  static_cast<long long>(wrongWay));
     std::printf("result                     %s\n", clean ? "clean" : "defects found");
   }
   return clean ? 0 : 1;

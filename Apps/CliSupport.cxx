@@ -48,7 +48,7 @@ bool parseOption(const char* command, const OptionSpec& spec, const char* text, 
   if (!spec.valid(value))
   {
     std::fprintf(stderr, "volgrid %s: %s is out of range: %s (%s %s; see --help)\n", command, flag.c_str(), text,
-      spec.type == OptionType::Integer ? "an integer in" : "in", spec.rangeText().c_str());
+                 spec.type == OptionType::Integer ? "an integer in" : "in", spec.rangeText().c_str());
     return false;
   }
   return true;
@@ -110,10 +110,18 @@ std::string jsonString(const std::string& s)
   {
     switch (c)
     {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20)
         {

@@ -11,11 +11,12 @@
 
 namespace
 {
-const char* kUsage = "usage: volgrid convert IN OUT [--format NAME] [--patch NAME=ID,...] [--patch-type NAME=TYPE]\n"
-                     "  Reads the tet mesh IN (.mesh Medit with its refs, .msh gmsh 2.2/4.1 with its physical groups,\n"
-                     "  .su2 with its markers, TetGen .node/.ele/.face with attributes and markers, .cgns with its boundary\n"
-                     "  conditions, .exo/.e with its element blocks and side sets, an OpenFOAM case) and writes it as\n"
-                     "  OUT.\n";
+const char* kUsage =
+  "usage: volgrid convert IN OUT [--format NAME] [--patch NAME=ID,...] [--patch-type NAME=TYPE]\n"
+  "  Reads the tet mesh IN (.mesh Medit with its refs, .msh gmsh 2.2/4.1 with its physical groups,\n"
+  "  .su2 with its markers, TetGen .node/.ele/.face with attributes and markers, .cgns with its boundary\n"
+  "  conditions, .exo/.e with its element blocks and side sets, an OpenFOAM case) and writes it as\n"
+  "  OUT.\n";
 } // namespace
 
 int runConvertCommand(int argc, char** argv)

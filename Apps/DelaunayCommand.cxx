@@ -50,7 +50,8 @@ bool parseArguments(int argc, char** argv, Arguments& args)
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    auto value = [&](const char* name) -> const char* {
+    auto value = [&](const char* name) -> const char*
+    {
       if (i + 1 >= argc)
       {
         std::fprintf(stderr, "volgrid delaunay: %s needs a value\n", name);
@@ -196,9 +197,11 @@ int runDelaunayCommand(int argc, char** argv)
   {
     if (args.randomCount > kMaxPoints)
     {
-      std::fprintf(stderr, "volgrid delaunay: --random %lld: at most %lld points are supported (that many would "
-                           "make about %.2g tets); nothing was done\n",
-        args.randomCount, kMaxPoints, volgrid::estimateDelaunaySize(static_cast<double>(args.randomCount)).tets);
+      std::fprintf(stderr,
+                   "volgrid delaunay: --random %lld: at most %lld points are supported (that many would "
+                   "make about %.2g tets); nothing was done\n",
+                   args.randomCount, kMaxPoints,
+                   volgrid::estimateDelaunaySize(static_cast<double>(args.randomCount)).tets);
       return 1;
     }
     if (refuseIfTooLarge(args, static_cast<double>(args.randomCount), "--random " + std::to_string(args.randomCount)))
@@ -206,7 +209,8 @@ int runDelaunayCommand(int argc, char** argv)
     xyz = randomPoints(args.randomCount, args.seed);
   }
   const size_t n = xyz.size() / 3;
-  if (!args.nodeFile.empty() && refuseIfTooLarge(args, static_cast<double>(n), "'" + args.nodeFile + "' (" + std::to_string(n) + " points)"))
+  if (!args.nodeFile.empty() &&
+      refuseIfTooLarge(args, static_cast<double>(n), "'" + args.nodeFile + "' (" + std::to_string(n) + " points)"))
     return 1;
 
   volgrid::TetMesh mesh;
@@ -233,7 +237,7 @@ int runDelaunayCommand(int argc, char** argv)
 
   if (args.check && !check.valid)
     std::fprintf(stderr, "volgrid delaunay: check failed: %s%s\n", check.summary().c_str(),
-      args.out.empty() ? "" : " (nothing written)");
+                 args.out.empty() ? "" : " (nothing written)");
   else if (!args.out.empty())
   {
     std::vector<int32_t> kept;
@@ -263,12 +267,12 @@ int runDelaunayCommand(int argc, char** argv)
   {
     std::printf("{\"input_points\": %zu, \"points\": %zu, \"duplicates\": %zu, \"tets\": %lld, "
                 "\"seconds\": %.6f, \"tets_per_s\": %.0f, \"peak_rss_mb\": %.1f",
-      n, report.numVertices, report.numDuplicates, tets, seconds, seconds > 0 ? tets / seconds : 0.0,
-      volgrid::cli::peakResidentMiB());
+                n, report.numVertices, report.numDuplicates, tets, seconds, seconds > 0 ? tets / seconds : 0.0,
+                volgrid::cli::peakResidentMiB());
     if (args.check)
     {
       std::printf(", \"valid\": %s, \"check_seconds\": %.6f, \"check\": %s", check.valid ? "true" : "false",
-        checkSeconds, volgrid::cli::jsonString(check.summary()).c_str());
+                  checkSeconds, volgrid::cli::jsonString(check.summary()).c_str());
     }
     std::printf("}\n");
   }
@@ -276,8 +280,8 @@ int runDelaunayCommand(int argc, char** argv)
   {
     std::printf("%zu input points, %zu distinct (%zu duplicates merged), %lld tetrahedra in %.3f s "
                 "(%.0f tets/s), peak memory %.1f MiB\n",
-      n, report.numVertices, report.numDuplicates, tets, seconds, seconds > 0 ? tets / seconds : 0.0,
-      volgrid::cli::peakResidentMiB());
+                n, report.numVertices, report.numDuplicates, tets, seconds, seconds > 0 ? tets / seconds : 0.0,
+                volgrid::cli::peakResidentMiB());
     if (args.check)
     {
       std::printf("check: %s (%.3f s)\n", check.summary().c_str(), checkSeconds);

@@ -34,16 +34,17 @@ namespace
 {
 using volgrid::cli::optionUsage;
 namespace option = volgrid::option;
-const std::string kUsage = std::string(
-  "usage: volgrid mesh SURFACE OUT.vtu|OUT.vtk|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
-  "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [--threads N]\n"
-  "                    [density and quality options]\n"
-  "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
-  "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region; OUT.vtk:\n"
-  "  the same, legacy binary VTK);\n"
-  "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
-  "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
-  "Density (field points, paper 7.2; on by default):\n") +
+const std::string kUsage =
+  std::string(
+    "usage: volgrid mesh SURFACE OUT.vtu|OUT.vtk|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
+    "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [--threads N]\n"
+    "                    [density and quality options]\n"
+    "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
+    "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region; OUT.vtk:\n"
+    "  the same, legacy binary VTK);\n"
+    "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
+    "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
+    "Density (field points, paper 7.2; on by default):\n") +
   optionUsage(option::alpha, "A") + optionUsage(option::beta, "B") + optionUsage(option::sizeScale, "S") +
   optionUsage(option::gradation, "G") + optionUsage(option::maxEdge, "L") + optionUsage(option::maxVolume, "V") +
   "  --no-field-points    boundary points (and recovery's interior points) only\n"
@@ -76,14 +77,14 @@ struct Arguments
   volgrid::MesherOptions options;
 };
 
-
 bool parseArguments(int argc, char** argv, Arguments& args)
 {
   std::vector<std::string> positional;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    auto value = [&](const char* name) -> const char* {
+    auto value = [&](const char* name) -> const char*
+    {
       if (i + 1 >= argc)
       {
         std::fprintf(stderr, "volgrid mesh: %s needs a value\n", name);
@@ -201,7 +202,7 @@ bool parseArguments(int argc, char** argv, Arguments& args)
   args.out = positional[1];
   volgrid::ImprovementOptions& im = args.options.improvement;
   if (!args.sizingFile.empty() &&
-    !readPointsWithArray("mesh", args.sizingFile, args.sizeArray, true, im.sizingPoints, im.sizingValues))
+      !readPointsWithArray("mesh", args.sizingFile, args.sizeArray, true, im.sizingPoints, im.sizingValues))
     return false;
   if (!args.clusterFile.empty())
   {
@@ -231,17 +232,23 @@ bool writeLegacy(const std::string& path, vtkUnstructuredGrid* data)
 // The option (with its value) that drives the estimate, as the user typed it.
 std::string sizeCause(const Arguments& args, volgrid::SizeDriver driver)
 {
-  auto named = [&](const char* option) {
+  auto named = [&](const char* option)
+  {
     const auto it = args.given.find(option);
     return std::string(option) + " " + (it == args.given.end() ? std::string("(default)") : it->second);
   };
   switch (driver)
   {
-    case volgrid::SizeDriver::MaxEdge: return named("--max-edge");
-    case volgrid::SizeDriver::MaxVolume: return named("--max-volume");
-    case volgrid::SizeDriver::SizeScale: return named("--size-scale");
-    case volgrid::SizeDriver::Alpha: return named("--alpha");
-    default: return "the surface's point spacing of '" + args.surface + "'";
+    case volgrid::SizeDriver::MaxEdge:
+      return named("--max-edge");
+    case volgrid::SizeDriver::MaxVolume:
+      return named("--max-volume");
+    case volgrid::SizeDriver::SizeScale:
+      return named("--size-scale");
+    case volgrid::SizeDriver::Alpha:
+      return named("--alpha");
+    default:
+      return "the surface's point spacing of '" + args.surface + "'";
   }
 }
 
@@ -273,8 +280,9 @@ int runMeshCommand(int argc, char** argv)
     return 2;
   const std::vector<std::string> inputs = { args.surface, args.sizingFile, args.clusterFile };
   // chooseFormat accepted OUT's format; an OpenFOAM case is a directory, checked by its writer.
-  const std::vector<std::string> outExtensions =
-    vtkOutput ? std::vector<std::string>{ "vtu", "vtk" } : std::vector<std::string>{ volgrid::surfaceFileExtension(args.out) };
+  const std::vector<std::string> outExtensions = vtkOutput
+    ? std::vector<std::string>{ "vtu", "vtk" }
+    : std::vector<std::string>{ volgrid::surfaceFileExtension(args.out) };
   if (format != volgrid::MeshFormat::OpenFOAM)
     if (const int code = volgrid::cli::checkOutputPath("mesh", "OUT", args.out, outExtensions, inputs))
       return code;
@@ -349,8 +357,9 @@ int runMeshCommand(int argc, char** argv)
 
   const volgrid::MesherStatistics& s = result.stats;
   // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
-  const volgrid::DihedralSummary dihedral = volgrid::summarizeDihedrals(result.points.data(), result.tets.data(),
-    nullptr, static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
+  const volgrid::DihedralSummary dihedral =
+    volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
+                                static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
   // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
   const double gradation = args.options.improvement.sizing.gradation;
   const volgrid::SizeRatioSummary ratio =
@@ -358,56 +367,56 @@ int runMeshCommand(int argc, char** argv)
   if (args.json)
   {
     const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
-    std::printf("{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
-                "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
-                "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
-                "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %s, "
-                "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
-                "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
-                "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
-                "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
-                "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
-                "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
-                "\"field_points\": %.6f, \"optimization\": %.6f}, "
-                "\"seconds\": %.6f, "
-                "\"peak_rss_mb\": %.1f}\n",
+    std::printf(
+      "{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
+      "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
+      "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
+      "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %s, "
+      "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
+      "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
+      "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
+      "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
+      "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
+      "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
+      "\"field_points\": %.6f, \"optimization\": %.6f}, "
+      "\"seconds\": %.6f, "
+      "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
       static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
       static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
-      static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets),
-      static_cast<long long>(s.flips), s.recoveryAttempts, static_cast<long long>(s.steinerInterior),
-      static_cast<long long>(s.steinerBoundary), boundaryPreserved ? "true" : "false", json(boundary.tetVolume).c_str(),
-      json(s.enclosedVolume).c_str(), json(boundary.relativeVolumeError, "%.3g").c_str(),
-      static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
-      json(dihedral.minDihedral, "%.4f").c_str(), json(dihedral.maxDihedral, "%.4f").c_str(),
-      json(dihedral.shareBelow10(), "%.6g").c_str(), static_cast<long long>(s.improvement.boundaryForcedBelow10),
-      static_cast<long long>(s.forcedTets), ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold),
-      s.secondsImprovement, s.secondsCheck, s.secondsDelaunay, s.secondsRecovery, s.secondsExterior, s.secondsSteiner,
-      s.improvement.secondsSizing, s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds,
-      volgrid::cli::peakResidentMiB());
+      static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets), static_cast<long long>(s.flips),
+      s.recoveryAttempts, static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary),
+      boundaryPreserved ? "true" : "false", json(boundary.tetVolume).c_str(), json(s.enclosedVolume).c_str(),
+      json(boundary.relativeVolumeError, "%.3g").c_str(), static_cast<long long>(s.improvement.fieldPoints),
+      static_cast<long long>(s.improvement.clusterPoints), json(dihedral.minDihedral, "%.4f").c_str(),
+      json(dihedral.maxDihedral, "%.4f").c_str(), json(dihedral.shareBelow10(), "%.6g").c_str(),
+      static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
+      ratio.max, static_cast<long long>(ratio.aboveThreshold), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
+      s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
+      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
   }
   else
   {
     std::printf("%s: %lld points, %lld triangles -> %lld tets on %lld points (%lld interior Steiner "
                 "points, %lld on the boundary) in %.3f s\n",
-      args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
-      static_cast<long long>(s.tets), static_cast<long long>(s.points),
-      static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
+                args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
+                static_cast<long long>(s.tets), static_cast<long long>(s.points),
+                static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
     std::printf("%lld field points, %lld cluster points; dihedral angles %.2f..%.2f deg, %.3g%% of the tets "
                 "under 10 deg\n",
-      static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
-      dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
+                static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
+                dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
     std::printf("size ratio between face-neighbouring tets (mean edge length): 99th percentile %.3f, max %.3f; "
                 "%lld of %lld faces above the gradation %.3g\n",
-      ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
-      gradation);
+                ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
+                gradation);
     if (s.forcedTets > 0)
       std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
                   "over 170 deg: cell array Forced)\n",
-        static_cast<long long>(s.forcedTets));
+                  static_cast<long long>(s.forcedTets));
     std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
-      boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
-      boundary.relativeVolumeError);
+                boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
+                boundary.relativeVolumeError);
   }
   if (checkFailed)
   {

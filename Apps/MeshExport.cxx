@@ -70,7 +70,7 @@ bool takeExportOptions(const char* command, int& argc, char** argv, ExportReques
 }
 
 bool chooseFormat(const char* command, const std::string& out, const ExportRequest& request, MeshFormat& format,
-  bool& vtk)
+                  bool& vtk)
 {
   vtk = false;
   if (!request.format.empty())
@@ -79,8 +79,9 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
     format = meshFormatFromName(request.format);
     if (vtk || format != MeshFormat::Unknown)
       return true;
-    std::fprintf(stderr, "volgrid %s: unknown --format '%s' (gmsh, gmsh22, su2, openfoam, medit, tetgen, cgns, exodus, vtu)\n",
-      command, request.format.c_str());
+    std::fprintf(stderr,
+                 "volgrid %s: unknown --format '%s' (gmsh, gmsh22, su2, openfoam, medit, tetgen, cgns, exodus, vtu)\n",
+                 command, request.format.c_str());
     return false;
   }
   format = meshFormatFromPath(out);
@@ -88,7 +89,8 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
   vtk = ext == "vtu" || ext == "vtk" || ext == "vtp";
   if (vtk || format != MeshFormat::Unknown)
     return true;
-  std::fprintf(stderr,
+  std::fprintf(
+    stderr,
     "volgrid %s: cannot tell the output format of '%s' from its extension '%s' (.vtu .msh .su2 .mesh .node .cgns .exo; "
     "--format NAME for others, e.g. --format openfoam)\n",
     command, out.c_str(), ext.c_str());
@@ -96,7 +98,7 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
 }
 
 bool solverMeshFromResult(const char* command, const ExportRequest& request, const SurfaceMesh& surface,
-  MesherResult& result, SolverMesh& mesh, bool withGeometry)
+                          MesherResult& result, SolverMesh& mesh, bool withGeometry)
 {
   mesh.patchNames = surface.hasPatchIds() ? surface.patchNames : NameTable();
   if (!request.patches.empty())
@@ -119,7 +121,7 @@ bool solverMeshFromResult(const char* command, const ExportRequest& request, con
 }
 
 bool writeSolverOutput(const char* command, const std::string& out, MeshFormat format, const SolverMesh& mesh,
-  const ExportRequest& request, bool quiet)
+                       const ExportRequest& request, bool quiet)
 {
   SolverMesh normalized = mesh;
   normalizeLabels(normalized);
@@ -132,12 +134,12 @@ bool writeSolverOutput(const char* command, const std::string& out, MeshFormat f
   if (quiet)
     return true;
   std::printf("wrote %s '%s': %lld points, %lld tets, patches", meshFormatName(format), out.c_str(),
-    static_cast<long long>(normalized.numberOfPoints()), static_cast<long long>(normalized.numberOfTets()));
+              static_cast<long long>(normalized.numberOfPoints()), static_cast<long long>(normalized.numberOfTets()));
   const std::vector<int32_t> patches = distinctLabels(normalized.trianglePatch);
   const std::vector<int64_t> counts = labelCounts(normalized.trianglePatch, patches);
   for (size_t k = 0; k < patches.size(); ++k)
     std::printf(" %s (%lld)", labelName(normalized.patchNames, patches[k], "patch").c_str(),
-      static_cast<long long>(counts[k]));
+                static_cast<long long>(counts[k]));
   std::printf("\n");
   return true;
 }

@@ -32,17 +32,17 @@ bool takeExportOptions(const char* command, int& argc, char** argv, ExportReques
 // extension. Unknown with `vtk` true for .vtu/.vtk/.vtp (VTK's writers); false (message printed) when
 // neither fits.
 bool chooseFormat(const char* command, const std::string& out, const ExportRequest& request, MeshFormat& format,
-  bool& vtk);
+                  bool& vtk);
 
 // The mesher's output as a SolverMesh: patch names from the input surface, the user's --patch grouping
 // applied (to `result`'s boundaryPatch as well, so the VTK outputs agree). False (message printed) on
 // a bad assignment. Without `withGeometry` only the names are filled (the VTK outputs need no copy).
 bool solverMeshFromResult(const char* command, const ExportRequest& request, const SurfaceMesh& surface,
-  MesherResult& result, SolverMesh& mesh, bool withGeometry);
+                          MesherResult& result, SolverMesh& mesh, bool withGeometry);
 
 // Writes `mesh` in `format`; prints "wrote FORMAT PATH: points, tets, patch (faces) ..." to stdout unless
 // quiet. False (message naming the path and reason printed) on failure.
 bool writeSolverOutput(const char* command, const std::string& out, MeshFormat format, const SolverMesh& mesh,
-  const ExportRequest& request, bool quiet);
+                       const ExportRequest& request, bool quiet);
 } // namespace cli
 } // namespace volgrid

@@ -37,10 +37,8 @@ Status readNodeFile(const std::string& path, std::vector<double>& xyz)
   }
   std::string line;
   long lineNumber = 0;
-  auto fail = [&](const std::string& what) {
-    return Status::failure(
-      ErrorKind::EmptyInput, path + ":" + std::to_string(lineNumber) + ": " + what);
-  };
+  auto fail = [&](const std::string& what)
+  { return Status::failure(ErrorKind::EmptyInput, path + ":" + std::to_string(lineNumber) + ": " + what); };
   if (!nextDataLine(in, line, lineNumber))
   {
     return fail("no header line");

@@ -63,7 +63,7 @@ vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path)
 }
 
 bool readPointsWithArray(const char* command, const std::string& path, const std::string& arrayName, bool needArray,
-  std::vector<double>& xyz, std::vector<double>& values)
+                         std::vector<double>& xyz, std::vector<double>& values)
 {
   xyz.clear();
   values.clear();

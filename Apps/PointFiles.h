@@ -20,7 +20,7 @@ vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path);
 // Points (x,y,z each) and one value per point: text files (.txt .xyz .csv: 'x y z [value]' lines) or any
 // data set with the point array `arrayName` (needArray: the values are required). Messages go to stderr.
 bool readPointsWithArray(const char* command, const std::string& path, const std::string& arrayName, bool needArray,
-  std::vector<double>& xyz, std::vector<double>& values);
+                         std::vector<double>& xyz, std::vector<double>& values);
 
 } // namespace cli
 } // namespace volgrid

@@ -19,8 +19,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -301,7 +301,8 @@ int runPrepCommand(int argc, char** argv)
     for (const auto& entry : kJsonCounts)
       line += std::string(",\"") + entry[0] + "\":" + std::to_string(count(fd, entry[1]));
     char tail[96];
-    std::snprintf(tail, sizeof tail, ",\"meshable\":%s,\"seconds\":%.3f}", meshable ? "true" : "false", clock.seconds());
+    std::snprintf(tail, sizeof tail, ",\"meshable\":%s,\"seconds\":%.3f}", meshable ? "true" : "false",
+                  clock.seconds());
     std::printf("%s%s\n", line.c_str(), tail);
   }
   else
@@ -310,8 +311,8 @@ int runPrepCommand(int argc, char** argv)
     if (text && text->GetNumberOfValues() > 0)
       std::fputs(text->GetValue(0).c_str(), stdout);
     std::printf("wrote %s (%lld points, %lld triangles) in %.2f s\n", out.c_str(),
-      static_cast<long long>(result->GetNumberOfPoints()), static_cast<long long>(result->GetNumberOfCells()),
-      clock.seconds());
+                static_cast<long long>(result->GetNumberOfPoints()), static_cast<long long>(result->GetNumberOfCells()),
+                clock.seconds());
   }
   return meshable ? 0 : 1;
 }

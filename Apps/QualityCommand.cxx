@@ -3,10 +3,10 @@
 // `volgrid mesh` reads, through the same Core readers) and
 // prints a summary table, or with --json one JSON line. Errors go to stderr with a non-zero exit code:
 // 2 for bad arguments, 1 for unreadable input.
-#include "MeshReader.h"
-#include "VolGridConversion.h"
 #include "Commands.h"
+#include "MeshReader.h"
 #include "SurfaceFile.h"
+#include "VolGridConversion.h"
 #include "XmlDataFiles.h"
 
 #include "VolGridSurfaceConversion.h"
@@ -44,18 +44,20 @@ int usage(const char* problem)
 {
   std::fprintf(stderr, "volgrid quality: %s\n", problem);
   std::fprintf(stderr,
-    "usage: volgrid quality MESH.{vtu,vtk,vtp} | SURFACE [--json] [--bins N] [--metric NAME] [--threads N]\n"
-    "  SURFACE: any file `volgrid mesh` reads (.stl .obj .ply .off .mesh .poly .smesh .msh, also .gz)\n"
-    "  --bins N      histogram bins per metric (1..10000, default 20)\n"
-    "  --metric NAME metric copied to the Quality array (AspectRatio, MinDihedralAngle, ...)\n"
-    "  --threads N   threads (default 0: all cores)\n");
+               "usage: volgrid quality MESH.{vtu,vtk,vtp} | SURFACE [--json] [--bins N] [--metric NAME] [--threads N]\n"
+               "  SURFACE: any file `volgrid mesh` reads (.stl .obj .ply .off .mesh .poly .smesh .msh, also .gz)\n"
+               "  --bins N      histogram bins per metric (1..10000, default 20)\n"
+               "  --metric NAME metric copied to the Quality array (AspectRatio, MinDihedralAngle, ...)\n"
+               "  --threads N   threads (default 0: all cores)\n");
   return 2;
 }
 
 // A legacy .vtk data set (VTK's reader, after checking that the path is a regular file).
 vtkSmartPointer<vtkDataSet> readLegacy(const std::string& path)
 {
-  struct stat st{};
+  struct stat st
+  {
+  };
   if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
   {
     std::fprintf(stderr, "volgrid quality: '%s' is not a readable file\n", path.c_str());
@@ -118,9 +120,10 @@ vtkSmartPointer<vtkDataSet> readMesh(const std::string& path)
     data = readSurfaceFile(path);
   else
   {
-    std::fprintf(stderr, "volgrid quality: '%s': unknown file type '.%s' (expected .vtu, .vtk, .vtp or a surface: "
-                         ".stl .obj .ply .off .mesh .poly .smesh .msh, each also as .gz)\n",
-      path.c_str(), ext.c_str());
+    std::fprintf(stderr,
+                 "volgrid quality: '%s': unknown file type '.%s' (expected .vtu, .vtk, .vtp or a surface: "
+                 ".stl .obj .ply .off .mesh .poly .smesh .msh, each also as .gz)\n",
+                 path.c_str(), ext.c_str());
     return nullptr;
   }
   if (!data)
@@ -176,13 +179,16 @@ std::string jsonString(const std::string& s)
   return out + "\"";
 }
 
-const char* kVolumeMetrics[] = { "AspectRatio", "MinDihedralAngle", "MaxDihedralAngle", "MinSolidAngle", "Volume",
-  "VolumeGradient", "RadiusEdgeRatio", "RadiusRatio", "NonOrthogonality", "Skewness", "VolumeRatio" };
+const char* kVolumeMetrics[] = { "AspectRatio",      "MinDihedralAngle", "MaxDihedralAngle", "MinSolidAngle",
+                                 "Volume",           "VolumeGradient",   "RadiusEdgeRatio",  "RadiusRatio",
+                                 "NonOrthogonality", "Skewness",         "VolumeRatio" };
 const char* kSurfaceMetrics[] = { "AspectRatio", "Area", "MinAngle", "MaxAngle" };
-const char* kVolumeFigures[] = { "NumberOfTetrahedra", "SkippedCells", "TotalVolume", "MaxNonOrthogonality",
-  "AverageNonOrthogonality", "SevereNonOrthogonalFaces", "MaxSkewness", "HighlySkewFaces", "MaxVolumeRatio" };
-const char* kSurfaceFigures[] = { "NumberOfElements", "SurfaceArea", "EnclosedVolume", "BoundaryEdges",
-  "BoundaryLoops", "NonManifoldEdges", "Shells", "SkippedCells" };
+const char* kVolumeFigures[] = {
+  "NumberOfTetrahedra",       "SkippedCells", "TotalVolume",     "MaxNonOrthogonality", "AverageNonOrthogonality",
+  "SevereNonOrthogonalFaces", "MaxSkewness",  "HighlySkewFaces", "MaxVolumeRatio"
+};
+const char* kSurfaceFigures[] = { "NumberOfElements", "SurfaceArea",      "EnclosedVolume", "BoundaryEdges",
+                                  "BoundaryLoops",    "NonManifoldEdges", "Shells",         "SkippedCells" };
 } // namespace
 
 int runQualityCommand(int argc, char** argv)
@@ -256,10 +262,12 @@ int runQualityCommand(int argc, char** argv)
   }
   const bool volume = vtkUnstructuredGrid::SafeDownCast(mesh) != nullptr;
   vtkFieldData* fd = out->GetFieldData();
-  std::vector<const char*> metrics = volume ? std::vector<const char*>(std::begin(kVolumeMetrics), std::end(kVolumeMetrics))
-                                            : std::vector<const char*>(std::begin(kSurfaceMetrics), std::end(kSurfaceMetrics));
-  std::vector<const char*> figures = volume ? std::vector<const char*>(std::begin(kVolumeFigures), std::end(kVolumeFigures))
-                                            : std::vector<const char*>(std::begin(kSurfaceFigures), std::end(kSurfaceFigures));
+  std::vector<const char*> metrics = volume
+    ? std::vector<const char*>(std::begin(kVolumeMetrics), std::end(kVolumeMetrics))
+    : std::vector<const char*>(std::begin(kSurfaceMetrics), std::end(kSurfaceMetrics));
+  std::vector<const char*> figures = volume
+    ? std::vector<const char*>(std::begin(kVolumeFigures), std::end(kVolumeFigures))
+    : std::vector<const char*>(std::begin(kSurfaceFigures), std::end(kSurfaceFigures));
 
   if (json)
   {
@@ -275,9 +283,12 @@ int runQualityCommand(int argc, char** argv)
       const char* keys[6] = { "count", "min", "max", "mean", "stddev", "worst_cell" };
       for (int c = 0; c < 6; ++c)
         s += std::string(c ? "," : "") + "\"" + keys[c] + "\":" + num(st ? st->GetComponent(0, c) : std::nan(""));
-      vtkDataArray* lo = vtkDataArray::SafeDownCast(table->GetColumnByName((std::string(metrics[m]) + "_BinStart").c_str()));
-      vtkDataArray* hi = vtkDataArray::SafeDownCast(table->GetColumnByName((std::string(metrics[m]) + "_BinEnd").c_str()));
-      vtkDataArray* count = vtkDataArray::SafeDownCast(table->GetColumnByName((std::string(metrics[m]) + "_Count").c_str()));
+      vtkDataArray* lo =
+        vtkDataArray::SafeDownCast(table->GetColumnByName((std::string(metrics[m]) + "_BinStart").c_str()));
+      vtkDataArray* hi =
+        vtkDataArray::SafeDownCast(table->GetColumnByName((std::string(metrics[m]) + "_BinEnd").c_str()));
+      vtkDataArray* count =
+        vtkDataArray::SafeDownCast(table->GetColumnByName((std::string(metrics[m]) + "_Count").c_str()));
       std::string edges, counts;
       for (vtkIdType b = 0; lo && hi && count && b < count->GetNumberOfTuples(); ++b)
       {
@@ -294,19 +305,19 @@ int runQualityCommand(int argc, char** argv)
   }
 
   std::printf("VolGrid quality of %s (%s grid, %lld cells)\n", path.c_str(), volume ? "volume" : "surface",
-    static_cast<long long>(mesh->GetNumberOfCells()));
+              static_cast<long long>(mesh->GetNumberOfCells()));
   for (const char* f : figures)
     std::printf("  %-20s %.10g\n", f, scalar(fd, f));
   std::printf("\n  %-18s %12s %14s %14s %14s %14s %12s\n", "metric", "count", "min", "max", "mean", "stddev",
-    "worst cell");
+              "worst cell");
   for (const char* m : metrics)
   {
     vtkDataArray* st = fd->GetArray((std::string(m) + "Statistics").c_str());
     if (!st)
       continue;
     std::printf("  %-18s %12.0f %14.6g %14.6g %14.6g %14.6g %12.0f\n", m, st->GetComponent(0, 0),
-      st->GetComponent(0, 1), st->GetComponent(0, 2), st->GetComponent(0, 3), st->GetComponent(0, 4),
-      st->GetComponent(0, 5));
+                st->GetComponent(0, 1), st->GetComponent(0, 2), st->GetComponent(0, 3), st->GetComponent(0, 4),
+                st->GetComponent(0, 5));
   }
   return 0;
 }

@@ -43,18 +43,18 @@ namespace
 {
 using volgrid::cli::optionUsage;
 namespace option = volgrid::option;
-const std::string kUsage = std::string(
-  "usage: volgrid refine MESH OUT --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
-  "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json] [--format NAME]\n"
-  "  MESH: .vtu/.vtk, or a solver mesh (.exo/.e with NAME a nodal variable, its last time step; .msh .su2\n"
-  "  .mesh .cgns .node or an OpenFOAM case carry no point fields). OUT: .vtu or any solver format of\n"
-  "  `volgrid mesh` (--format NAME where the extension does not say it); the boundary patches of MESH\n"
-  "  (PatchNames and BoundaryFacePatch of a VolGrid .vtu, or the solver file's) are kept by name.\n"
-  "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
-  "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
-  "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
-  "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n"
-  "  --gradation G        > 1 grades the targets over the mesh edges first (default 0: no grading)\n") +
+const std::string kUsage =
+  std::string("usage: volgrid refine MESH OUT --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
+              "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json] [--format NAME]\n"
+              "  MESH: .vtu/.vtk, or a solver mesh (.exo/.e with NAME a nodal variable, its last time step; .msh .su2\n"
+              "  .mesh .cgns .node or an OpenFOAM case carry no point fields). OUT: .vtu or any solver format of\n"
+              "  `volgrid mesh` (--format NAME where the extension does not say it); the boundary patches of MESH\n"
+              "  (PatchNames and BoundaryFacePatch of a VolGrid .vtu, or the solver file's) are kept by name.\n"
+              "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
+              "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
+              "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
+              "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n"
+              "  --gradation G        > 1 grades the targets over the mesh edges first (default 0: no grading)\n") +
   optionUsage(option::alpha, "A") + optionUsage(option::beta, "B") + optionUsage(option::targetAngle, "DEG") +
   optionUsage(option::passes, "N") +
   "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
@@ -65,16 +65,18 @@ const std::string kUsage = std::string(
 std::set<std::array<int32_t, 3>> boundaryFaces(const volgrid::TetMesh& mesh)
 {
   std::set<std::array<int32_t, 3>> faces;
-  mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      if (mesh.neighbor(t, i) < 0)
-      {
-        int32_t f[3];
-        mesh.faceVertices(t, i, f);
-        std::sort(f, f + 3);
-        faces.insert({ f[0], f[1], f[2] });
-      }
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        if (mesh.neighbor(t, i) < 0)
+        {
+          int32_t f[3];
+          mesh.faceVertices(t, i, f);
+          std::sort(f, f + 3);
+          faces.insert({ f[0], f[1], f[2] });
+        }
+    });
   return faces;
 }
 // The smallest valid target, as text ("none" when there is none).
@@ -205,7 +207,8 @@ int runRefineCommand(int argc, char** argv)
     return 2;
   // An OpenFOAM case is a directory, checked by its writer.
   if (format != volgrid::MeshFormat::OpenFOAM)
-    if (const int code = volgrid::cli::checkOutputPath("refine", "OUT", positional[1],
+    if (const int code = volgrid::cli::checkOutputPath(
+          "refine", "OUT", positional[1],
           { vtkOutput ? std::string("vtu") : volgrid::surfaceFileExtension(positional[1]) }, { positional[0] }))
       return code;
   vtkSmartPointer<vtkDataSet> data = volgrid::cli::readDataSet(positional[0]);
@@ -226,7 +229,7 @@ int runRefineCommand(int argc, char** argv)
     if (grid->GetCellType(c) != VTK_TETRA)
     {
       std::fprintf(stderr, "volgrid refine: cell %lld is not a tetrahedron (only tet meshes are refined)\n",
-        static_cast<long long>(c));
+                   static_cast<long long>(c));
       return 1;
     }
     vtkIdType npts = 0;
@@ -242,7 +245,7 @@ int runRefineCommand(int argc, char** argv)
   if (!hasPatches && !vtkOutput)
   {
     std::fprintf(stderr, "volgrid refine: cannot write a solver mesh from '%s': %s\n", positional[0].c_str(),
-      patchError.c_str());
+                 patchError.c_str());
     return 1;
   }
   vtkDataArray* sizeArray = grid->GetPointData()->GetArray(arrayName.c_str());
@@ -263,7 +266,8 @@ int runRefineCommand(int argc, char** argv)
   const volgrid::SizeEstimate estimate =
     volgrid::estimateRefineSize(points, tets, target, options.fieldPointOptions.alpha);
   if (volgrid::cli::refuseIfTooLarge("refine", estimate, maxTets,
-        "the target sizes of point array '" + arrayName + "' (smallest " + smallestTarget(target) + ")"))
+                                     "the target sizes of point array '" + arrayName + "' (smallest " +
+                                       smallestTarget(target) + ")"))
     return 1;
 
   volgrid::TetMesh mesh;
@@ -311,12 +315,12 @@ int runRefineCommand(int argc, char** argv)
   std::string writeError;
   if (!boundaryIdentical)
     std::fprintf(stderr, "volgrid refine: the boundary changed (a bug: please report it); '%s' not written\n",
-      positional[1].c_str());
+                 positional[1].c_str());
   else if (!vtkOutput)
   {
     volgrid::SolverMesh refined;
     if (!VolGridSolverMeshFromGrid(out, refined, writeError) ||
-      !volgrid::cli::writeSolverOutput("refine", positional[1], format, refined, exportRequest, json))
+        !volgrid::cli::writeSolverOutput("refine", positional[1], format, refined, exportRequest, json))
     {
       if (!writeError.empty())
         std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());
@@ -332,16 +336,17 @@ int runRefineCommand(int argc, char** argv)
     std::printf("{\"input\": %s, \"points_before\": %lld, \"tets_before\": %lld, \"points\": %d, \"tets\": %d, "
                 "\"inserted\": %lld, \"passes\": %d, \"boundary_identical\": %s, \"min_dihedral\": %s, "
                 "\"max_dihedral\": %s, \"share_below_10\": %s, \"seconds\": %.6f}\n",
-      volgrid::cli::jsonString(positional[0]).c_str(), static_cast<long long>(np), static_cast<long long>(nc),
-      mesh.numVertices(), mesh.numFiniteTets(), static_cast<long long>(report.inserted), report.passes,
-      boundaryIdentical ? "true" : "false", volgrid::cli::jsonNumber(report.after.minDihedral, "%.4f").c_str(),
-      volgrid::cli::jsonNumber(report.after.maxDihedral, "%.4f").c_str(),
-      volgrid::cli::jsonNumber(report.after.shareBelow10(), "%.6g").c_str(), seconds);
+                volgrid::cli::jsonString(positional[0]).c_str(), static_cast<long long>(np), static_cast<long long>(nc),
+                mesh.numVertices(), mesh.numFiniteTets(), static_cast<long long>(report.inserted), report.passes,
+                boundaryIdentical ? "true" : "false",
+                volgrid::cli::jsonNumber(report.after.minDihedral, "%.4f").c_str(),
+                volgrid::cli::jsonNumber(report.after.maxDihedral, "%.4f").c_str(),
+                volgrid::cli::jsonNumber(report.after.shareBelow10(), "%.6g").c_str(), seconds);
   else
     std::printf("%s: %lld points, %lld tets -> %d points, %d tets (%lld inserted) in %.3f s; dihedral angles "
                 "%.2f..%.2f deg; boundary %s\n",
-      positional[0].c_str(), static_cast<long long>(np), static_cast<long long>(nc), mesh.numVertices(),
-      mesh.numFiniteTets(), static_cast<long long>(report.inserted), seconds, report.after.minDihedral,
-      report.after.maxDihedral, boundaryIdentical ? "identical" : "CHANGED");
+                positional[0].c_str(), static_cast<long long>(np), static_cast<long long>(nc), mesh.numVertices(),
+                mesh.numFiniteTets(), static_cast<long long>(report.inserted), seconds, report.after.minDihedral,
+                report.after.maxDihedral, boundaryIdentical ? "identical" : "CHANGED");
   return boundaryIdentical ? 0 : 1;
 }

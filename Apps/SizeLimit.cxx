@@ -66,14 +66,14 @@ bool refuseIfTooLarge(const char* command, const SizeEstimate& e, long long maxT
     std::snprintf(buffer, sizeof buffer, "--max-tets %lld", maxTets);
   else
     std::snprintf(buffer, sizeof buffer, "%s of memory available (--max-tets N sets a limit in tets instead)",
-      humanBytes(available).c_str());
+                  humanBytes(available).c_str());
   limit = buffer;
   std::fprintf(stderr,
-    "volgrid %s: %s would make %s tets on %s points, needing %s of memory; that exceeds the "
-    "limit of %s. Refused before any work: %s.\n",
-    command, cause.c_str(), about(count(e.tets)).c_str(), about(count(e.points)).c_str(),
-    about(humanBytes(e.bytes)).c_str(),
-    limit.c_str(), e.driver == SizeDriver::PointCount ? "use fewer points" : "choose a coarser size");
+               "volgrid %s: %s would make %s tets on %s points, needing %s of memory; that exceeds the "
+               "limit of %s. Refused before any work: %s.\n",
+               command, cause.c_str(), about(count(e.tets)).c_str(), about(count(e.points)).c_str(),
+               about(humanBytes(e.bytes)).c_str(), limit.c_str(),
+               e.driver == SizeDriver::PointCount ? "use fewer points" : "choose a coarser size");
   return true;
 }
 } // namespace cli

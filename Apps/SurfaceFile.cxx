@@ -24,8 +24,8 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -40,7 +40,9 @@ namespace
 // Empty when `path` is a regular file that opens; otherwise the reason, in the user's terms.
 std::string unreadableReason(const std::string& path)
 {
-  struct stat st{};
+  struct stat st
+  {
+  };
   if (::stat(path.c_str(), &st) != 0)
     return std::string("cannot open the file: ") + std::strerror(errno);
   if (S_ISDIR(st.st_mode))
@@ -90,8 +92,9 @@ public:
     if (::close(fd) != 0 && writeErrno == 0)
       writeErrno = errno;
     if (writeErrno != 0)
-      return Status::failure(ErrorKind::InvalidOption, gzPath + ": writing the decompressed temporary file '" + name +
-          "' failed: " + std::strerror(writeErrno));
+      return Status::failure(ErrorKind::InvalidOption,
+                             gzPath + ": writing the decompressed temporary file '" + name +
+                               "' failed: " + std::strerror(writeErrno));
     return Status::success();
   }
   ~DecompressedCopy()
@@ -107,7 +110,7 @@ private:
 
 // `path` names the file in messages; `readPath` is the file VTK reads (a decompressed copy or path).
 Status readWithVtk(const std::string& path, const std::string& readPath, const std::string& ext, SurfaceMesh& mesh,
-  std::string& info)
+                   std::string& info)
 {
   vtkSmartPointer<vtkDataObject> data;
   std::string format;
@@ -137,7 +140,8 @@ Status readWithVtk(const std::string& path, const std::string& readPath, const s
   VolGridSurfaceConversionInfo conversion;
   if (!surface || surface->GetNumberOfPoints() == 0)
   {
-    return Status::failure(ErrorKind::EmptyInput, path + ": no points could be read (unreadable, empty or not a surface)");
+    return Status::failure(ErrorKind::EmptyInput,
+                           path + ": no points could be read (unreadable, empty or not a surface)");
   }
   if (!VolGridPolyDataToSurfaceMesh(surface, mesh, &conversion))
   {
@@ -247,9 +251,11 @@ Status readAnySurface(const std::string& path, SurfaceMesh& mesh, std::string& i
   info.clear();
   if (!surfaceFileSupported(path))
   {
-    return Status::failure(ErrorKind::InvalidOption,
-      path + ": unknown surface file type (expected .off .mesh .poly .smesh .msh .stl .obj .ply .vtp .vtk, or one "
-             "of them gzip-compressed as .gz)");
+    return Status::failure(
+      ErrorKind::InvalidOption,
+      path +
+        ": unknown surface file type (expected .off .mesh .poly .smesh .msh .stl .obj .ply .vtp .vtk, or one "
+        "of them gzip-compressed as .gz)");
   }
   const std::string unreadable = unreadableReason(path);
   if (!unreadable.empty())

@@ -23,7 +23,7 @@ namespace cli
 {
 namespace
 {
-template <class Reader>
+template<class Reader>
 vtkSmartPointer<vtkDataSet> readWith(const std::string& path)
 {
   vtkNew<Reader> reader;
@@ -39,7 +39,7 @@ vtkSmartPointer<vtkDataSet> readWith(const std::string& path)
 // Inline binary: every DataArray carries its own base64 text, so no <AppendedData> block exists. The
 // document is built in memory and then written atomically (AtomicFile.h): a failed write never leaves a
 // cut file or destroys the earlier one.
-template <class Writer>
+template<class Writer>
 bool writeWith(const std::string& path, vtkDataSet* data, std::string& error)
 {
   vtkNew<Writer> writer;
@@ -85,7 +85,8 @@ bool writeXmlDataSet(const std::string& path, vtkDataSet* data, std::string& err
     return writeWith<vtkXMLUnstructuredGridWriter>(path, data, error);
   if (ext == "vtp" && vtkPolyData::SafeDownCast(data))
     return writeWith<vtkXMLPolyDataWriter>(path, data, error);
-  error = path + ": a " + (vtkPolyData::SafeDownCast(data) ? "surface is written as .vtp" : "volume mesh is written as .vtu");
+  error =
+    path + ": a " + (vtkPolyData::SafeDownCast(data) ? "surface is written as .vtp" : "volume mesh is written as .vtu");
   return false;
 }
 } // namespace cli

@@ -22,7 +22,8 @@ const SubCommand kCommands[] = {
   { "delaunay", runDelaunayCommand,
     "INPUT.node | --random N [--seed S]  [--check] [--json] [--out FILE.vtu]: Delaunay tetrahedralization" },
   { "mesh", runMeshCommand,
-    "SURFACE OUT.vtu|.msh|.su2|.mesh [--format openfoam] [--patch NAME=ID,...] [--json] [--boundary OUT.vtp] [--check] [--alpha A ...]: boundary-conforming volume mesh" },
+    "SURFACE OUT.vtu|.msh|.su2|.mesh [--format openfoam] [--patch NAME=ID,...] [--json] [--boundary OUT.vtp] [--check] "
+    "[--alpha A ...]: boundary-conforming volume mesh" },
   { "refine", runRefineCommand,
     "MESH.vtu OUT.vtu --size-array NAME [--alpha A] [--json]: refine a tet mesh to a target size (adaptivity)" },
   { "quality", runQualityCommand, "MESH.vtu [--json] [--bins N]: volume or surface grid quality summary" },
@@ -68,14 +69,18 @@ int main(int argc, char** argv)
       }
       catch (const std::bad_alloc&)
       {
-        std::fprintf(stderr, "volgrid %s: out of memory (the size estimate did not foresee this run: try a coarser "
-                             "size or --max-tets, and please report the command)\n", c.name);
+        std::fprintf(stderr,
+                     "volgrid %s: out of memory (the size estimate did not foresee this run: try a coarser "
+                     "size or --max-tets, and please report the command)\n",
+                     c.name);
         return 3;
       }
       catch (const std::exception& e)
       {
-        std::fprintf(stderr, "volgrid %s: internal error: %s (a bug: please report it with the command and the "
-                             "input file)\n", c.name, e.what());
+        std::fprintf(stderr,
+                     "volgrid %s: internal error: %s (a bug: please report it with the command and the "
+                     "input file)\n",
+                     c.name, e.what());
         return 3;
       }
     }

@@ -1,28 +1,28 @@
 #include "VolGridConversion.h"
 
 #include "vtkCellArray.h"
-#include "vtkCellType.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
-#include "vtkPointData.h"
 #include "vtkIntArray.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkPolyData.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include "BoundaryFaceOwners.h"
 #include "Mesher.h"
-#include "TetMesh.h"
 #include "SolverMesh.h"
+#include "TetMesh.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkStringArray.h"
 
-void VolGridFillUnstructuredGrid(
-  const volgrid::TetMesh& mesh, const std::vector<int32_t>& keptVertices, vtkUnstructuredGrid* grid)
+void VolGridFillUnstructuredGrid(const volgrid::TetMesh& mesh, const std::vector<int32_t>& keptVertices,
+                                 vtkUnstructuredGrid* grid)
 {
   const vtkIdType numPoints = static_cast<vtkIdType>(keptVertices.size());
   std::vector<vtkIdType> vertexToOutput(static_cast<size_t>(mesh.numVertices()), -1);
@@ -43,15 +43,17 @@ void VolGridFillUnstructuredGrid(
   vtkIdType* offset = offsets->GetPointer(0);
   vtkIdType* corner = connectivity->GetPointer(0);
   vtkIdType cell = 0;
-  mesh.forEachFiniteTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    offset[cell] = 4 * cell;
-    for (int i = 0; i < 4; ++i)
+  mesh.forEachFiniteTet(
+    [&](int32_t t)
     {
-      corner[4 * cell + i] = vertexToOutput[v[i]];
-    }
-    ++cell;
-  });
+      const int32_t* v = mesh.vertices(t);
+      offset[cell] = 4 * cell;
+      for (int i = 0; i < 4; ++i)
+      {
+        corner[4 * cell + i] = vertexToOutput[v[i]];
+      }
+      ++cell;
+    });
   offset[numTets] = 4 * numTets;
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, connectivity);
@@ -90,8 +92,8 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int32_
 }
 } // namespace
 
-void VolGridFillFromMesherResult(
-  const volgrid::MesherResult& result, vtkUnstructuredGrid* volume, vtkPolyData* boundary)
+void VolGridFillFromMesherResult(const volgrid::MesherResult& result, vtkUnstructuredGrid* volume,
+                                 vtkPolyData* boundary)
 {
   const vtkIdType numPoints = static_cast<vtkIdType>(result.points.size() / 3);
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -114,7 +116,8 @@ void VolGridFillFromMesherResult(
     volume->GetCellData()->AddArray(forced);
   }
   volume->GetCellData()->RemoveArray("BoundaryFacePatch");
-  volume->GetCellData()->AddArray(VolGridBoundaryFacePatch(result.tets, result.boundaryTriangles, result.boundaryPatch));
+  volume->GetCellData()->AddArray(
+    VolGridBoundaryFacePatch(result.tets, result.boundaryTriangles, result.boundaryPatch));
   if (boundary)
   {
     boundary->SetPoints(points);
@@ -125,7 +128,8 @@ void VolGridFillFromMesherResult(
 }
 
 vtkSmartPointer<vtkIntArray> VolGridBoundaryFacePatch(const std::vector<int32_t>& tets,
-  const std::vector<int32_t>& triangles, const std::vector<int32_t>& patches)
+                                                      const std::vector<int32_t>& triangles,
+                                                      const std::vector<int32_t>& patches)
 {
   auto array = vtkSmartPointer<vtkIntArray>::New();
   array->SetName("BoundaryFacePatch");
@@ -141,7 +145,7 @@ vtkSmartPointer<vtkIntArray> VolGridBoundaryFacePatch(const std::vector<int32_t>
 }
 
 void VolGridSetLabelNames(vtkDataObject* data, const char* arrayName, const std::vector<int32_t>& labels,
-  const std::map<int32_t, std::string>& names, const char* prefix)
+                          const std::map<int32_t, std::string>& names, const char* prefix)
 {
   const std::vector<int32_t> distinct = volgrid::distinctLabels(labels);
   vtkNew<vtkStringArray> array;
@@ -155,8 +159,9 @@ void VolGridSetLabelNames(vtkDataObject* data, const char* arrayName, const std:
 }
 
 void VolGridSetPatchAndRegionNames(const volgrid::MesherResult& result,
-  const std::map<int32_t, std::string>& patchNames, const std::map<int32_t, std::string>& regionNames,
-  vtkUnstructuredGrid* volume, vtkPolyData* boundary)
+                                   const std::map<int32_t, std::string>& patchNames,
+                                   const std::map<int32_t, std::string>& regionNames, vtkUnstructuredGrid* volume,
+                                   vtkPolyData* boundary)
 {
   VolGridSetLabelNames(volume, "PatchNames", result.boundaryPatch, patchNames, "patch");
   VolGridSetLabelNames(volume, "RegionNames", result.tetRegion, regionNames, "region");

@@ -38,7 +38,7 @@ struct CellRef
 };
 
 void assemble(const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, vtkUnstructuredGrid* whole,
-  std::vector<std::vector<vtkIdType>>& cellsOfRank)
+              std::vector<std::vector<vtkIdType>>& cellsOfRank)
 {
   std::vector<vtkIdType> pointIds;
   std::vector<CellRef> cells;
@@ -58,12 +58,11 @@ void assemble(const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, vtkUnst
   }
   std::sort(pointIds.begin(), pointIds.end());
   pointIds.erase(std::unique(pointIds.begin(), pointIds.end()), pointIds.end());
-  std::sort(cells.begin(), cells.end(), [](const CellRef& a, const CellRef& b) {
-    return std::tie(a.global, a.rank, a.local) < std::tie(b.global, b.rank, b.local);
-  });
-  auto index = [&](vtkIdType gid) {
-    return static_cast<vtkIdType>(std::lower_bound(pointIds.begin(), pointIds.end(), gid) - pointIds.begin());
-  };
+  std::sort(cells.begin(), cells.end(),
+            [](const CellRef& a, const CellRef& b)
+            { return std::tie(a.global, a.rank, a.local) < std::tie(b.global, b.rank, b.local); });
+  auto index = [&](vtkIdType gid)
+  { return static_cast<vtkIdType>(std::lower_bound(pointIds.begin(), pointIds.end(), gid) - pointIds.begin()); };
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(pointIds.size()));
@@ -96,13 +95,12 @@ void assemble(const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, vtkUnst
 } // namespace
 
 bool VolGridGatherGrid(vtkMultiProcessController* controller, vtkUnstructuredGrid* local,
-  vtkSmartPointer<vtkUnstructuredGrid>& whole, std::vector<std::vector<vtkIdType>>& cellsOfRank)
+                       vtkSmartPointer<vtkUnstructuredGrid>& whole, std::vector<std::vector<vtkIdType>>& cellsOfRank)
 {
   const bool empty = !local || local->GetNumberOfCells() == 0;
-  int mine = empty || (local->GetPointData()->GetArray("GlobalPointIds") &&
-                        local->GetCellData()->GetArray("GlobalCellIds"))
-    ? 1
-    : 0;
+  int mine =
+    empty || (local->GetPointData()->GetArray("GlobalPointIds") && local->GetCellData()->GetArray("GlobalCellIds")) ? 1
+                                                                                                                    : 0;
   int all = 0;
   controller->AllReduce(&mine, &all, 1, vtkCommunicator::MIN_OP);
   if (!all)
@@ -119,8 +117,8 @@ bool VolGridGatherGrid(vtkMultiProcessController* controller, vtkUnstructuredGri
   return true;
 }
 
-void VolGridScatterCellArrays(vtkMultiProcessController* controller, vtkDataSet* wholeResult,
-  vtkFieldData* fieldData, const std::vector<std::vector<vtkIdType>>& cellsOfRank, vtkDataSet* output)
+void VolGridScatterCellArrays(vtkMultiProcessController* controller, vtkDataSet* wholeResult, vtkFieldData* fieldData,
+                              const std::vector<std::vector<vtkIdType>>& cellsOfRank, vtkDataSet* output)
 {
   auto received = vtkSmartPointer<vtkTable>::New();
   if (controller->GetLocalProcessId() == 0)
@@ -129,8 +127,8 @@ void VolGridScatterCellArrays(vtkMultiProcessController* controller, vtkDataSet*
     for (int r = controller->GetNumberOfProcesses() - 1; r >= 0; --r)
     {
       auto table = vtkSmartPointer<vtkTable>::New();
-      const std::vector<vtkIdType>& cells = r < static_cast<int>(cellsOfRank.size()) ? cellsOfRank[r]
-                                                                                      : std::vector<vtkIdType>();
+      const std::vector<vtkIdType>& cells =
+        r < static_cast<int>(cellsOfRank.size()) ? cellsOfRank[r] : std::vector<vtkIdType>();
       for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
       {
         vtkDataArray* source = cd->GetArray(a);

@@ -93,8 +93,8 @@ vtkMultiProcessController* VolGridParallelController()
   return c && c->GetNumberOfProcesses() > 1 ? c : nullptr;
 }
 
-std::vector<std::vector<vtkSmartPointer<vtkDataSet>>> VolGridGatherParts(
-  vtkMultiProcessController* controller, const std::vector<vtkDataSet*>& local)
+std::vector<std::vector<vtkSmartPointer<vtkDataSet>>> VolGridGatherParts(vtkMultiProcessController* controller,
+                                                                         const std::vector<vtkDataSet*>& local)
 {
   int mine = static_cast<int>(local.size()), slots = 0;
   controller->AllReduce(&mine, &slots, 1, vtkCommunicator::MAX_OP);
@@ -123,8 +123,8 @@ vtkSmartPointer<vtkPointSet> VolGridGatherPointSet(vtkMultiProcessController* co
   const auto& pieces = parts[0];
   if (pieces.size() == 1 && vtkPointSet::SafeDownCast(pieces[0]))
     return vtkPointSet::SafeDownCast(pieces[0]);
-  const bool allPoly = std::all_of(
-    pieces.begin(), pieces.end(), [](const vtkSmartPointer<vtkDataSet>& p) { return vtkPolyData::SafeDownCast(p); });
+  const bool allPoly = std::all_of(pieces.begin(), pieces.end(),
+                                   [](const vtkSmartPointer<vtkDataSet>& p) { return vtkPolyData::SafeDownCast(p); });
   if (allPoly)
   {
     if (pieces.empty())
@@ -150,8 +150,8 @@ bool VolGridBroadcastFlag(vtkMultiProcessController* controller, bool flag)
   return value != 0;
 }
 
-void VolGridDistributeCells(
-  vtkMultiProcessController* controller, vtkUnstructuredGrid* whole, vtkUnstructuredGrid* piece)
+void VolGridDistributeCells(vtkMultiProcessController* controller, vtkUnstructuredGrid* whole,
+                            vtkUnstructuredGrid* piece)
 {
   const int ranks = controller->GetNumberOfProcesses();
   if (controller->GetLocalProcessId() != 0)
@@ -166,8 +166,7 @@ void VolGridDistributeCells(
   ided->GetPointData()->AddArray(iotaArray("GlobalPointIds", whole->GetNumberOfPoints()));
   ided->GetCellData()->AddArray(iotaArray("GlobalCellIds", whole->GetNumberOfCells()));
   const std::vector<double> centroids = cellCentroids(whole);
-  const std::vector<int32_t> part =
-    volgrid::bisectionPartition(centroids.data(), whole->GetNumberOfCells(), ranks);
+  const std::vector<int32_t> part = volgrid::bisectionPartition(centroids.data(), whole->GetNumberOfCells(), ranks);
   std::vector<vtkSmartPointer<vtkIdList>> lists(ranks);
   for (auto& list : lists)
     list = vtkSmartPointer<vtkIdList>::New();

@@ -23,8 +23,8 @@ vtkMultiProcessController* VolGridParallelController();
  * of the ranks' local[k] that have cells or points (ghost cells removed). Ranks may pass different numbers
  * of slots (missing ones are empty). Rank 0 gets the slots, the other ranks an empty vector.
  */
-std::vector<std::vector<vtkSmartPointer<vtkDataSet>>> VolGridGatherParts(
-  vtkMultiProcessController* controller, const std::vector<vtkDataSet*>& local);
+std::vector<std::vector<vtkSmartPointer<vtkDataSet>>> VolGridGatherParts(vtkMultiProcessController* controller,
+                                                                         const std::vector<vtkDataSet*>& local);
 
 /**
  * Gathers the ranks' pieces of one data set onto rank 0 as one data set (a vtkPolyData when every piece
@@ -42,8 +42,8 @@ bool VolGridBroadcastFlag(vtkMultiProcessController* controller, bool flag);
  * the point and cell data, plus the global ids GlobalPointIds (the point's index in `whole`) and
  * GlobalCellIds (the cell's index in `whole`), set as the attributes' global ids.
  */
-void VolGridDistributeCells(
-  vtkMultiProcessController* controller, vtkUnstructuredGrid* whole, vtkUnstructuredGrid* piece);
+void VolGridDistributeCells(vtkMultiProcessController* controller, vtkUnstructuredGrid* whole,
+                            vtkUnstructuredGrid* piece);
 
 /**
  * Gathers the ranks' pieces of a grid that carries GlobalPointIds and GlobalCellIds onto rank 0 as the one
@@ -53,13 +53,13 @@ void VolGridDistributeCells(
  * the global ids.
  */
 bool VolGridGatherGrid(vtkMultiProcessController* controller, vtkUnstructuredGrid* local,
-  vtkSmartPointer<vtkUnstructuredGrid>& whole, std::vector<std::vector<vtkIdType>>& cellsOfRank);
+                       vtkSmartPointer<vtkUnstructuredGrid>& whole, std::vector<std::vector<vtkIdType>>& cellsOfRank);
 
 /**
  * The reverse of VolGridGatherGrid for results: rank 0 sends each rank the cell arrays of `wholeResult`
  * restricted to its cells, and `fieldData` (its summary); every rank adds them to `output`.
  */
-void VolGridScatterCellArrays(vtkMultiProcessController* controller, vtkDataSet* wholeResult,
-  vtkFieldData* fieldData, const std::vector<std::vector<vtkIdType>>& cellsOfRank, vtkDataSet* output);
+void VolGridScatterCellArrays(vtkMultiProcessController* controller, vtkDataSet* wholeResult, vtkFieldData* fieldData,
+                              const std::vector<std::vector<vtkIdType>>& cellsOfRank, vtkDataSet* output);
 
 #endif

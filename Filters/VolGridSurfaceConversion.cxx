@@ -15,16 +15,16 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include "PolygonTriangulation.h"
 #include "SurfaceMesh.h"
 #include "SurfaceReader.h"
-#include "PolygonTriangulation.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 bool VolGridAppendSurface(vtkDataSet* input, volgrid::SurfaceMesh& mesh, const char* patchArrayName,
-  int32_t patchOffset, int32_t defaultPatch, VolGridSurfaceConversionInfo* info)
+                          int32_t patchOffset, int32_t defaultPatch, VolGridSurfaceConversionInfo* info)
 {
   VolGridSurfaceConversionInfo local;
   VolGridSurfaceConversionInfo& out = info ? *info : local;
@@ -42,8 +42,7 @@ bool VolGridAppendSurface(vtkDataSet* input, volgrid::SurfaceMesh& mesh, const c
     mesh.points.insert(mesh.points.end(), p, p + 3);
   }
 
-  vtkDataArray* patchArray =
-    patchArrayName ? input->GetCellData()->GetArray(patchArrayName) : nullptr;
+  vtkDataArray* patchArray = patchArrayName ? input->GetCellData()->GetArray(patchArrayName) : nullptr;
   // A patch id per new triangle; the mesh gets patch ids when it has some already or any are >= 0.
   const size_t firstTriangle = static_cast<size_t>(mesh.numberOfTriangles());
   std::vector<int32_t> newPatches;
@@ -59,7 +58,7 @@ bool VolGridAppendSurface(vtkDataSet* input, volgrid::SurfaceMesh& mesh, const c
   {
     const int type = input->GetCellType(c);
     if (type != VTK_TRIANGLE && type != VTK_QUAD && type != VTK_POLYGON && type != VTK_PIXEL &&
-      type != VTK_TRIANGLE_STRIP)
+        type != VTK_TRIANGLE_STRIP)
     {
       ++out.skippedCells;
       continue;
@@ -82,7 +81,8 @@ bool VolGridAppendSurface(vtkDataSet* input, volgrid::SurfaceMesh& mesh, const c
       const double v = patchArray->GetComponent(c, 0);
       patch = std::isfinite(v) ? static_cast<int32_t>(std::lround(v)) + patchOffset : defaultPatch;
     }
-    auto add = [&](vtkIdType a, vtkIdType b, vtkIdType d) {
+    auto add = [&](vtkIdType a, vtkIdType b, vtkIdType d)
+    {
       mesh.triangles.push_back(base + static_cast<int32_t>(a));
       mesh.triangles.push_back(base + static_cast<int32_t>(b));
       mesh.triangles.push_back(base + static_cast<int32_t>(d));
@@ -132,8 +132,8 @@ bool VolGridAppendSurface(vtkDataSet* input, volgrid::SurfaceMesh& mesh, const c
     }
   }
 
-  const bool anyPatch = mesh.hasPatchIds() ||
-    std::any_of(newPatches.begin(), newPatches.end(), [](int32_t p) { return p >= 0; });
+  const bool anyPatch =
+    mesh.hasPatchIds() || std::any_of(newPatches.begin(), newPatches.end(), [](int32_t p) { return p >= 0; });
   if (anyPatch)
   {
     mesh.patchIds.resize(firstTriangle, -1);

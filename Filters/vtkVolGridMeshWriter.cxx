@@ -32,8 +32,8 @@ namespace
 volgrid::MeshFormat chooseFormat(const char* formatName, std::string& path)
 {
   const bool foam = path.size() > 5 && path.compare(path.size() - 5, 5, ".foam") == 0;
-  volgrid::MeshFormat format = formatName && *formatName ? volgrid::meshFormatFromName(formatName)
-                                                         : volgrid::meshFormatFromPath(path);
+  volgrid::MeshFormat format =
+    formatName && *formatName ? volgrid::meshFormatFromName(formatName) : volgrid::meshFormatFromPath(path);
   if (foam && (format == volgrid::MeshFormat::Unknown || format == volgrid::MeshFormat::OpenFOAM))
   {
     path.resize(path.size() - 5);
@@ -52,8 +52,8 @@ void vtkVolGridMeshWriter::WriteData()
   if (path.empty())
     this->LastError = "no file name";
   else if (format == volgrid::MeshFormat::Unknown)
-    this->LastError = "cannot tell the solver format of '" + path +
-      "' (.msh .su2 .mesh .node .cgns .exo, .foam for an OpenFOAM case)";
+    this->LastError =
+      "cannot tell the solver format of '" + path + "' (.msh .su2 .mesh .node .cgns .exo, .foam for an OpenFOAM case)";
   else if (!VolGridSolverMeshFromGrid(vtkUnstructuredGrid::SafeDownCast(this->GetInput()), mesh, this->LastError))
     this->LastError = "cannot write '" + path + "': " + this->LastError;
   else

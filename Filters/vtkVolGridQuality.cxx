@@ -1,8 +1,8 @@
 // vtkVolGridQuality: a thin adapter from VTK grids to Core/Quality/Quality.h and Core/Quality/QualityStatistics.h.
 #include "vtkVolGridQuality.h"
 
-#include "Quality.h"
 #include "CfdQuality.h"
+#include "Quality.h"
 #include "QualityStatistics.h"
 
 #include "VolGridParallel.h"
@@ -117,7 +117,7 @@ vtkSmartPointer<vtkDoubleArray> newCellArray(const char* name, vtkIdType n)
 
 // Runs body(begin, end) over [0, n) with vtkSMPTools in a few sequential blocks, reporting progress in
 // [p0, p1] between blocks; false if the user aborted.
-template <typename Body>
+template<typename Body>
 bool parallelBlocks(vtkAlgorithm* self, vtkIdType n, double p0, double p1, const Body& body)
 {
   const vtkIdType blocks = n > 100000 ? 10 : 1;
@@ -140,22 +140,26 @@ vq::Statistics parallelStatistics(const double* v, vtkIdType n, int bins, vq::Wo
   const vtkIdType chunk = vq::kStatisticsChunk;
   const vtkIdType chunks = (n + chunk - 1) / chunk;
   std::vector<vq::Partial> partials(static_cast<size_t>(chunks));
-  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType first, vtkIdType last) {
-    for (vtkIdType c = first; c < last; ++c)
-    {
-      partials[c] = vq::accumulate(v, c * chunk, std::min(n, (c + 1) * chunk));
-    }
-  });
+  vtkSMPTools::For(0, chunks, 1,
+                   [&](vtkIdType first, vtkIdType last)
+                   {
+                     for (vtkIdType c = first; c < last; ++c)
+                     {
+                       partials[c] = vq::accumulate(v, c * chunk, std::min(n, (c + 1) * chunk));
+                     }
+                   });
   const vq::Partial all = vq::mergeInOrder(partials);
   std::vector<double> edges = all.count ? vq::binEdges(all.min, all.max, bins) : vq::binEdges(1.0, 0.0, bins);
   const size_t nb = edges.size() - 1;
   std::vector<int64_t> chunkCounts(static_cast<size_t>(chunks) * nb, 0);
-  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType first, vtkIdType last) {
-    for (vtkIdType c = first; c < last; ++c)
-    {
-      vq::histogram(v, c * chunk, std::min(n, (c + 1) * chunk), edges, chunkCounts.data() + c * nb);
-    }
-  });
+  vtkSMPTools::For(0, chunks, 1,
+                   [&](vtkIdType first, vtkIdType last)
+                   {
+                     for (vtkIdType c = first; c < last; ++c)
+                     {
+                       vq::histogram(v, c * chunk, std::min(n, (c + 1) * chunk), edges, chunkCounts.data() + c * nb);
+                     }
+                   });
   std::vector<int64_t> counts(nb, 0);
   for (vtkIdType c = 0; c < chunks; ++c)
   {
@@ -185,12 +189,14 @@ const double* flatPoints(vtkPoints* points, std::vector<double>& storage)
   }
   const vtkIdType n = points->GetNumberOfPoints();
   storage.resize(static_cast<size_t>(3 * n));
-  vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
-    for (vtkIdType i = first; i < last; ++i)
-    {
-      data->GetTuple(i, storage.data() + 3 * i);
-    }
-  });
+  vtkSMPTools::For(0, n,
+                   [&](vtkIdType first, vtkIdType last)
+                   {
+                     for (vtkIdType i = first; i < last; ++i)
+                     {
+                       data->GetTuple(i, storage.data() + 3 * i);
+                     }
+                   });
   return storage.data();
 }
 } // namespace
@@ -199,12 +205,12 @@ struct vtkVolGridQuality::Internals
 {
   // Measures the tets of a flat connectivity (4 ids per tet) into the arrays given by out (indexed like
   // the tets), including the volume gradient. False if aborted.
-  template <typename Id>
+  template<typename Id>
   static bool MeasureTets(vtkVolGridQuality* self, const double* points, vtkIdType numPoints, const Id* tets,
-    vtkIdType numTets, const vq::TetMetricArrays& out, double* gradient)
+                          vtkIdType numTets, const vq::TetMetricArrays& out, double* gradient)
   {
     if (!parallelBlocks(self, numTets, 0.0, 0.5,
-          [&](vtkIdType b, vtkIdType e) { vq::measureTets(points, tets, b, e, out); }))
+                        [&](vtkIdType b, vtkIdType e) { vq::measureTets(points, tets, b, e, out); }))
     {
       return false;
     }
@@ -213,13 +219,16 @@ struct vtkVolGridQuality::Internals
     incidence.reset(numPoints, numTets);
     // One point range per thread: each pass reads all tets but writes only its own points' rows.
     const vtkIdType ranges = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
-    auto pointRanges = [&](auto pass) {
-      vtkSMPTools::For(0, ranges, 1, [&](vtkIdType first, vtkIdType last) {
-        for (vtkIdType r = first; r < last; ++r)
-        {
-          pass(numPoints * r / ranges, numPoints * (r + 1) / ranges);
-        }
-      });
+    auto pointRanges = [&](auto pass)
+    {
+      vtkSMPTools::For(0, ranges, 1,
+                       [&](vtkIdType first, vtkIdType last)
+                       {
+                         for (vtkIdType r = first; r < last; ++r)
+                         {
+                           pass(numPoints * r / ranges, numPoints * (r + 1) / ranges);
+                         }
+                       });
     };
     pointRanges([&](vtkIdType b, vtkIdType e) { incidence.count(tets, b, e); });
     incidence.finishCounts();
@@ -227,37 +236,40 @@ struct vtkVolGridQuality::Internals
     self->UpdateProgress(0.6);
     self->SetProgressText("Volume gradient");
     return parallelBlocks(self, numTets, 0.6, 0.85,
-      [&](vtkIdType b, vtkIdType e) { vq::volumeGradient(tets, out.volume, incidence, b, e, gradient); });
+                          [&](vtkIdType b, vtkIdType e)
+                          { vq::volumeGradient(tets, out.volume, incidence, b, e, gradient); });
   }
 
-  template <typename Id>
+  template<typename Id>
   static bool IdsInRange(const Id* ids, vtkIdType n, vtkIdType numPoints)
   {
     std::atomic<bool> bad(false);
-    vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        if (ids[i] < 0 || ids[i] >= numPoints)
-        {
-          bad = true;
-          return;
-        }
-      }
-    });
+    vtkSMPTools::For(0, n,
+                     [&](vtkIdType first, vtkIdType last)
+                     {
+                       for (vtkIdType i = first; i < last; ++i)
+                       {
+                         if (ids[i] < 0 || ids[i] >= numPoints)
+                         {
+                           bad = true;
+                           return;
+                         }
+                       }
+                     });
     return !bad;
   }
 
   static bool Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input,
-    std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
+                     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
   // The CFD face metrics of a pure tet grid (Core/Quality/CfdQuality.h): three cell arrays and six figures.
   static void Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
-    std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
-  static bool Surface(vtkVolGridQuality* self, vtkPolyData* input,
-    std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
+                  std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
+  static bool Surface(vtkVolGridQuality* self, vtkPolyData* input, std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays,
+                      vtkFieldData* summary);
 };
 
 bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input,
-  std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
+                                          std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
@@ -373,7 +385,7 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
 }
 
 void vtkVolGridQuality::Internals::Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
-  std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
+                                       std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
 {
   self->SetProgressText("CFD face metrics");
   const vtkIdType numCells = input->GetNumberOfCells();
@@ -389,7 +401,8 @@ void vtkVolGridQuality::Internals::Cfd(vtkVolGridQuality* self, vtkUnstructuredG
   vq::CfdCellMetrics cells;
   const vq::CfdSummary s = vq::cfdMetrics(xyz, tets, &cells);
   const std::pair<const char*, std::vector<double>*> columns[] = { { "NonOrthogonality", &cells.nonOrthogonality },
-    { "Skewness", &cells.skewness }, { "VolumeRatio", &cells.volumeRatio } };
+                                                                   { "Skewness", &cells.skewness },
+                                                                   { "VolumeRatio", &cells.volumeRatio } };
   for (const auto& column : columns)
   {
     arrays.push_back(newCellArray(column.first, numCells));
@@ -404,7 +417,7 @@ void vtkVolGridQuality::Internals::Cfd(vtkVolGridQuality* self, vtkUnstructuredG
 }
 
 bool vtkVolGridQuality::Internals::Surface(vtkVolGridQuality* self, vtkPolyData* input,
-  std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
+                                           std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
@@ -448,19 +461,21 @@ bool vtkVolGridQuality::Internals::Surface(vtkVolGridQuality* self, vtkPolyData*
   double* area = arrays[1]->GetPointer(0);
   double* minAngle = arrays[2]->GetPointer(0);
   double* maxAngle = arrays[3]->GetPointer(0);
-  if (!parallelBlocks(self, numTris, 0.0, 0.6, [&](vtkIdType b, vtkIdType e) {
-        for (vtkIdType t = b; t < e; ++t)
-        {
-          const int64_t* v = tris.data() + 3 * t;
-          const vq::TriangleMetrics m =
-            vq::triangleMetrics(points + 3 * v[0], points + 3 * v[1], points + 3 * v[2]);
-          const vtkIdType c = triCells[t];
-          aspect[c] = m.aspectRatio;
-          area[c] = m.area;
-          minAngle[c] = m.minAngle;
-          maxAngle[c] = m.maxAngle;
-        }
-      }))
+  if (!parallelBlocks(self, numTris, 0.0, 0.6,
+                      [&](vtkIdType b, vtkIdType e)
+                      {
+                        for (vtkIdType t = b; t < e; ++t)
+                        {
+                          const int64_t* v = tris.data() + 3 * t;
+                          const vq::TriangleMetrics m =
+                            vq::triangleMetrics(points + 3 * v[0], points + 3 * v[1], points + 3 * v[2]);
+                          const vtkIdType c = triCells[t];
+                          aspect[c] = m.aspectRatio;
+                          area[c] = m.area;
+                          minAngle[c] = m.minAngle;
+                          maxAngle[c] = m.maxAngle;
+                        }
+                      }))
   {
     return false;
   }
@@ -513,8 +528,8 @@ int vtkVolGridQuality::FillOutputPortInformation(int port, vtkInformation* info)
   return this->Superclass::FillOutputPortInformation(port, info);
 }
 
-int vtkVolGridQuality::RequestDataObject(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkVolGridQuality::RequestDataObject(vtkInformation*, vtkInformationVector** inputVector,
+                                         vtkInformationVector* outputVector)
 {
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   if (!input)
@@ -539,8 +554,8 @@ int vtkVolGridQuality::RequestDataObject(
   return 1;
 }
 
-int vtkVolGridQuality::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkVolGridQuality::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                   vtkInformationVector* outputVector)
 {
   vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
   vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
@@ -680,8 +695,8 @@ bool vtkVolGridQuality::Execute(vtkDataSet* input, vtkDataSet* output, vtkTable*
     {
       st->SetComponentName(c, components[c]);
     }
-    const double row[6] = { static_cast<double>(s.count), s.min, s.max, s.mean, s.stddev,
-      static_cast<double>(s.worstIndex) };
+    const double row[6] = { static_cast<double>(s.count),     s.min, s.max, s.mean, s.stddev,
+                            static_cast<double>(s.worstIndex) };
     st->InsertNextTuple(row);
     summary->AddArray(st);
 

@@ -1,5 +1,5 @@
-// vtkVolGridSurfacePrep: a thin adapter from VTK surfaces to Core/Surface/SurfaceRepair.h, Core/Surface/SurfaceChecks.h and
-// Core/Surface/Enclosures.h.
+// vtkVolGridSurfacePrep: a thin adapter from VTK surfaces to Core/Surface/SurfaceRepair.h, Core/Surface/SurfaceChecks.h
+// and Core/Surface/Enclosures.h.
 #include "vtkVolGridSurfacePrep.h"
 #include "VolGridConversion.h"
 
@@ -87,7 +87,7 @@ struct Row
 };
 
 std::vector<Row> summaryRows(const volgrid::SurfaceCheckReport* in, const volgrid::SurfaceCheckReport& out,
-  const volgrid::SurfaceRepairReport& rep, int64_t parts)
+                             const volgrid::SurfaceRepairReport& rep, int64_t parts)
 {
   auto before = [&](int64_t v) { return in ? v : -1; };
   std::vector<Row> rows = {
@@ -203,8 +203,8 @@ int vtkVolGridSurfacePrep::FillOutputPortInformation(int port, vtkInformation* i
   return 1;
 }
 
-int vtkVolGridSurfacePrep::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkVolGridSurfacePrep::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                       vtkInformationVector* outputVector)
 {
   vtkMultiProcessController* controller = VolGridParallelController();
   const int ok = this->Prepare(inputVector, outputVector, controller);
@@ -214,8 +214,8 @@ int vtkVolGridSurfacePrep::RequestData(
   return controller ? (VolGridBroadcastFlag(controller, ok != 0) ? 1 : 0) : ok;
 }
 
-int vtkVolGridSurfacePrep::Prepare(
-  vtkInformationVector** inputVector, vtkInformationVector* outputVector, vtkMultiProcessController* controller)
+int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+                                   vtkMultiProcessController* controller)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkTable* table = vtkTable::GetData(outputVector, 1);
@@ -234,7 +234,8 @@ int vtkVolGridSurfacePrep::Prepare(
   VolGridSurfaceConversionInfo conversion;
   // A part is one input connection or one leaf of a composite input; under MPI, the pieces of a part on
   // all ranks are gathered onto rank 0, which prepares the whole surface (the other ranks output nothing).
-  auto addPart = [&](const std::vector<vtkSmartPointer<vtkDataSet>>& pieces) {
+  auto addPart = [&](const std::vector<vtkSmartPointer<vtkDataSet>>& pieces)
+  {
     bool hasCells = false, hasPatchArray = false;
     for (vtkDataSet* piece : pieces)
     {
@@ -373,8 +374,8 @@ int vtkVolGridSurfacePrep::Prepare(
     }
     else
     {
-      options = volgrid::enclosureAround(
-        volgrid::boundingBox(mesh, true), shapeOf(this->Enclosure), this->EnclosureScale, this->EnclosureAxis);
+      options = volgrid::enclosureAround(volgrid::boundingBox(mesh, true), shapeOf(this->Enclosure),
+                                         this->EnclosureScale, this->EnclosureAxis);
     }
     options.targetEdgeLength = this->EnclosureEdgeLength;
     options.patchId = nextPatch;
@@ -433,7 +434,7 @@ int vtkVolGridSurfacePrep::Prepare(
     cd->AddArray(flagArray("OpenEdge", report.triangleFlags, volgrid::TriangleBoundaryEdge));
     cd->AddArray(flagArray("NonManifoldEdge", report.triangleFlags, volgrid::TriangleNonManifoldEdge));
     cd->AddArray(flagArray("SelfIntersecting", report.triangleFlags,
-      volgrid::TriangleSelfIntersecting | volgrid::TriangleShellIntersecting));
+                           volgrid::TriangleSelfIntersecting | volgrid::TriangleShellIntersecting));
     cd->AddArray(flagArray("Degenerate", report.triangleFlags, volgrid::TriangleDegenerate));
   }
   if (static_cast<int32_t>(report.triangleShell.size()) == mesh.numberOfTriangles())
@@ -564,8 +565,8 @@ void vtkVolGridSurfacePrep::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExplicitEnclosure: " << this->ExplicitEnclosure << "\n";
   os << indent << "EnclosureCenter: " << this->EnclosureCenter[0] << " " << this->EnclosureCenter[1] << " "
      << this->EnclosureCenter[2] << "\n";
-  os << indent << "EnclosureDimensions: " << this->EnclosureDimensions[0] << " " << this->EnclosureDimensions[1]
-     << " " << this->EnclosureDimensions[2] << "\n";
+  os << indent << "EnclosureDimensions: " << this->EnclosureDimensions[0] << " " << this->EnclosureDimensions[1] << " "
+     << this->EnclosureDimensions[2] << "\n";
   os << indent << "EnclosureAxis: " << this->EnclosureAxis << "\n";
   os << indent << "EnclosureEdgeLength: " << this->EnclosureEdgeLength << "\n";
 }

@@ -180,7 +180,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   // The filter's work; under MPI (controller set) the parts are gathered and only rank 0 works on them.
   int Prepare(vtkInformationVector** inputVector, vtkInformationVector* outputVector,
-    class vtkMultiProcessController* controller);
+              class vtkMultiProcessController* controller);
 
   double MergeTolerance = 1.0e-6;
   bool ExactMergeOnly = false;

@@ -10,13 +10,13 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
-#include "vtkDataArray.h"
-#include "vtkDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -58,7 +58,7 @@ vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
 namespace
 {
 // Sets `member` to `value` clamped to the option's valid range; true when it changed.
-template <typename T>
+template<typename T>
 bool setClamped(T& member, double value, const volgrid::OptionSpec& spec)
 {
   const T clamped = static_cast<T>(spec.clamp(value));
@@ -69,11 +69,11 @@ bool setClamped(T& member, double value, const volgrid::OptionSpec& spec)
 }
 } // namespace
 
-#define VOLGRID_OPTION_SETTER(Name, Type, Spec)                                                                \
-  void vtkVolGridTetrahedralize::Set##Name(Type value)                                                       \
-  {                                                                                                          \
-    if (setClamped(this->Name, value, volgrid::option::Spec))                                                \
-      this->Modified();                                                                                      \
+#define VOLGRID_OPTION_SETTER(Name, Type, Spec)                                                                        \
+  void vtkVolGridTetrahedralize::Set##Name(Type value)                                                                 \
+  {                                                                                                                    \
+    if (setClamped(this->Name, value, volgrid::option::Spec))                                                          \
+      this->Modified();                                                                                                \
   }
 VOLGRID_OPTION_SETTER(Alpha, double, alpha)
 VOLGRID_OPTION_SETTER(Beta, double, beta)
@@ -149,8 +149,8 @@ void addBlockIds(vtkUnstructuredGrid* mesh)
 }
 } // namespace
 
-int vtkVolGridTetrahedralize::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkVolGridTetrahedralize::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                          vtkInformationVector* outputVector)
 {
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
@@ -185,18 +185,17 @@ int vtkVolGridTetrahedralize::RequestData(
   return 1;
 }
 
-int vtkVolGridTetrahedralize::Execute(
-  vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary)
+int vtkVolGridTetrahedralize::Execute(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output,
+                                      vtkPolyData* boundary)
 {
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro(<< "VolGrid Tetrahedralize: the input is empty (no points).");
     return 0;
   }
-  const bool surface = this->InputMode == SURFACE ||
-    (this->InputMode == AUTOMATIC && hasSurfaceCells(input));
-  const int ok = surface ? this->MeshSurface(input, sources, output, boundary)
-                         : this->TetrahedralizePoints(input, output);
+  const bool surface = this->InputMode == SURFACE || (this->InputMode == AUTOMATIC && hasSurfaceCells(input));
+  const int ok =
+    surface ? this->MeshSurface(input, sources, output, boundary) : this->TetrahedralizePoints(input, output);
   if (ok)
   {
     addBlockIds(output);
@@ -204,8 +203,8 @@ int vtkVolGridTetrahedralize::Execute(
   return ok;
 }
 
-int vtkVolGridTetrahedralize::MeshSurface(
-  vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary)
+int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output,
+                                          vtkPolyData* boundary)
 {
   volgrid::SurfaceMesh surface;
   VolGridSurfaceConversionInfo converted;
@@ -221,8 +220,8 @@ int vtkVolGridTetrahedralize::MeshSurface(
   }
   if (converted.skippedCells + converted.invalidCells > 0)
   {
-    vtkWarningMacro(<< converted.skippedCells << " cell(s) that are not surface cells and "
-                    << converted.invalidCells << " cell(s) with invalid point ids were ignored.");
+    vtkWarningMacro(<< converted.skippedCells << " cell(s) that are not surface cells and " << converted.invalidCells
+                    << " cell(s) with invalid point ids were ignored.");
   }
 
   volgrid::MesherOptions options;
@@ -282,10 +281,11 @@ int vtkVolGridTetrahedralize::MeshSurface(
   const volgrid::SizeEstimate estimate = volgrid::estimateMeshSize(surface, options.improvement);
   if (estimate.bytes > volgrid::availableMemoryBytes())
   {
-    vtkErrorMacro(<< "VolGrid Tetrahedralize: these sizes would make about " << estimate.tets << " tets on "
-                  << estimate.points << " points, needing about " << estimate.bytes / 1073741824.0
-                  << " GiB of memory, more than the " << volgrid::availableMemoryBytes() / 1073741824.0
-                  << " GiB available: refused before any work (choose a larger MaxEdgeLength, MaxVolume or SizeScale).");
+    vtkErrorMacro(
+      << "VolGrid Tetrahedralize: these sizes would make about " << estimate.tets << " tets on " << estimate.points
+      << " points, needing about " << estimate.bytes / 1073741824.0 << " GiB of memory, more than the "
+      << volgrid::availableMemoryBytes() / 1073741824.0
+      << " GiB available: refused before any work (choose a larger MaxEdgeLength, MaxVolume or SizeScale).");
     return 0;
   }
   volgrid::MesherResult result;
@@ -340,8 +340,8 @@ int vtkVolGridTetrahedralize::MeshSurface(
 
   // Port 1 (boundary triangles with PatchId): the point data, and the input's cell data.
   boundary->GetPointData()->ShallowCopy(outPD);
-  const bool allTriangles = converted.polygons + converted.strips + converted.skippedCells +
-      converted.invalidCells == 0 &&
+  const bool allTriangles =
+    converted.polygons + converted.strips + converted.skippedCells + converted.invalidCells == 0 &&
     input->GetNumberOfCells() == surface.numberOfTriangles();
   if (allTriangles)
   {

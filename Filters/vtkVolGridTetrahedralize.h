@@ -259,19 +259,19 @@ protected:
   int RandomSeed = 1;
   bool CheckOutput = false;
   bool FieldPoints = true;
-  double Alpha = 0; // the default: the constructor, from Core
-  double Beta = 0; // the default: the constructor, from Core
-  double Gradation = 0; // the default: the constructor, from Core
-  double SizeScale = 0; // the default: the constructor, from Core
+  double Alpha = 0;         // the default: the constructor, from Core
+  double Beta = 0;          // the default: the constructor, from Core
+  double Gradation = 0;     // the default: the constructor, from Core
+  double SizeScale = 0;     // the default: the constructor, from Core
   double MaxEdgeLength = 0; // the default: the constructor, from Core
-  double MaxVolume = 0; // the default: the constructor, from Core
+  double MaxVolume = 0;     // the default: the constructor, from Core
   bool ClusterSourcePoints = true;
   char* SourceSizeArray = nullptr;
   char* PatchAssignment = nullptr;
   bool SizingFromSources = false;
   bool Optimize = true;
   double TargetMinDihedral = 0; // the default: the constructor, from Core
-  int MaxPasses = 0; // the default: the constructor, from Core
+  int MaxPasses = 0;            // the default: the constructor, from Core
   bool Smoothing = true;
 
 private:

@@ -40,7 +40,9 @@ std::string temporaryTemplate(const std::string& target, size_t& suffixLength)
 
 bool refuseNonRegular(const std::string& target, std::string& error)
 {
-  struct stat st{};
+  struct stat st
+  {
+  };
   if (::stat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
   {
     error = "cannot write '" + target + "': it exists and is not a regular file" +
@@ -53,7 +55,9 @@ bool refuseNonRegular(const std::string& target, std::string& error)
 // Mode of the new file: the existing target's, else 0666 minus the umask.
 mode_t finalMode(const std::string& target)
 {
-  struct stat st{};
+  struct stat st
+  {
+  };
   if (::stat(target.c_str(), &st) == 0)
     return st.st_mode & 07777;
   const mode_t mask = ::umask(022);
@@ -98,7 +102,8 @@ bool AtomicFile::write(const char* data, size_t size, std::string& error)
       continue;
     if (n <= 0)
     {
-      error = "writing '" + Target + "' failed: " + reason(n < 0 ? errno : EIO) + " (the earlier file, if any, is unchanged)";
+      error =
+        "writing '" + Target + "' failed: " + reason(n < 0 ? errno : EIO) + " (the earlier file, if any, is unchanged)";
       return false;
     }
     data += n;
@@ -111,7 +116,9 @@ bool AtomicFile::commit(std::string& error, long long expectedSize)
 {
   const std::string failed = "writing '" + Target + "' failed: ";
   const std::string kept = " (the earlier file, if any, is unchanged)";
-  struct stat st{};
+  struct stat st
+  {
+  };
   if (::fstat(Fd, &st) != 0)
   {
     error = failed + reason(errno) + kept;

@@ -12,7 +12,7 @@
 namespace volgrid
 {
 
-template <class Key, class Value, class Hash>
+template<class Key, class Value, class Hash>
 class FlatHashMap
 {
 public:

@@ -53,8 +53,10 @@ Status gunzip(const std::string& compressed, const std::string& path, std::strin
   text.clear();
   if (!hasGzipMagic(compressed, 0))
   {
-    return gzipError(path, compressed.empty() ? "empty file, expected gzip data"
-                                              : "not gzip data (the file name ends in .gz but the magic bytes 1f 8b are missing)");
+    return gzipError(path,
+                     compressed.empty()
+                       ? "empty file, expected gzip data"
+                       : "not gzip data (the file name ends in .gz but the magic bytes 1f 8b are missing)");
   }
   size_t offset = 0;
   int members = 0;
@@ -68,11 +70,12 @@ Status gunzip(const std::string& compressed, const std::string& path, std::strin
       {
         // gunzip tolerates zero padding after the last member (tape blocks); anything else is an error.
         if (std::all_of(compressed.begin() + static_cast<std::ptrdiff_t>(offset), compressed.end(),
-              [](char c) { return c == 0; }))
+                        [](char c) { return c == 0; }))
         {
           break;
         }
-        return gzipError(path, "unexpected data after the end of the gzip stream (byte " + std::to_string(offset) + ")");
+        return gzipError(path,
+                         "unexpected data after the end of the gzip stream (byte " + std::to_string(offset) + ")");
       }
       z_stream zs{};
       if (inflateInit2(&zs, 16 + MAX_WBITS) != Z_OK) // 16: gzip header and CRC-32 trailer only
@@ -97,9 +100,11 @@ Status gunzip(const std::string& compressed, const std::string& path, std::strin
         if (!withinBounds(text.size(), compressed.size()))
         {
           inflateEnd(&zs);
-          return gzipError(path, "refused: it decompresses to more than " + std::to_string(text.size()) +
-              " bytes from " + std::to_string(compressed.size()) + " (limits: " +
-              std::to_string(static_cast<long long>(kGzipMaxRatio)) + " times the compressed size past " +
+          return gzipError(
+            path,
+            "refused: it decompresses to more than " + std::to_string(text.size()) + " bytes from " +
+              std::to_string(compressed.size()) + " (limits: " + std::to_string(static_cast<long long>(kGzipMaxRatio)) +
+              " times the compressed size past " +
               std::to_string(static_cast<long long>(kGzipRatioFreeBytes / 1048576)) + " MiB, " +
               std::to_string(static_cast<long long>(kGzipMaxBytes / 1073741824)) + " GiB in all; a gzip bomb?)");
         }
@@ -111,15 +116,16 @@ Status gunzip(const std::string& compressed, const std::string& path, std::strin
         {
           // No progress possible: the input ended inside the stream.
           inflateEnd(&zs);
-          return gzipError(path, "truncated gzip data (the stream ends after " + std::to_string(text.size()) +
-              " decompressed bytes without its end marker)");
+          return gzipError(path,
+                           "truncated gzip data (the stream ends after " + std::to_string(text.size()) +
+                             " decompressed bytes without its end marker)");
         }
         if (rc != Z_OK)
         {
           const std::string why = zs.msg ? zs.msg : "error " + std::to_string(rc);
           inflateEnd(&zs);
-          return gzipError(path, "corrupt gzip data (" + why + ") after " + std::to_string(text.size()) +
-              " decompressed bytes");
+          return gzipError(
+            path, "corrupt gzip data (" + why + ") after " + std::to_string(text.size()) + " decompressed bytes");
         }
       }
       // Bytes of this chunk that belong to the next member.
@@ -137,7 +143,9 @@ Status gunzip(const std::string& compressed, const std::string& path, std::strin
 
 Status readGzipFile(const std::string& path, std::string& text)
 {
-  struct stat st{};
+  struct stat st
+  {
+  };
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
   {
     return gzipError(path, S_ISDIR(st.st_mode) ? "is a directory, not a file" : "is not a regular file");

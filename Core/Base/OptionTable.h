@@ -24,9 +24,9 @@ struct OptionSpec
   const char* property; // the filter's and the Plugin XML's property
   OptionType type;
   double defaultValue;
-  double minimum, maximum;  // valid range; infinity = unbounded
-  bool minimumIncluded;     // [minimum or (minimum
-  bool maximumIncluded;     // maximum] or maximum)
+  double minimum, maximum;     // valid range; infinity = unbounded
+  bool minimumIncluded;        // [minimum or (minimum
+  bool maximumIncluded;        // maximum] or maximum)
   double sliderMin, sliderMax; // the GUI's slider (Plugin XML range domain); infinity = no max attribute
   const char* doc;
 
@@ -55,8 +55,8 @@ inline constexpr OptionSpec maxVolume{ "max-volume", "MaxVolume",      OptionTyp
 inline constexpr OptionSpec targetAngle{ "target-angle", "TargetMinDihedral", OptionType::Real, 18, 0, 60,  false, true,  1,   60,   "optimisation target for min(dihedral, 180 - max dihedral), degrees" };
 inline constexpr OptionSpec passes{ "passes",     "MaxPasses",         OptionType::Integer, 8,    0,   1000, true,  true,  0,   50,   "optimisation pass limit (0: no optimisation passes)" };
 // clang-format on
-inline constexpr const OptionSpec* table[] = { &alpha, &beta, &sizeScale, &gradation, &maxEdge, &maxVolume,
-  &targetAngle, &passes };
+inline constexpr const OptionSpec* table[] = { &alpha,   &beta,      &sizeScale,   &gradation,
+                                               &maxEdge, &maxVolume, &targetAngle, &passes };
 } // namespace option
 
 // The row whose CLI name (flag without "--") is `name`, or nullptr.

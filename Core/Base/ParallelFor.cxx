@@ -152,7 +152,7 @@ int parallelRanges(int threads, int64_t n, int64_t minPerThread)
 }
 
 int parallelFor(int threads, int64_t n, int64_t minPerThread,
-  const std::function<void(int range, int64_t begin, int64_t end)>& body)
+                const std::function<void(int range, int64_t begin, int64_t end)>& body)
 {
   const int k = parallelRanges(threads, n, minPerThread);
   const int64_t total = std::max<int64_t>(0, n);

@@ -34,7 +34,7 @@ void parallelRun(int workers, const std::function<void(int worker)>& body);
 // minPerThread items per range fewer ranges are used (k >= 1). Returns k, so that a caller can size its
 // per-range partials first with parallelRanges(...) below.
 int parallelFor(int threads, int64_t n, int64_t minPerThread,
-  const std::function<void(int range, int64_t begin, int64_t end)>& body);
+                const std::function<void(int range, int64_t begin, int64_t end)>& body);
 
 // The number of ranges parallelFor(threads, n, minPerThread, ...) uses.
 int parallelRanges(int threads, int64_t n, int64_t minPerThread);

@@ -9,7 +9,7 @@
 namespace volgrid
 {
 
-template <typename Index>
+template<typename Index>
 class UnionFind
 {
 public:

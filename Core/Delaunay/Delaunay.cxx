@@ -9,8 +9,8 @@
 #include "SpatialSort.h"
 
 #include <algorithm>
-#include <climits>
 #include <atomic>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -53,7 +53,7 @@ bool latticeUnit(const double* xyz, size_t n, double& unit)
 // Merge exact duplicates among Hilbert-sorted ids (equal coordinates have equal keys). Fills
 // inputToVertex for the merged ones and removes them from ids; the representative is the lowest id.
 void mergeDuplicates(const double* xyz, std::vector<int32_t>& ids, const std::vector<uint64_t>& keys,
-  std::vector<int32_t>& inputToVertex)
+                     std::vector<int32_t>& inputToVertex)
 {
   size_t out = 0;
   const size_t n = ids.size();
@@ -70,17 +70,19 @@ void mergeDuplicates(const double* xyz, std::vector<int32_t>& ids, const std::ve
       continue;
     }
     run.assign(ids.begin() + static_cast<std::ptrdiff_t>(i), ids.begin() + static_cast<std::ptrdiff_t>(j));
-    std::sort(run.begin(), run.end(), [&](int32_t a, int32_t b) {
-      const double* p = xyz + 3 * static_cast<size_t>(a);
-      const double* q = xyz + 3 * static_cast<size_t>(b);
-      if (p[0] != q[0])
-        return p[0] < q[0];
-      if (p[1] != q[1])
-        return p[1] < q[1];
-      if (p[2] != q[2])
-        return p[2] < q[2];
-      return a < b;
-    });
+    std::sort(run.begin(), run.end(),
+              [&](int32_t a, int32_t b)
+              {
+                const double* p = xyz + 3 * static_cast<size_t>(a);
+                const double* q = xyz + 3 * static_cast<size_t>(b);
+                if (p[0] != q[0])
+                  return p[0] < q[0];
+                if (p[1] != q[1])
+                  return p[1] < q[1];
+                if (p[2] != q[2])
+                  return p[2] < q[2];
+                return a < b;
+              });
     int32_t rep = -1;
     for (size_t k = 0; k < run.size(); ++k)
     {
@@ -106,7 +108,7 @@ bool collinear(const double* a, const double* b, const double* c)
 } // namespace
 
 Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options, TetMesh& mesh,
-  std::vector<int32_t>& inputToVertex, Progress* progress, DelaunayReport* report)
+                     std::vector<int32_t>& inputToVertex, Progress* progress, DelaunayReport* report)
 {
   SilentProgress silent;
   if (!progress)
@@ -122,8 +124,8 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   // Tet indices are stored as (tet<<2)|face in int32: about 6.5 tets per point -> 2^29 / 7 points.
   if (n > (size_t(1) << 29) / 8)
     return Status::failure(ErrorKind::InvalidOption,
-      "Too many points (" + std::to_string(n) + "); at most " + std::to_string((size_t(1) << 29) / 8) +
-        " are supported.");
+                           "Too many points (" + std::to_string(n) + "); at most " +
+                             std::to_string((size_t(1) << 29) / 8) + " are supported.");
   {
     size_t bad = 0;
     std::vector<int64_t> first;
@@ -139,9 +141,9 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     }
     if (bad)
       return Status::failure(ErrorKind::NonFinitePoint,
-        std::to_string(bad) + " point(s) have NaN or infinite coordinates (first id " +
-          std::to_string(first[0]) + ").",
-        first);
+                             std::to_string(bad) + " point(s) have NaN or infinite coordinates (first id " +
+                               std::to_string(first[0]) + ").",
+                             first);
   }
   progress->report(0.0, "Sorting points");
 
@@ -191,8 +193,8 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     mesh.clear();
     const char* what = ib >= im ? "identical" : ic >= im ? "collinear" : "coplanar";
     return Status::failure(ErrorKind::DegenerateInput,
-      "All " + std::to_string(n) + " points are " + what +
-        ": a tetrahedralization needs at least four affinely independent points.");
+                           "All " + std::to_string(n) + " points are " + what +
+                             ": a tetrahedralization needs at least four affinely independent points.");
   }
   initDelaunayTet(mesh, ia, ib, ic, id);
 
@@ -231,14 +233,16 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   constexpr int32_t kReportEvery = 1 << 16;
   const int32_t firstTet[4] = { ia, ib, ic, id };
   auto isFirstTet = [&](int32_t k) { return k == ia || k == ib || k == ic || k == id; };
-  auto cancelled = [&]() {
+  auto cancelled = [&]()
+  {
     if (!progress->cancelled())
       return false;
     mesh.clear();
     return true;
   };
   // Sequential insertion of order[from..to).
-  auto insertRange = [&](int32_t from, int32_t to) {
+  auto insertRange = [&](int32_t from, int32_t to)
+  {
     for (int32_t k = from; k < to; ++k)
     {
       if (isFirstTet(k))
@@ -257,10 +261,9 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   };
 
   const int threads = std::min(resolveThreads(options.threads), 2); // the kernel splits rounds in two
-  int32_t done = 0; // order[0..done) handled
-  std::vector<int32_t> rest; // points left over by the parallel stage
-  if (threads > 1 && options.location == PointLocation::Walk && roundStarts.size() > 2 &&
-    m >= kParallelMinPoints)
+  int32_t done = 0;                                                 // order[0..done) handled
+  std::vector<int32_t> rest;                                        // points left over by the parallel stage
+  if (threads > 1 && options.location == PointLocation::Walk && roundStarts.size() > 2 && m >= kParallelMinPoints)
   {
     // Rounds with enough points run on two threads (halves of the Hilbert order of the round).
     size_t r0 = 0;
@@ -272,7 +275,7 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
         return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
       done = static_cast<int32_t>(roundStarts[r0]);
       const Status st = insertParallel(mesh, inserter, order, roundStarts, r0, firstTet, inputToVertex, rest, rep,
-        progress, options.seed);
+                                       progress, options.seed);
       if (!st.ok())
       {
         mesh.clear();

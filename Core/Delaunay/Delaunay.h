@@ -52,10 +52,10 @@ enum class PointLocation
 
 struct DelaunayOptions
 {
-  bool spatialSort = true;                 // BRIO + Hilbert order; false = input order
+  bool spatialSort = true; // BRIO + Hilbert order; false = input order
   PointLocation location = PointLocation::Walk;
-  uint64_t seed = 0x766f6c67726964ull;     // BRIO rounds and walk randomization
-  bool keepGhosts = true;                  // false: removeGhostTets() at the end (hull faces -> no neighbour)
+  uint64_t seed = 0x766f6c67726964ull; // BRIO rounds and walk randomization
+  bool keepGhosts = true;              // false: removeGhostTets() at the end (hull faces -> no neighbour)
   // Threads for large inputs (>= 200k distinct points, spatialSort, Walk): 1 = sequential, 2 = two
   // threads, 0 = hardware concurrency (at most 2).
   int threads = 0;
@@ -72,9 +72,9 @@ struct DelaunayOptions
 struct DelaunayReport
 {
   size_t numInput = 0;
-  size_t numVertices = 0;                  // distinct points inserted
-  size_t numDuplicates = 0;                // input points merged into an earlier identical point
-  std::vector<int64_t> firstDuplicates;    // first few duplicate input ids
+  size_t numVertices = 0;               // distinct points inserted
+  size_t numDuplicates = 0;             // input points merged into an earlier identical point
+  std::vector<int64_t> firstDuplicates; // first few duplicate input ids
   // Work counters (for tuning/benchmarks).
   uint64_t walkSteps = 0;
   uint64_t cavityTets = 0;
@@ -86,7 +86,8 @@ struct DelaunayReport
 // identical point). Errors: EmptyInput, NonFinitePoint, DegenerateInput (all points coplanar),
 // InvalidOption (too many points), Cancelled.
 Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options, TetMesh& mesh,
-  std::vector<int32_t>& inputToVertex, Progress* progress = nullptr, DelaunayReport* report = nullptr);
+                     std::vector<int32_t>& inputToVertex, Progress* progress = nullptr,
+                     DelaunayReport* report = nullptr);
 
 // Incremental insertion into an existing Delaunay mesh WITH ghost tets (as built by buildDelaunay with
 // keepGhosts). Keeps reusable buffers, so create one per stage and insert many points with it.
@@ -104,7 +105,7 @@ public:
 
   struct Result
   {
-    int32_t tet = -1;       // a tet incident to the inserted vertex (or to the duplicate)
+    int32_t tet = -1;         // a tet incident to the inserted vertex (or to the duplicate)
     int32_t duplicateOf = -1; // >= 0: the point equals this existing vertex, nothing was inserted
     bool aborted = false;     // internal (parallel construction): not inserted, retry later
   };
@@ -130,10 +131,11 @@ public:
   uint64_t cavityTets() const;
 
 private:
-  friend Status buildDelaunay(const double*, size_t, const DelaunayOptions&, TetMesh&, std::vector<int32_t>&,
-    Progress*, DelaunayReport*);
+  friend Status buildDelaunay(const double*, size_t, const DelaunayOptions&, TetMesh&, std::vector<int32_t>&, Progress*,
+                              DelaunayReport*);
   friend Status insertParallel(TetMesh&, DelaunayInserter&, const std::vector<int32_t>&, const std::vector<size_t>&,
-    size_t, const int32_t*, std::vector<int32_t>&, std::vector<int32_t>&, DelaunayReport&, Progress*, uint64_t);
+                               size_t, const int32_t*, std::vector<int32_t>&, std::vector<int32_t>&, DelaunayReport&,
+                               Progress*, uint64_t);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -80,7 +80,8 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
   // last BRIO round, so the groups follow that round's Hilbert order: neighbouring tets get nearby
   // numbers, which keeps the passes below cache-friendly.
   auto lastInserted = [](const int32_t* w) { return std::max(std::max(w[0], w[1]), std::max(w[2], w[3])); };
-  auto inHalves = [threads](int32_t n, const auto& work) {
+  auto inHalves = [threads](int32_t n, const auto& work)
+  {
     if (threads > 1 && n >= (1 << 16))
     {
       parallelRun(2, [&](int w) { w == 0 ? work(0, n / 2) : work(n / 2, n); });
@@ -95,25 +96,27 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
   // Each half also counts its tets per last inserted vertex (for the counting sort of pass 2).
   uint8_t* newPos = F;
   std::vector<int32_t> count[2];
-  inHalves(cap, [&](int32_t from, int32_t to) {
-    std::vector<int32_t>& c = count[from == 0 ? 0 : 1];
-    c.assign(static_cast<size_t>(nv), 0);
-    for (int32_t t = from; t < to; ++t)
-    {
-      if (F[t] & TetMesh::kFree)
-      {
-        F[t] = 0;
-        continue;
-      }
-      int32_t* w = V + 4 * static_cast<size_t>(t);
-      ++c[lastInserted(w)];
-      int8_t ord[4];
-      canonicalOrder(w, ord);
-      const int32_t row[4] = { w[ord[0]], w[ord[1]], w[ord[2]], w[ord[3]] };
-      std::memcpy(w, row, sizeof row);
-      newPos[t] = static_cast<uint8_t>((1 << (2 * ord[1])) | (2 << (2 * ord[2])) | (3 << (2 * ord[3])));
-    }
-  });
+  inHalves(cap,
+           [&](int32_t from, int32_t to)
+           {
+             std::vector<int32_t>& c = count[from == 0 ? 0 : 1];
+             c.assign(static_cast<size_t>(nv), 0);
+             for (int32_t t = from; t < to; ++t)
+             {
+               if (F[t] & TetMesh::kFree)
+               {
+                 F[t] = 0;
+                 continue;
+               }
+               int32_t* w = V + 4 * static_cast<size_t>(t);
+               ++c[lastInserted(w)];
+               int8_t ord[4];
+               canonicalOrder(w, ord);
+               const int32_t row[4] = { w[ord[0]], w[ord[1]], w[ord[2]], w[ord[3]] };
+               std::memcpy(w, row, sizeof row);
+               newPos[t] = static_cast<uint8_t>((1 << (2 * ord[1])) | (2 << (2 * ord[2])) | (3 << (2 * ord[3])));
+             }
+           });
 
   // Pass 2: newToOld by groups of the last inserted vertex (counting sort), then each group sorted by
   // the rotated rows.
@@ -131,95 +134,106 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
   }
   const int32_t live = start[nv];
   std::vector<int32_t> newToOld(static_cast<size_t>(live));
-  inHalves(cap, [&](int32_t from, int32_t to) {
-    std::vector<int32_t>& fill = count[from == 0 ? 0 : 1];
-    for (int32_t t = from; t < to; ++t)
-      if (F[t] != 0)
-        newToOld[fill[lastInserted(V + 4 * static_cast<size_t>(t))]++] = t;
-  });
+  inHalves(cap,
+           [&](int32_t from, int32_t to)
+           {
+             std::vector<int32_t>& fill = count[from == 0 ? 0 : 1];
+             for (int32_t t = from; t < to; ++t)
+               if (F[t] != 0)
+                 newToOld[fill[lastInserted(V + 4 * static_cast<size_t>(t))]++] = t;
+           });
   std::vector<int32_t>().swap(count[0]);
   std::vector<int32_t>().swap(count[1]);
   // Groups are independent (disjoint ranges of newToOld): two halves of the vertex range may run at
   // once. A group's tets sit in scattered slots: their rows are prefetched a few tets ahead.
-  inHalves(nv, [&](int32_t vFrom, int32_t vTo) {
-    constexpr int32_t kAhead = 16;
-    const int32_t end = start[vTo];
-    for (int32_t i = start[vFrom]; i < std::min(end, start[vFrom] + kAhead); ++i)
-      __builtin_prefetch(V + 4 * static_cast<size_t>(newToOld[i]));
-    for (int32_t v = vFrom; v < vTo; ++v)
-    {
-      const int32_t a = start[v], b = start[v + 1];
-      for (int32_t i = a; i < b; ++i)
-        if (i + kAhead < end)
-          __builtin_prefetch(V + 4 * static_cast<size_t>(newToOld[i + kAhead]));
-      // Insertion sort of the group's few tets by their rows.
-      for (int32_t i = a + 1; i < b; ++i)
-      {
-        const int32_t t = newToOld[i];
-        const int32_t* row = V + 4 * static_cast<size_t>(t);
-        int32_t j = i - 1;
-        for (; j >= a && rowLess(row, V + 4 * static_cast<size_t>(newToOld[j])); --j)
-          newToOld[j + 1] = newToOld[j];
-        newToOld[j + 1] = t;
-      }
-    }
-  });
+  inHalves(nv,
+           [&](int32_t vFrom, int32_t vTo)
+           {
+             constexpr int32_t kAhead = 16;
+             const int32_t end = start[vTo];
+             for (int32_t i = start[vFrom]; i < std::min(end, start[vFrom] + kAhead); ++i)
+               __builtin_prefetch(V + 4 * static_cast<size_t>(newToOld[i]));
+             for (int32_t v = vFrom; v < vTo; ++v)
+             {
+               const int32_t a = start[v], b = start[v + 1];
+               for (int32_t i = a; i < b; ++i)
+                 if (i + kAhead < end)
+                   __builtin_prefetch(V + 4 * static_cast<size_t>(newToOld[i + kAhead]));
+               // Insertion sort of the group's few tets by their rows.
+               for (int32_t i = a + 1; i < b; ++i)
+               {
+                 const int32_t t = newToOld[i];
+                 const int32_t* row = V + 4 * static_cast<size_t>(t);
+                 int32_t j = i - 1;
+                 for (; j >= a && rowLess(row, V + 4 * static_cast<size_t>(newToOld[j])); --j)
+                   newToOld[j + 1] = newToOld[j];
+                 newToOld[j + 1] = t;
+               }
+             }
+           });
   std::vector<int32_t>().swap(start);
   // New number of every live slot.
   std::vector<int32_t> newId(static_cast<size_t>(cap), -1);
-  inHalves(live, [&](int32_t from, int32_t to) {
-    for (int32_t i = from; i < to; ++i)
-      newId[newToOld[i]] = i;
-  });
+  inHalves(live,
+           [&](int32_t from, int32_t to)
+           {
+             for (int32_t i = from; i < to; ++i)
+               newId[newToOld[i]] = i;
+           });
 
   // Pass 3: neighbour codes rewritten in place for the new numbers and face positions (a row's
   // rewrite reads only newId/newPos of its neighbours).
-  inHalves(cap, [&](int32_t from, int32_t to) {
-    for (int32_t t = from; t < to; ++t)
-    {
-      if (t + 8 < to)
-        for (int f = 0; f < 4; ++f)
-        {
-          const int32_t c = N[4 * static_cast<size_t>(t + 8) + f];
-          if (c >= 0)
-            __builtin_prefetch(newId.data() + (c >> 2));
-        }
-      if (F[t] == 0)
-        continue; // free slot
-      int32_t* n = N + 4 * static_cast<size_t>(t);
-      for (int f = 0; f < 4; ++f)
-      {
-        const int32_t c = n[f];
-        if (c >= 0)
-          n[f] = (newId[c >> 2] << 2) | ((newPos[c >> 2] >> (2 * (c & 3))) & 3);
-      }
-    }
-  });
+  inHalves(cap,
+           [&](int32_t from, int32_t to)
+           {
+             for (int32_t t = from; t < to; ++t)
+             {
+               if (t + 8 < to)
+                 for (int f = 0; f < 4; ++f)
+                 {
+                   const int32_t c = N[4 * static_cast<size_t>(t + 8) + f];
+                   if (c >= 0)
+                     __builtin_prefetch(newId.data() + (c >> 2));
+                 }
+               if (F[t] == 0)
+                 continue; // free slot
+               int32_t* n = N + 4 * static_cast<size_t>(t);
+               for (int f = 0; f < 4; ++f)
+               {
+                 const int32_t c = n[f];
+                 if (c >= 0)
+                   n[f] = (newId[c >> 2] << 2) | ((newPos[c >> 2] >> (2 * (c & 3))) & 3);
+               }
+             }
+           });
   std::vector<int32_t>().swap(newId);
 
   // Pass 4: the rows gathered in the new order (neighbour rows rotated like the vertex rows were, vertex
   // rows mapped to output ids), one array at a time (the old one is freed
   // before the next is allocated: the transient memory stays at one 16-byte row per tet). Writes are
   // sequential; the reads follow the construction's slot order, which is spatially coherent too.
-  auto gather = [&](std::vector<int32_t>& rows, bool vertices) {
+  auto gather = [&](std::vector<int32_t>& rows, bool vertices)
+  {
     std::vector<int32_t> out(4 * static_cast<size_t>(live));
     const int32_t* in = rows.data();
-    inHalves(live, [&](int32_t from, int32_t to) {
-      for (int32_t i = from; i < to; ++i)
-      {
-        if (i + 16 < to)
-          __builtin_prefetch(in + 4 * static_cast<size_t>(newToOld[i + 16]));
-        const int32_t t = newToOld[i];
-        const int32_t* r = in + 4 * static_cast<size_t>(t);
-        int32_t* o = out.data() + 4 * static_cast<size_t>(i);
-        if (vertices)
-          for (int f = 0; f < 4; ++f)
-            o[f] = toOutput(r[f]);
-        else
-          for (int f = 0; f < 4; ++f)
-            o[(newPos[t] >> (2 * f)) & 3] = r[f];
-      }
-    });
+    inHalves(live,
+             [&](int32_t from, int32_t to)
+             {
+               for (int32_t i = from; i < to; ++i)
+               {
+                 if (i + 16 < to)
+                   __builtin_prefetch(in + 4 * static_cast<size_t>(newToOld[i + 16]));
+                 const int32_t t = newToOld[i];
+                 const int32_t* r = in + 4 * static_cast<size_t>(t);
+                 int32_t* o = out.data() + 4 * static_cast<size_t>(i);
+                 if (vertices)
+                   for (int f = 0; f < 4; ++f)
+                     o[f] = toOutput(r[f]);
+                 else
+                   for (int f = 0; f < 4; ++f)
+                     o[(newPos[t] >> (2 * f)) & 3] = r[f];
+               }
+             });
     rows.swap(out);
   };
   gather(mesh.tetNeighbors, false);

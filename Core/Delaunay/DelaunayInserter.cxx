@@ -5,7 +5,10 @@
 namespace volgrid
 {
 
-DelaunayInserter::DelaunayInserter(TetMesh& mesh, uint64_t seed) : impl_(new Impl(mesh, seed)) {}
+DelaunayInserter::DelaunayInserter(TetMesh& mesh, uint64_t seed)
+  : impl_(new Impl(mesh, seed))
+{
+}
 DelaunayInserter::~DelaunayInserter() = default;
 
 int32_t DelaunayInserter::locate(const double* p, int32_t hint)
@@ -49,9 +52,18 @@ void DelaunayInserter::setSoSIds(const int32_t* ids)
   impl_->sosId = ids;
 }
 
-int32_t DelaunayInserter::lastTet() const { return impl_->last; }
-uint64_t DelaunayInserter::walkSteps() const { return impl_->walkSteps; }
-uint64_t DelaunayInserter::cavityTets() const { return impl_->cavityTets; }
+int32_t DelaunayInserter::lastTet() const
+{
+  return impl_->last;
+}
+uint64_t DelaunayInserter::walkSteps() const
+{
+  return impl_->walkSteps;
+}
+uint64_t DelaunayInserter::cavityTets() const
+{
+  return impl_->cavityTets;
+}
 
 // ---------------------------------------------------------------------------------------------------
 int32_t initDelaunayTet(TetMesh& mesh, int32_t a, int32_t b, int32_t c, int32_t d)

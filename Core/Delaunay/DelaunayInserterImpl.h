@@ -90,7 +90,7 @@ struct DelaunayInserter::Impl
       const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
       const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
       const double m = std::max({ std::fabs(ux), std::fabs(uy), std::fabs(uz), std::fabs(vx), std::fabs(vy),
-        std::fabs(vz), std::fabs(wx), std::fabs(wy), std::fabs(wz) });
+                                  std::fabs(vz), std::fabs(wx), std::fabs(wy), std::fabs(wz) });
       if (m <= latticeOrientLimit)
       {
         const double det = (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
@@ -133,7 +133,7 @@ struct DelaunayInserter::Impl
   std::atomic<int32_t>* nextSlot = nullptr; // pool mode: next unused slot, pool ends at slotLimit
   int32_t slotLimit = 0;
   bool lockFailed = false, poolFull = false;
-  int32_t poolEnd = INT32_MAX; // smallest failed pool position (the pool's used part ends there)
+  int32_t poolEnd = INT32_MAX;   // smallest failed pool position (the pool's used part ends there)
   int32_t pendingGhostDelta = 0; // pool mode: ghost count changes not yet reported to the mesh
 
   bool acquire(int32_t t)
@@ -171,7 +171,7 @@ struct DelaunayInserter::Impl
   static constexpr int kLocalShift = 7;
   static constexpr int32_t kMaxLocal = 1 << kLocalShift;
   std::vector<int32_t> vlocal, localVert = std::vector<int32_t>(kMaxLocal),
-                              edgeMat = std::vector<int32_t>(kMaxLocal * kMaxLocal);
+                               edgeMat = std::vector<int32_t>(kMaxLocal * kMaxLocal);
   std::vector<int32_t> cavity, outside;
   std::vector<BoundaryFace> boundary;
   struct HashSlot
@@ -191,7 +191,11 @@ struct DelaunayInserter::Impl
   std::vector<int32_t> vertexNext; // next vertex in the same bucket
   std::vector<int32_t> vertexTet;  // a tet (probably still) incident to the vertex
 
-  Impl(TetMesh& m, uint64_t seed) : mesh(m), rng(seed | 1) {}
+  Impl(TetMesh& m, uint64_t seed)
+    : mesh(m)
+    , rng(seed | 1)
+  {
+  }
 
   uint32_t random()
   {
@@ -233,8 +237,8 @@ struct DelaunayInserter::Impl
         const int k = w[0] < 0 ? 0 : w[1] < 0 ? 1 : w[2] < 0 ? 2 : 3;
         if (prev < 0)
         {
-          const int o = orient(P + 3 * static_cast<size_t>(w[kFV[k][0]]),
-            P + 3 * static_cast<size_t>(w[kFV[k][1]]), P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
+          const int o = orient(P + 3 * static_cast<size_t>(w[kFV[k][0]]), P + 3 * static_cast<size_t>(w[kFV[k][1]]),
+                               P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
           if (o > 0)
             return t;
         }
@@ -259,8 +263,8 @@ struct DelaunayInserter::Impl
         const int32_t u = N[4 * static_cast<size_t>(t) + i] >> 2;
         if (u == prev)
           continue;
-        const int o = orient(P + 3 * static_cast<size_t>(w[kFV[i][0]]),
-          P + 3 * static_cast<size_t>(w[kFV[i][1]]), P + 3 * static_cast<size_t>(w[kFV[i][2]]), p);
+        const int o = orient(P + 3 * static_cast<size_t>(w[kFV[i][0]]), P + 3 * static_cast<size_t>(w[kFV[i][1]]),
+                             P + 3 * static_cast<size_t>(w[kFV[i][2]]), p);
         if (o < 0)
         {
           next = u;
@@ -281,8 +285,8 @@ struct DelaunayInserter::Impl
     if ((w[0] | w[1] | w[2] | w[3]) < 0)
     {
       const int k = w[0] < 0 ? 0 : w[1] < 0 ? 1 : w[2] < 0 ? 2 : 3;
-      const int o = orient(P + 3 * static_cast<size_t>(w[kFV[k][0]]),
-        P + 3 * static_cast<size_t>(w[kFV[k][1]]), P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
+      const int o = orient(P + 3 * static_cast<size_t>(w[kFV[k][0]]), P + 3 * static_cast<size_t>(w[kFV[k][1]]),
+                           P + 3 * static_cast<size_t>(w[kFV[k][2]]), p);
       if (o != 0)
         return o > 0;
       // p on the plane of the hull face: same answer as the finite tet across it.
@@ -303,8 +307,8 @@ struct DelaunayInserter::Impl
       return s > 0;
     // Exactly cospherical: Simulation of Simplicity with the vertices' ids.
     if (sosId)
-      return predicates::detail::insphereSoSTie(pa, pb, pc, pd, p, sosId[w[0]], sosId[w[1]], sosId[w[2]],
-               sosId[w[3]], sosId[v]) > 0;
+      return predicates::detail::insphereSoSTie(pa, pb, pc, pd, p, sosId[w[0]], sosId[w[1]], sosId[w[2]], sosId[w[3]],
+                                                sosId[v]) > 0;
     return predicates::detail::insphereSoSTie(pa, pb, pc, pd, p, w[0], w[1], w[2], w[3], v) > 0;
   }
 
@@ -329,8 +333,7 @@ struct DelaunayInserter::Impl
           {
             if (std::max({ std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2]) }) != ring)
               continue;
-            for (int32_t v = bucketHead[(static_cast<size_t>(i) * gres + j) * gres + k]; v >= 0;
-                 v = vertexNext[v])
+            for (int32_t v = bucketHead[(static_cast<size_t>(i) * gres + j) * gres + k]; v >= 0; v = vertexNext[v])
             {
               const double* q = P + 3 * static_cast<size_t>(v);
               const double d =
@@ -434,8 +437,10 @@ struct DelaunayInserter::Impl
     cavity.clear();
     outside.clear();
     boundary.clear();
-    auto mark = [&](int32_t u, int word) {
-      N[4 * static_cast<size_t>(u) + word] = static_cast<int32_t>(static_cast<uint32_t>(N[4 * static_cast<size_t>(u) + word]) | kMarkBit);
+    auto mark = [&](int32_t u, int word)
+    {
+      N[4 * static_cast<size_t>(u) + word] =
+        static_cast<int32_t>(static_cast<uint32_t>(N[4 * static_cast<size_t>(u) + word]) | kMarkBit);
     };
     mark(t, 0);
     cavity.push_back(t);
@@ -449,7 +454,8 @@ struct DelaunayInserter::Impl
     bool overflow = false;
     // Breadth-first over `cavity` itself. The neighbours of a tet are usually cache misses: while one
     // tet is processed, the neighbours of the next queued tet are requested.
-    auto prefetchAround = [&](int32_t c) {
+    auto prefetchAround = [&](int32_t c)
+    {
       for (int f = 0; f < 4; ++f)
       {
         const size_t u = static_cast<size_t>((N[4 * static_cast<size_t>(c) + f] & kCodeMask) >> 2);
@@ -709,9 +715,9 @@ struct DelaunayInserter::Impl
 // Two threads insert the two halves (along the Hilbert curve) of each BRIO round from `round0` on
 // (DelaunayParallel.cxx). firstTet: the four insertion positions of the first tet (already inserted).
 Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<int32_t>& order,
-  const std::vector<size_t>& roundStarts, size_t round0, const int32_t* firstTet,
-  std::vector<int32_t>& inputToVertex, std::vector<int32_t>& rest, DelaunayReport& rep, Progress* progress,
-  uint64_t seed);
+                      const std::vector<size_t>& roundStarts, size_t round0, const int32_t* firstTet,
+                      std::vector<int32_t>& inputToVertex, std::vector<int32_t>& rest, DelaunayReport& rep,
+                      Progress* progress, uint64_t seed);
 
 // Canonical tet numbering (DelaunayCanonical.cxx): see the file. Vertices are numbered in insertion
 // order on entry; toInput (optional) maps them to the output numbering as the tets are written.

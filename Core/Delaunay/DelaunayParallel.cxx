@@ -12,13 +12,12 @@ namespace volgrid
 // meets the other thread's tets is undone and retried by `main` after the round. New slots come from a
 // pool appended to the mesh up front; when it runs out, the remaining points go to `rest`.
 Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<int32_t>& order,
-  const std::vector<size_t>& roundStarts, size_t round0, const int32_t* firstTet,
-  std::vector<int32_t>& inputToVertex, std::vector<int32_t>& rest, DelaunayReport& rep, Progress* progress,
-  uint64_t seed)
+                      const std::vector<size_t>& roundStarts, size_t round0, const int32_t* firstTet,
+                      std::vector<int32_t>& inputToVertex, std::vector<int32_t>& rest, DelaunayReport& rep,
+                      Progress* progress, uint64_t seed)
 {
-  auto isFirstTet = [firstTet](int32_t k) {
-    return k == firstTet[0] || k == firstTet[1] || k == firstTet[2] || k == firstTet[3];
-  };
+  auto isFirstTet = [firstTet](int32_t k)
+  { return k == firstTet[0] || k == firstTet[1] || k == firstTet[2] || k == firstTet[3]; };
   const int32_t m = static_cast<int32_t>(order.size());
   DelaunayInserter::Impl& mi = *main.impl_;
   const int32_t used = mesh.tetCapacity();
@@ -54,7 +53,8 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
     workers[0]->last = workers[0]->walk(mesh.point(a), mi.liveTet(workers[0]->last));
     workers[1]->last = workers[1]->walk(mesh.point(mid), workers[0]->last);
     workers[0]->owner = workers[1]->owner = owner.get();
-    auto work = [&](int i, int32_t from, int32_t to) {
+    auto work = [&](int i, int32_t from, int32_t to)
+    {
       DelaunayInserter::Impl& w = *workers[i];
       deferred[i].clear();
       for (int32_t k = from; k < to; ++k)

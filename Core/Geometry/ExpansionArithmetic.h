@@ -126,7 +126,8 @@ inline int sumExpansions(int elen, const double* e, int flen, const double* f, d
   int j = 0;
   const int total = elen + flen;
   // Next component in order of increasing magnitude (ties: take e first, any order is fine).
-  auto next = [&]() -> double {
+  auto next = [&]() -> double
+  {
     if (j >= flen || (i < elen && std::fabs(e[i]) <= std::fabs(f[j])))
     {
       return e[i++];
@@ -203,8 +204,8 @@ constexpr int multiplyScratchSize(int elen, int flen)
 // scratch must hold multiplyScratchSize(elen, flen) doubles; none of h, scratch may alias e or f.
 inline int multiplyExpansions(int elen, const double* e, int flen, const double* f, double* h, double* scratch)
 {
-  double* term = scratch;               // one scaled copy, 2 * elen
-  double* other = scratch + 2 * elen;   // ping-pong partner of h
+  double* term = scratch;             // one scaled copy, 2 * elen
+  double* other = scratch + 2 * elen; // ping-pong partner of h
   double* acc = h;
   double* spare = other;
   int accLen = scaleExpansion(elen, e, f[0], acc);

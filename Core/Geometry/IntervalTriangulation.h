@@ -11,7 +11,7 @@ namespace volgrid
 {
 
 // Calls fn(i, k, j) for each triangle, from the chord (0, n-1) down (the piece after k first).
-template <class Fn>
+template<class Fn>
 void forEachChosenTriangle(const std::vector<int>& choice, int n, Fn&& fn)
 {
   std::vector<std::pair<int, int>> stack = { { 0, n - 1 } };

@@ -73,8 +73,7 @@ void addNewellNormal(const std::vector<double>& points, const std::vector<int32_
   }
 }
 
-int loopOrientation(const std::vector<double>& points, const std::vector<int32_t>& loop,
-  const ProjectionFrame& frame)
+int loopOrientation(const std::vector<double>& points, const std::vector<int32_t>& loop, const ProjectionFrame& frame)
 {
   const size_t n = loop.size();
   if (n < 3)
@@ -93,8 +92,7 @@ int loopOrientation(const std::vector<double>& points, const std::vector<int32_t
   return frame.orient(P(low + n - 1), P(low), P(low + 1));
 }
 
-bool triangulatePolygon(const std::vector<double>& points, const std::vector<int32_t>& loop,
-  std::vector<int32_t>& out)
+bool triangulatePolygon(const std::vector<double>& points, const std::vector<int32_t>& loop, std::vector<int32_t>& out)
 {
   if (loop.size() < 3)
   {
@@ -118,8 +116,8 @@ bool triangulatePolygon(const std::vector<double>& points, const std::vector<int
   return earClipPolygon(points, loop, frame, nrm[frame.drop] > 0 ? 1 : -1, out);
 }
 
-bool earClipPolygon(const std::vector<double>& points, const std::vector<int32_t>& loop,
-  const ProjectionFrame& frame, int sign, std::vector<int32_t>& out)
+bool earClipPolygon(const std::vector<double>& points, const std::vector<int32_t>& loop, const ProjectionFrame& frame,
+                    int sign, std::vector<int32_t>& out)
 {
   const size_t n = loop.size();
   if (n < 3)
@@ -132,7 +130,8 @@ bool earClipPolygon(const std::vector<double>& points, const std::vector<int32_t
     return true;
   }
   auto P = [&](int32_t id) { return points.data() + 3 * size_t(id); };
-  auto fan = [&](const std::vector<int32_t>& rest) {
+  auto fan = [&](const std::vector<int32_t>& rest)
+  {
     for (size_t i = 1; i + 1 < rest.size(); ++i)
     {
       out.push_back(rest[0]);
@@ -150,7 +149,8 @@ bool earClipPolygon(const std::vector<double>& points, const std::vector<int32_t
   }
   std::vector<char> alive(n, 1);
   std::vector<double> quality(n, -1.0); // < 0: not an ear
-  auto evaluate = [&](int32_t i) {
+  auto evaluate = [&](int32_t i)
+  {
     const int32_t ia = prev[i], ic = next[i];
     const int32_t a = loop[ia], b = loop[i], c = loop[ic];
     quality[i] = -1.0;

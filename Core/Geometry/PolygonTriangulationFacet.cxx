@@ -22,7 +22,7 @@ enum class Where
 
 // Exact point-in-polygon in the frame: parity of the edges crossed by the ray from q towards +u.
 Where locate(const std::vector<double>& points, const std::vector<int32_t>& loop, const double* q,
-  const ProjectionFrame& frame)
+             const ProjectionFrame& frame)
 {
   const int v = (frame.drop + 2) % 3;
   bool inside = false;
@@ -54,7 +54,7 @@ Where locate(const std::vector<double>& points, const std::vector<int32_t>& loop
     {
       // Horizontal edge on q's line: q on it?
       if (!frame.lessUV(q, std::min(a, b, [&](const double* x, const double* y) { return frame.lessUV(x, y); })) &&
-        !frame.lessUV(std::max(a, b, [&](const double* x, const double* y) { return frame.lessUV(x, y); }), q))
+          !frame.lessUV(std::max(a, b, [&](const double* x, const double* y) { return frame.lessUV(x, y); }), q))
       {
         return Where::Boundary;
       }
@@ -65,7 +65,7 @@ Where locate(const std::vector<double>& points, const std::vector<int32_t>& loop
 
 // Polygon `inner` lies inside polygon `outer`: decided at its first corner that is not on `outer`.
 bool nestedIn(const std::vector<double>& points, const std::vector<int32_t>& inner, const std::vector<int32_t>& outer,
-  const ProjectionFrame& frame)
+              const ProjectionFrame& frame)
 {
   for (int32_t id : inner)
   {
@@ -80,7 +80,7 @@ bool nestedIn(const std::vector<double>& points, const std::vector<int32_t>& inn
 } // namespace
 
 bool triangulateFacet(const std::vector<double>& points, const std::vector<std::vector<int32_t>>& polygons,
-  const std::vector<double>& holePoints, std::vector<int32_t>& out, FacetTriangulationInfo* infoOut)
+                      const std::vector<double>& holePoints, std::vector<int32_t>& out, FacetTriangulationInfo* infoOut)
 {
   FacetTriangulationInfo localInfo;
   FacetTriangulationInfo& info = infoOut ? *infoOut : localInfo;
@@ -192,9 +192,8 @@ bool triangulateFacet(const std::vector<double>& points, const std::vector<std::
       }
     }
     ++info.regions;
-    const bool ok = children.empty()
-      ? triangulatePolygon(points, *loops[i], out)
-      : triangulatePolygonWithHoles(points, *loops[i], children, frame, out);
+    const bool ok = children.empty() ? triangulatePolygon(points, *loops[i], out)
+                                     : triangulatePolygonWithHoles(points, *loops[i], children, frame, out);
     if (!ok)
     {
       ++info.failures;

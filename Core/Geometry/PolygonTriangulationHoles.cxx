@@ -93,7 +93,7 @@ public:
 
   // Joins `hole` (clockwise) into `joined` (counter-clockwise); `pending` are the holes not joined yet.
   bool bridge(std::vector<int32_t>& joined, const std::vector<int32_t>& hole,
-    const std::vector<std::vector<int32_t>>& pending) const
+              const std::vector<std::vector<int32_t>>& pending) const
   {
     const size_t m = hole.size();
     // Hole corners by decreasing u: the rightmost one sees the joined loop (Eberly); the others are
@@ -125,8 +125,7 @@ public:
           best = j;
           break;
         }
-        if (!insideCorner(joined, j, h) || !insideCorner(hole, hi, o) || hitsLoop(o, h, joined) ||
-          hitsLoop(o, h, hole))
+        if (!insideCorner(joined, j, h) || !insideCorner(hole, hi, o) || hitsLoop(o, h, joined) || hitsLoop(o, h, hole))
         {
           continue;
         }
@@ -176,7 +175,8 @@ private:
 } // namespace
 
 bool triangulatePolygonWithHoles(const std::vector<double>& points, const std::vector<int32_t>& outer,
-  const std::vector<std::vector<int32_t>>& holes, const ProjectionFrame& frame, std::vector<int32_t>& out)
+                                 const std::vector<std::vector<int32_t>>& holes, const ProjectionFrame& frame,
+                                 std::vector<int32_t>& out)
 {
   const int outerSign = loopOrientation(points, outer, frame);
   if (outerSign == 0)
@@ -203,7 +203,8 @@ bool triangulatePolygonWithHoles(const std::vector<double>& points, const std::v
       std::reverse(pending.back().begin(), pending.back().end());
     }
   }
-  auto rightmost = [&](const std::vector<int32_t>& loop) {
+  auto rightmost = [&](const std::vector<int32_t>& loop)
+  {
     const double* best = points.data() + 3 * size_t(loop[0]);
     for (int32_t id : loop)
     {
@@ -215,7 +216,8 @@ bool triangulatePolygonWithHoles(const std::vector<double>& points, const std::v
     return best;
   };
   std::sort(pending.begin(), pending.end(),
-    [&](const std::vector<int32_t>& a, const std::vector<int32_t>& b) { return frame.lessUV(rightmost(b), rightmost(a)); });
+            [&](const std::vector<int32_t>& a, const std::vector<int32_t>& b)
+            { return frame.lessUV(rightmost(b), rightmost(a)); });
   bool ok = true;
   HoleBridger bridger(points, frame);
   while (!pending.empty())

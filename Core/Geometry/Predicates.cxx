@@ -134,7 +134,8 @@ int incircleDeterminantExact(const double* a, const double* b, const double* c, 
     W[r].n = sumExpansions(n01, s01, sn[2], sq[2], W[r].v);
   }
   // Minor M(r,s) = X_r Y_s - X_s Y_r (<= 16 components).
-  auto minor = [&](int r, int s, double* out) {
+  auto minor = [&](int r, int s, double* out)
+  {
     double p1[8], p2[8], scratch[multiplyScratchSize(2, 2)];
     const int n1 = multiplyExpansions(X[r].n, X[r].v, Y[s].n, Y[s].v, p1, scratch);
     const int n2 = multiplyExpansions(X[s].n, X[s].v, Y[r].n, Y[r].v, p2, scratch);
@@ -205,8 +206,8 @@ int orient2dExact(const double* a, const double* b, const double* c, int i, int 
   return orient2dExactImpl(a, b, c, i, j);
 }
 
-int insphereSoSTie(const double* a, const double* b, const double* c, const double* d, const double* e,
-  int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide)
+int insphereSoSTie(const double* a, const double* b, const double* c, const double* d, const double* e, int64_t ida,
+                   int64_t idb, int64_t idc, int64_t idd, int64_t ide)
 {
   // Exactly cospherical. Lifting perturbation: point i is lifted to |p_i|^2 + eps^(r_i), where r_i is
   // the rank of id_i in DECREASING order (the largest id gets the largest perturbation, eps^1). This is
@@ -288,8 +289,8 @@ int insphere(const double* a, const double* b, const double* c, const double* d,
   return insphereInline(a, b, c, d, e);
 }
 
-int insphereSoS(const double* a, const double* b, const double* c, const double* d, const double* e,
-  int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide)
+int insphereSoS(const double* a, const double* b, const double* c, const double* d, const double* e, int64_t ida,
+                int64_t idb, int64_t idc, int64_t idd, int64_t ide)
 {
   return insphereSoSInline(a, b, c, d, e, ida, idb, idc, idd, ide);
 }
@@ -306,8 +307,7 @@ int incircle3d(const double* a, const double* b, const double* c, const double* 
   // projected orientation.
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const double n[3] = { std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz),
-    std::fabs(ux * vy - uy * vx) };
+  const double n[3] = { std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz), std::fabs(ux * vy - uy * vx) };
   int axes[3] = { 0, 1, 2 };
   if (n[axes[1]] > n[axes[0]])
   {

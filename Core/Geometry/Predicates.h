@@ -34,8 +34,8 @@ int insphere(const double* a, const double* b, const double* c, const double* d,
 
 // insphere with the lifting perturbation |p_i|^2 + eps^(rank of id_i): never 0 when (a,b,c,d) is not flat.
 // The ids must be distinct. Requires orient3d(a,b,c,d) != 0.
-int insphereSoS(const double* a, const double* b, const double* c, const double* d, const double* e,
-  int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide);
+int insphereSoS(const double* a, const double* b, const double* c, const double* d, const double* e, int64_t ida,
+                int64_t idb, int64_t idc, int64_t idd, int64_t ide);
 
 // 2D in-circle test of d against triangle abc, all four points coplanar in 3D (used for degenerate hull
 // faces). +1 when d is strictly inside the circumcircle of abc (whatever the orientation of abc), -1

@@ -86,7 +86,7 @@ inline double absDot3(const double* a, const double* b)
 inline double absTriple(const double* a, const double* b, const double* c)
 {
   return (std::fabs(a[0]) * (std::fabs(b[1] * c[2]) + std::fabs(b[2] * c[1])) +
-           std::fabs(a[1]) * (std::fabs(b[2] * c[0]) + std::fabs(b[0] * c[2]))) +
+          std::fabs(a[1]) * (std::fabs(b[2] * c[0]) + std::fabs(b[0] * c[2]))) +
     std::fabs(a[2]) * (std::fabs(b[0] * c[1]) + std::fabs(b[1] * c[0]));
 }
 
@@ -113,7 +113,8 @@ constexpr int kLDDigits = std::numeric_limits<LD>::digits;
 
 bool extendedPrecisionUsable()
 {
-  static const bool usable = [] {
+  static const bool usable = []
+  {
     if (kLDDigits < 60)
     {
       return false;
@@ -122,8 +123,8 @@ bool extendedPrecisionUsable()
     volatile LD one = 1.0L;
     volatile LD tiny = std::ldexp(1.0L, -(kLDDigits - 1));
     volatile LD half = std::ldexp(1.0L, -kLDDigits);
-    const LD a = one + tiny;  // representable: must differ from 1
-    const LD b = one + half;  // a tie: rounds to even, i.e. to 1
+    const LD a = one + tiny;          // representable: must differ from 1
+    const LD b = one + half;          // a tie: rounds to even, i.e. to 1
     const LD c = (one + tiny) + half; // a tie above an odd significand: rounds up
     return a != one && b == one && c == one + 2 * tiny;
   }();
@@ -149,8 +150,8 @@ int orient3dExtended(const double* a, const double* b, const double* c, const do
   const LD wx = LD(d[0]) - a[0], wy = LD(d[1]) - a[1], wz = LD(d[2]) - a[2];
   const LD vywz = vy * wz, vzwy = vz * wy, vzwx = vz * wx, vxwz = vx * wz, vxwy = vx * wy, vywx = vy * wx;
   const LD det = (ux * (vywz - vzwy) + uy * (vzwx - vxwz)) + uz * (vxwy - vywx);
-  const LD perm = (std::fabs(ux) * (std::fabs(vywz) + std::fabs(vzwy)) +
-                    std::fabs(uy) * (std::fabs(vzwx) + std::fabs(vxwz))) +
+  const LD perm =
+    (std::fabs(ux) * (std::fabs(vywz) + std::fabs(vzwy)) + std::fabs(uy) * (std::fabs(vzwx) + std::fabs(vxwz))) +
     std::fabs(uz) * (std::fabs(vxwy) + std::fabs(vywx));
   const LD bound = (9 * kUnitLD) * perm;
   return det > bound ? 1 : (-det > bound ? -1 : 0);
@@ -201,7 +202,7 @@ constexpr double kOrient3dBoundC = 26.0 * kEps * kEps;
 constexpr double kTiny = 0x1p-1073;
 
 int orient3dExactImpl(const double* a, const double* b, const double* c, const double* d, bool extended,
-  bool fixedPoint, int* stage)
+                      bool fixedPoint, int* stage)
 {
   int fixedSign;
   if (fixedPoint && fixedpoint::orient3d(a, b, c, d, &fixedSign))
@@ -381,7 +382,7 @@ double insphereFirstOrder(const double (*q)[3], const double (*t)[3])
 }
 
 int insphereExactImpl(const double* a, const double* b, const double* c, const double* d, const double* e,
-  bool extended, bool fixedPoint, int* stage)
+                      bool extended, bool fixedPoint, int* stage)
 {
   int fixedSign;
   if (fixedPoint && fixedpoint::insphere(a, b, c, d, e, &fixedSign))
@@ -511,14 +512,14 @@ int insphereExact(const double* a, const double* b, const double* c, const doubl
   return insphereExactImpl(a, b, c, d, e, true, true, nullptr);
 }
 
-int orient3dExactStaged(const double* a, const double* b, const double* c, const double* d, bool extended,
-  int* stage, bool fixedPoint)
+int orient3dExactStaged(const double* a, const double* b, const double* c, const double* d, bool extended, int* stage,
+                        bool fixedPoint)
 {
   return orient3dExactImpl(a, b, c, d, extended, fixedPoint, stage);
 }
 
 int insphereExactStaged(const double* a, const double* b, const double* c, const double* d, const double* e,
-  bool extended, int* stage, bool fixedPoint)
+                        bool extended, int* stage, bool fixedPoint)
 {
   return insphereExactImpl(a, b, c, d, e, extended, fixedPoint, stage);
 }

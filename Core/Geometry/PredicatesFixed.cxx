@@ -25,7 +25,6 @@
 #include <cstdint>
 #include <cstring>
 
-
 namespace volgrid
 {
 namespace predicates
@@ -41,13 +40,13 @@ using u128 = unsigned __int128;
 constexpr int kMaxBits = 61; // |X| < 2^kMaxBits
 
 // Two's complement integer of N 64-bit limbs, least significant first.
-template <int N>
+template<int N>
 struct Wide
 {
   uint64_t v[N];
 };
 
-template <int N>
+template<int N>
 inline Wide<N> fromI128(i128 x)
 {
   Wide<N> r;
@@ -65,7 +64,7 @@ inline Wide<N> fromI128(i128 x)
   return r;
 }
 
-template <int N>
+template<int N>
 inline bool isNegative(const Wide<N>& a)
 {
   return (a.v[N - 1] >> 63) != 0;
@@ -73,7 +72,7 @@ inline bool isNegative(const Wide<N>& a)
 
 // a = -a when mask is all ones, unchanged when mask is 0; branch-free (the signs of minors are
 // unpredictable, a mispredicted branch per product would cost more than the product).
-template <int N>
+template<int N>
 inline void negateIf(Wide<N>& a, uint64_t mask)
 {
   uint64_t carry = mask & 1;
@@ -86,7 +85,7 @@ inline void negateIf(Wide<N>& a, uint64_t mask)
 }
 
 // a += s * b, s = +1 or -1.
-template <int N>
+template<int N>
 inline void accumulate(Wide<N>& a, const Wide<N>& b, bool subtract)
 {
   if (!subtract)
@@ -111,7 +110,7 @@ inline void accumulate(Wide<N>& a, const Wide<N>& b, bool subtract)
   }
 }
 
-template <int N>
+template<int N>
 inline int signOf(const Wide<N>& a)
 {
   if (isNegative(a))
@@ -129,7 +128,7 @@ inline int signOf(const Wide<N>& a)
 }
 
 // r = a * b (a magnitude of A limbs, b of B limbs), truncated to R limbs; r must not alias.
-template <int R, int A, int B>
+template<int R, int A, int B>
 inline void multiplyMagnitudes(const uint64_t* a, const uint64_t* b, uint64_t* r)
 {
   for (int i = 0; i < R; ++i)

@@ -39,7 +39,7 @@ inline int signOf(double x)
 // coordinates (q[0] = q123, q[1] = q023, q[2] = q013, q[3] = q012). One expression tree for the double
 // filter below, the extended-precision stage (PredicatesAdaptive.cxx) and the Delaunay kernel's filter
 // (DelaunayInserterImpl.h); what a caller does not use is optimised away.
-template <typename Real>
+template<typename Real>
 struct InsphereTerms
 {
   Real det;
@@ -48,9 +48,9 @@ struct InsphereTerms
   Real permanent() const { return (w[1] * q[1] + w[0] * q[0]) + (w[3] * q[3] + w[2] * q[2]); }
 };
 
-template <typename Real>
-inline InsphereTerms<Real> insphereTerms(
-  const double* a, const double* b, const double* c, const double* d, const double* e)
+template<typename Real>
+inline InsphereTerms<Real> insphereTerms(const double* a, const double* b, const double* c, const double* d,
+                                         const double* e)
 {
   const Real x0 = Real(a[0]) - e[0], y0 = Real(a[1]) - e[1], z0 = Real(a[2]) - e[2];
   const Real x1 = Real(b[0]) - e[0], y1 = Real(b[1]) - e[1], z1 = Real(b[2]) - e[2];
@@ -92,13 +92,13 @@ int orient2dExact(const double* a, const double* b, const double* c, int i, int 
 // integers (extreme exponents), 7 = fixed-point integers (narrow exponent range, PredicatesFixed.h).
 // extended = false skips stage 1, fixedPoint = false skips stage 7 (to exercise the others). The
 // production path (orient3dExact / insphereExact) tries stage 7 first, then 1, then 2..6.
-int orient3dExactStaged(const double* a, const double* b, const double* c, const double* d, bool extended,
-  int* stage, bool fixedPoint = false);
+int orient3dExactStaged(const double* a, const double* b, const double* c, const double* d, bool extended, int* stage,
+                        bool fixedPoint = false);
 int insphereExactStaged(const double* a, const double* b, const double* c, const double* d, const double* e,
-  bool extended, int* stage, bool fixedPoint = false);
+                        bool extended, int* stage, bool fixedPoint = false);
 // insphereSoS when insphere(a,b,c,d,e) == 0: the first nonzero cofactor in decreasing id order.
-int insphereSoSTie(const double* a, const double* b, const double* c, const double* d, const double* e,
-  int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide);
+int insphereSoSTie(const double* a, const double* b, const double* c, const double* d, const double* e, int64_t ida,
+                   int64_t idb, int64_t idc, int64_t idd, int64_t ide);
 } // namespace detail
 
 inline int orient3dInline(const double* a, const double* b, const double* c, const double* d)
@@ -138,8 +138,8 @@ inline int insphereInline(const double* a, const double* b, const double* c, con
   return detail::insphereExact(a, b, c, d, e);
 }
 
-inline int insphereSoSInline(const double* a, const double* b, const double* c, const double* d,
-  const double* e, int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide)
+inline int insphereSoSInline(const double* a, const double* b, const double* c, const double* d, const double* e,
+                             int64_t ida, int64_t idb, int64_t idc, int64_t idd, int64_t ide)
 {
   const int s = insphereInline(a, b, c, d, e);
   if (s != 0)

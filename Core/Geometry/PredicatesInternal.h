@@ -23,7 +23,7 @@ namespace internal
 using namespace expansion;
 
 // A small fixed-capacity expansion (stack storage; no allocation anywhere in the predicates).
-template <int N>
+template<int N>
 struct Exp
 {
   double v[N];
@@ -142,8 +142,8 @@ inline void minor2(double pi, double pj, double qi, double qj, Exp<4>& h)
 
 // det of rows p,q,r (columns x,y,z) expanded along z: pz*m(q,r) - qz*m(p,r) + rz*m(p,q), with the xy
 // minors given. <= 24 components.
-inline void det3FromMinors(double pz, double qz, double rz, const Exp<4>& mqr, const Exp<4>& mpr,
-  const Exp<4>& mpq, Exp<24>& h)
+inline void det3FromMinors(double pz, double qz, double rz, const Exp<4>& mqr, const Exp<4>& mpr, const Exp<4>& mpq,
+                           Exp<24>& h)
 {
   double t1[8], t2[8], t3[8], t12[16];
   const int n1 = scaleExpansion(mqr.n, mqr.v, pz, t1);
@@ -190,7 +190,7 @@ struct Minors
   void computeTriple(const double (*p)[3], int i, int j, int k)
   {
     det3FromMinors(p[i][2], p[j][2], p[k][2], m2[pairMask(j, k)], m2[pairMask(i, k)], m2[pairMask(i, j)],
-      m3[pairMask(i, j) | (1 << k)]);
+                   m3[pairMask(i, j) | (1 << k)]);
   }
   const Exp<24>& triple(int i, int j, int k) const { return m3[(1 << i) | (1 << j) | (1 << k)]; }
 };

@@ -170,7 +170,7 @@ BigInt toBigInt(double x, int low)
   }
   const int zeros = countTrailingZeros(mant);
   mant >>= zeros;
-  exponent += zeros;                // now the exponent of the lowest set bit, >= low
+  exponent += zeros; // now the exponent of the lowest set bit, >= low
   const int shift = exponent - low;
   const int limbShift = shift / 32;
   const int bitShift = shift % 32;
@@ -214,8 +214,7 @@ void toBigInts(const double* const* pts, int n, BigInt (*out)[3])
 // p . (q x r)
 BigInt tripleProduct(const BigInt* p, const BigInt* q, const BigInt* r)
 {
-  return (p[0] * (q[1] * r[2] - q[2] * r[1]) + p[1] * (q[2] * r[0] - q[0] * r[2])) +
-    p[2] * (q[0] * r[1] - q[1] * r[0]);
+  return (p[0] * (q[1] * r[2] - q[2] * r[1]) + p[1] * (q[2] * r[0] - q[0] * r[2])) + p[2] * (q[0] * r[1] - q[1] * r[0]);
 }
 } // namespace
 
@@ -279,8 +278,8 @@ int incircleDeterminantWide(const double* const* in, int i, int j)
     Y[r] = d[j];
     W[r] = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
   }
-  const BigInt e = (W[0] * (X[1] * Y[2] - X[2] * Y[1]) - W[1] * (X[0] * Y[2] - X[2] * Y[0])) +
-    W[2] * (X[0] * Y[1] - X[1] * Y[0]);
+  const BigInt e =
+    (W[0] * (X[1] * Y[2] - X[2] * Y[1]) - W[1] * (X[0] * Y[2] - X[2] * Y[0])) + W[2] * (X[0] * Y[1] - X[1] * Y[0]);
   return e.sign();
 }
 

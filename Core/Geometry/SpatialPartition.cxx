@@ -44,10 +44,12 @@ struct Bisector
     const int64_t mid = begin + (end - begin) * lowParts / parts;
     const int axis = this->longestAxis(ids, begin, end);
     // Ties on the coordinate are broken by the id, so that the cut is unique.
-    std::nth_element(ids.begin() + begin, ids.begin() + mid, ids.begin() + end, [&](int64_t a, int64_t b) {
-      const double ca = xyz[3 * a + axis], cb = xyz[3 * b + axis];
-      return ca < cb || (ca == cb && a < b);
-    });
+    std::nth_element(ids.begin() + begin, ids.begin() + mid, ids.begin() + end,
+                     [&](int64_t a, int64_t b)
+                     {
+                       const double ca = xyz[3 * a + axis], cb = xyz[3 * b + axis];
+                       return ca < cb || (ca == cb && a < b);
+                     });
     this->split(ids, begin, mid, firstPart, lowParts);
     this->split(ids, mid, end, firstPart + lowParts, parts - lowParts);
   }

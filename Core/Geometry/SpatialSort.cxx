@@ -40,7 +40,8 @@ uint64_t hilbertIndex(uint32_t x, uint32_t y, uint32_t z, int bits)
   c[1] ^= flip;
   c[2] ^= flip;
   // Interleave: bit b of axis i goes to position 3b + (2-i).
-  auto spread = [](uint64_t v) {
+  auto spread = [](uint64_t v)
+  {
     v &= 0x1fffff;
     v = (v | (v << 32)) & 0x1f00000000ffffull;
     v = (v | (v << 16)) & 0x1f0000ff0000ffull;
@@ -213,7 +214,7 @@ void brioRounds(std::vector<int32_t>& ids, uint64_t seed, size_t minFirstRound, 
   // (largest) round is never reversed.
   for (int r = rounds - 2; r >= 0; r -= 2)
     std::reverse(out.begin() + static_cast<std::ptrdiff_t>(count[r]),
-      out.begin() + static_cast<std::ptrdiff_t>(count[r + 1]));
+                 out.begin() + static_cast<std::ptrdiff_t>(count[r + 1]));
   ids.swap(out);
   if (roundStarts)
     roundStarts->assign(count.begin(), count.end());

@@ -27,7 +27,7 @@ void hilbertSort(const double* xyz, std::vector<int32_t>& ids, std::vector<uint6
 // that a round starts near where the previous one ended.
 // If roundStarts is given it receives the offset of each round in ids, plus ids.size() at the end.
 void brioRounds(std::vector<int32_t>& ids, uint64_t seed, size_t minFirstRound = 64,
-  std::vector<size_t>* roundStarts = nullptr);
+                std::vector<size_t>* roundStarts = nullptr);
 
 // Convenience: ids = 0..n-1 in BRIO-Hilbert order.
 void brioHilbertOrder(const double* xyz, size_t n, uint64_t seed, std::vector<int32_t>& order);
@@ -36,7 +36,10 @@ void brioHilbertOrder(const double* xyz, size_t n, uint64_t seed, std::vector<in
 struct SplitMix64
 {
   uint64_t state;
-  explicit SplitMix64(uint64_t seed) : state(seed) {}
+  explicit SplitMix64(uint64_t seed)
+    : state(seed)
+  {
+  }
   uint64_t next()
   {
     uint64_t z = (state += 0x9E3779B97F4A7C15ull);

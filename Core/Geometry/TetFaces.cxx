@@ -32,7 +32,7 @@ std::vector<TetFace> sortedTetFaces(const std::vector<double>& points, const std
     }
   }
   std::sort(faces.begin(), faces.end(),
-    [](const TetFace& a, const TetFace& b) { return a.key < b.key || (a.key == b.key && a.tet < b.tet); });
+            [](const TetFace& a, const TetFace& b) { return a.key < b.key || (a.key == b.key && a.tet < b.tet); });
   return faces;
 }
 

@@ -91,7 +91,8 @@ namespace
 {
 
 // Closed segment-triangle test; op/oq = orient3d(a,b,c,p) / orient3d(a,b,c,q).
-bool segmentTriangle(const double* p, const double* q, const double* a, const double* b, const double* c, int op, int oq)
+bool segmentTriangle(const double* p, const double* q, const double* a, const double* b, const double* c, int op,
+                     int oq)
 {
   if (op == oq && op != 0)
   {

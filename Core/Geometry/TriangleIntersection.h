@@ -12,8 +12,7 @@ namespace volgrid
 // True when the closed triangles (p0,p1,p2) and (q0,q1,q2) intersect beyond the corners they share.
 // ip/iq are vertex identities (equal ids mean the same vertex; pass distinct ids when nothing is
 // shared). Both triangles must be non-degenerate.
-bool trianglesIntersect(const double* const p[3], const int32_t ip[3], const double* const q[3],
-  const int32_t iq[3]);
+bool trianglesIntersect(const double* const p[3], const int32_t ip[3], const double* const q[3], const int32_t iq[3]);
 
 // True when triangle (a,b,c) has zero area (collinear corners), exactly.
 bool triangleIsDegenerate(const double* a, const double* b, const double* c);

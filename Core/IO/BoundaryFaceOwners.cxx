@@ -39,8 +39,8 @@ Status findBoundaryFaceOwners(const SolverMesh& mesh, std::vector<FaceOwner>& ow
   return findBoundaryFaceOwners(mesh.tets, mesh.triangles, owners);
 }
 
-Status findBoundaryFaceOwners(
-  const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles, std::vector<FaceOwner>& owners)
+Status findBoundaryFaceOwners(const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
+                              std::vector<FaceOwner>& owners)
 {
   const int64_t numTriangles = static_cast<int64_t>(triangles.size() / 3);
   const int64_t numTets = static_cast<int64_t>(tets.size() / 4);
@@ -71,9 +71,9 @@ Status findBoundaryFaceOwners(
     return Status::success();
   const std::vector<int64_t> first(orphans.begin(), orphans.begin() + std::min<size_t>(orphans.size(), 5));
   return Status::failure(ErrorKind::InvalidOption,
-    std::to_string(orphans.size()) + " boundary triangle(s) are not a face of any tet (first " +
-      std::to_string(first[0]) + ")",
-    first);
+                         std::to_string(orphans.size()) + " boundary triangle(s) are not a face of any tet (first " +
+                           std::to_string(first[0]) + ")",
+                         first);
 }
 
 } // namespace volgrid

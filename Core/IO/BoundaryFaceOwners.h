@@ -22,8 +22,8 @@ struct FaceOwner
 
 // One owner per triangle of `triangles` (3 ids each) among `tets` (4 ids each). Fails naming the first
 // triangles that are not a face of any tet (their owner stays tet -1).
-Status findBoundaryFaceOwners(
-  const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles, std::vector<FaceOwner>& owners);
+Status findBoundaryFaceOwners(const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
+                              std::vector<FaceOwner>& owners);
 Status findBoundaryFaceOwners(const SolverMesh& mesh, std::vector<FaceOwner>& owners);
 
 } // namespace volgrid

@@ -35,10 +35,12 @@ Status skipSection(Scanner& sc, std::string_view name)
 // the physical tag as the patch id, and VolGrid's writer gives each entity its physical group's tag).
 Status readPhysicalNames(Scanner& sc, SurfaceMesh& mesh)
 {
-  Status s = readGmshPhysicalNames(sc, [&](int64_t dim, int64_t tag, std::string name) {
-    if (dim == 2)
-      mesh.patchNames[static_cast<int32_t>(tag)] = std::move(name);
-  });
+  Status s = readGmshPhysicalNames(sc,
+                                   [&](int64_t dim, int64_t tag, std::string name)
+                                   {
+                                     if (dim == 2)
+                                       mesh.patchNames[static_cast<int32_t>(tag)] = std::move(name);
+                                   });
   if (!s.ok())
   {
     return s;
@@ -52,8 +54,7 @@ Status readPhysicalNames(Scanner& sc, SurfaceMesh& mesh)
 }
 } // namespace
 
-Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
-  const SurfaceReadOptions& options)
+Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
   mesh.clear();
   SurfaceReadInfo localInfo;
@@ -74,7 +75,8 @@ Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* inf
   std::unordered_map<int64_t, int32_t> nodeIndex;
   std::vector<int32_t> loop, scratch;
   std::vector<std::string_view> toks;
-  auto node = [&](int64_t tag, int32_t& index) -> Status {
+  auto node = [&](int64_t tag, int32_t& index) -> Status
+  {
     auto it = nodeIndex.find(tag);
     if (it == nodeIndex.end())
     {
@@ -278,11 +280,12 @@ Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* inf
         {
           if (!sc.nextLine(toks))
           {
-            return sc.error("unexpected end of file: read " + std::to_string(e) + " of " + std::to_string(n) + " elements");
+            return sc.error("unexpected end of file: read " + std::to_string(e) + " of " + std::to_string(n) +
+                            " elements");
           }
           int64_t id, type, ntags;
           if (toks.size() < 3 || !parseInt(toks[0], id) || !parseInt(toks[1], type) || !parseInt(toks[2], ntags) ||
-            ntags < 0 || static_cast<int64_t>(toks.size()) < 3 + ntags)
+              ntags < 0 || static_cast<int64_t>(toks.size()) < 3 + ntags)
           {
             return sc.error("malformed element line");
           }

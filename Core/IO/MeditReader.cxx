@@ -14,7 +14,7 @@ namespace volgrid
 using namespace detail;
 
 Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
-  const SurfaceReadOptions& options)
+                 const SurfaceReadOptions& options)
 {
   mesh.clear();
   SurfaceReadInfo localInfo;
@@ -37,12 +37,26 @@ Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* in
   bool haveVertices = false;
   std::vector<int32_t> loop, scratch;
   // Entries per record of the sections we skip.
-  static const std::pair<const char*, int> skipped[] = { { "Edges", 3 }, { "Tetrahedra", 5 },
-    { "Prisms", 7 }, { "Pentahedra", 7 }, { "Hexahedra", 9 }, { "Corners", 1 }, { "Ridges", 1 },
-    { "RequiredVertices", 1 }, { "RequiredEdges", 1 }, { "RequiredTriangles", 1 },
-    { "RequiredQuadrilaterals", 1 }, { "Normals", 3 }, { "Tangents", 3 }, { "NormalAtVertices", 2 },
-    { "NormalAtTriangleVertices", 3 }, { "NormalAtQuadrilateralVertices", 3 }, { "TangentAtVertices", 2 },
-    { "TangentAtEdgeVertices", 3 }, { "Crack", 2 }, { "Edges", 3 } };
+  static const std::pair<const char*, int> skipped[] = { { "Edges", 3 },
+                                                         { "Tetrahedra", 5 },
+                                                         { "Prisms", 7 },
+                                                         { "Pentahedra", 7 },
+                                                         { "Hexahedra", 9 },
+                                                         { "Corners", 1 },
+                                                         { "Ridges", 1 },
+                                                         { "RequiredVertices", 1 },
+                                                         { "RequiredEdges", 1 },
+                                                         { "RequiredTriangles", 1 },
+                                                         { "RequiredQuadrilaterals", 1 },
+                                                         { "Normals", 3 },
+                                                         { "Tangents", 3 },
+                                                         { "NormalAtVertices", 2 },
+                                                         { "NormalAtTriangleVertices", 3 },
+                                                         { "NormalAtQuadrilateralVertices", 3 },
+                                                         { "TangentAtVertices", 2 },
+                                                         { "TangentAtEdgeVertices", 3 },
+                                                         { "Crack", 2 },
+                                                         { "Edges", 3 } };
   std::string_view tok;
   while (sc.next(tok))
   {
@@ -133,7 +147,7 @@ Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* in
           if (id < 1 || id > nv)
           {
             return sc.error("element " + std::to_string(e + 1) + ": vertex id " + std::to_string(id) +
-              " out of range [1," + std::to_string(nv) + "]");
+                            " out of range [1," + std::to_string(nv) + "]");
           }
           loop.push_back(static_cast<int32_t>(id - 1));
         }

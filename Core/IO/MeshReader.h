@@ -1,7 +1,8 @@
 // Solver mesh readers: a tet mesh with its named boundary patches and regions back into a SolverMesh,
 // so that `volgrid convert`, `refine` and `quality` take a solver's mesh. One format per file
 // (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx,
-// MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx, MeshReaderCGNS.cxx, MeshReaderExodus.cxx). Errors name the file, the line and the problem.
+// MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx, MeshReaderCGNS.cxx, MeshReaderExodus.cxx). Errors name the file, the
+// line and the problem.
 #pragma once
 
 #include "SolverMesh.h"

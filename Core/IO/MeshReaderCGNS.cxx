@@ -54,7 +54,7 @@ Status readCoordinates(const std::string& path, int file, int zone, cgsize_t num
 
 // The sections: tets and triangles appended to `mesh`, each triangle's element number in `triangleOf`.
 Status readSections(const std::string& path, int file, int zone, cgsize_t numPoints, SolverMesh& mesh,
-  std::map<cgsize_t, int64_t>& triangleOf)
+                    std::map<cgsize_t, int64_t>& triangleOf)
 {
   int numSections = 0;
   if (cg_nsections(file, 1, zone, &numSections) != CG_OK)
@@ -67,12 +67,13 @@ Status readSections(const std::string& path, int file, int zone, cgsize_t numPoi
     cgsize_t start = 0, end = 0, dataSize = 0;
     int boundary = 0, parents = 0;
     if (cg_section_read(file, 1, zone, section, name, &type, &start, &end, &boundary, &parents) != CG_OK ||
-      cg_ElementDataSize(file, 1, zone, section, &dataSize) != CG_OK)
+        cg_ElementDataSize(file, 1, zone, section, &dataSize) != CG_OK)
       return cgnsFailure(path, cg_get_error());
     const int perCell = type == CGNS_ENUMV(TETRA_4) ? 4 : type == CGNS_ENUMV(TRI_3) ? 3 : 0;
     if (perCell == 0)
-      return cgnsFailure(path, "section '" + std::string(name) + "' holds " +
-          cg_ElementTypeName(type) + " elements (only TETRA_4 and TRI_3 are read)");
+      return cgnsFailure(path,
+                         "section '" + std::string(name) + "' holds " + cg_ElementTypeName(type) +
+                           " elements (only TETRA_4 and TRI_3 are read)");
     if (end < start || dataSize != (end - start + 1) * perCell || dataSize > countLimit(path))
       return cgnsFailure(path, "section '" + std::string(name) + "' has an inconsistent size");
     std::vector<cgsize_t> connectivity(static_cast<size_t>(dataSize));
@@ -80,8 +81,9 @@ Status readSections(const std::string& path, int file, int zone, cgsize_t numPoi
       return cgnsFailure(path, cg_get_error());
     for (cgsize_t v : connectivity)
       if (v < 1 || v > numPoints)
-        return cgnsFailure(path, "section '" + std::string(name) + "' names point " + std::to_string(v) +
-            " of " + std::to_string(numPoints));
+        return cgnsFailure(path,
+                           "section '" + std::string(name) + "' names point " + std::to_string(v) + " of " +
+                             std::to_string(numPoints));
     std::vector<int32_t>& cells = perCell == 4 ? mesh.tets : mesh.triangles;
     for (cgsize_t v : connectivity)
       cells.push_back(static_cast<int32_t>(v - 1));
@@ -103,7 +105,8 @@ Status readSections(const std::string& path, int file, int zone, cgsize_t numPoi
 
 // The triangles one boundary condition covers.
 Status conditionTriangles(const std::string& path, int file, int zone, int bc, const SolverMesh& mesh,
-  const std::map<cgsize_t, int64_t>& triangleOf, std::string& name, std::vector<int64_t>& covered)
+                          const std::map<cgsize_t, int64_t>& triangleOf, std::string& name,
+                          std::vector<int64_t>& covered)
 {
   char text[33] = {};
   CGNS_ENUMT(BCType_t) type;
@@ -113,8 +116,8 @@ Status conditionTriangles(const std::string& path, int file, int zone, int bc, c
   cgsize_t numSetPoints = 0, normalSize = 0;
   int normalIndex[3] = {}, numData = 0;
   if (cg_boco_info(file, 1, zone, bc, text, &type, &setType, &numSetPoints, normalIndex, &normalSize, &normalType,
-        &numData) != CG_OK ||
-    cg_boco_gridlocation_read(file, 1, zone, bc, &location) != CG_OK)
+                   &numData) != CG_OK ||
+      cg_boco_gridlocation_read(file, 1, zone, bc, &location) != CG_OK)
     return cgnsFailure(path, cg_get_error());
   name = text;
   if (numSetPoints < 0 || numSetPoints > countLimit(path))
@@ -140,7 +143,8 @@ Status conditionTriangles(const std::string& path, int file, int zone, int bc, c
         covered.push_back(t);
     return Status::success();
   }
-  auto add = [&](cgsize_t element) {
+  auto add = [&](cgsize_t element)
+  {
     const auto it = triangleOf.find(element);
     if (it != triangleOf.end())
       covered.push_back(it->second);
@@ -157,7 +161,7 @@ Status conditionTriangles(const std::string& path, int file, int zone, int bc, c
 // Relabels the triangles by boundary condition: condition k is patch k; triangles no condition covers
 // keep their section's patch, after the conditions.
 Status readBoundaryConditions(const std::string& path, int file, int zone, SolverMesh& mesh,
-  const std::map<cgsize_t, int64_t>& triangleOf)
+                              const std::map<cgsize_t, int64_t>& triangleOf)
 {
   int numConditions = 0;
   if (cg_nbocos(file, 1, zone, &numConditions) != CG_OK)
@@ -200,7 +204,7 @@ Status readCGNS(const std::string& path, SolverMesh& mesh)
   }
   int numBases = 0, numZones = 0;
   if (cg_nbases(file.id, &numBases) != CG_OK || numBases < 1 || cg_nzones(file.id, 1, &numZones) != CG_OK ||
-    numZones < 1)
+      numZones < 1)
     return cgnsFailure(path, "no base with a zone");
   CGNS_ENUMT(ZoneType_t) zoneType;
   char zoneName[33] = {};
@@ -210,8 +214,9 @@ Status readCGNS(const std::string& path, SolverMesh& mesh)
   if (zoneType != CGNS_ENUMV(Unstructured))
     return cgnsFailure(path, "zone '" + std::string(zoneName) + "' is structured (a tet mesh is unstructured)");
   if (size[0] < 4 || size[0] > countLimit(path) / 3)
-    return cgnsFailure(path, "zone '" + std::string(zoneName) + "' claims " + std::to_string(size[0]) +
-        " points, impossible in a file of this size");
+    return cgnsFailure(path,
+                       "zone '" + std::string(zoneName) + "' claims " + std::to_string(size[0]) +
+                         " points, impossible in a file of this size");
   std::map<cgsize_t, int64_t> triangleOf;
   Status s = readCoordinates(path, file.id, 1, size[0], mesh);
   if (s.ok())

@@ -51,7 +51,8 @@ std::vector<std::string> entityNames(int file, ex_entity_type kind, int count)
   return names;
 }
 
-Status readBlocks(const std::string& path, int file, int numBlocks, int64_t numPoints, int numElements, SolverMesh& mesh)
+Status readBlocks(const std::string& path, int file, int numBlocks, int64_t numPoints, int numElements,
+                  SolverMesh& mesh)
 {
   std::vector<int> ids(static_cast<size_t>(numBlocks));
   if (numBlocks > 0 && ex_get_elem_blk_ids(file, ids.data()) < 0)
@@ -67,19 +68,22 @@ Status readBlocks(const std::string& path, int file, int numBlocks, int64_t numP
     if (count == 0)
       continue;
     if (count < 0 || count > numElements)
-      return exodusFailure(path, "element block " + std::to_string(ids[b]) + " claims " + std::to_string(count) +
-          " elements of " + std::to_string(numElements));
+      return exodusFailure(path,
+                           "element block " + std::to_string(ids[b]) + " claims " + std::to_string(count) +
+                             " elements of " + std::to_string(numElements));
     if (kind.compare(0, 3, "TET") != 0 || perElement != 4)
-      return exodusFailure(path, "element block " + std::to_string(ids[b]) + " holds " + type + " elements with " +
-          std::to_string(perElement) + " nodes (only 4-node tets are read)");
+      return exodusFailure(path,
+                           "element block " + std::to_string(ids[b]) + " holds " + type + " elements with " +
+                             std::to_string(perElement) + " nodes (only 4-node tets are read)");
     std::vector<int> connectivity(static_cast<size_t>(count) * 4);
     if (ex_get_elem_conn(file, ids[b], connectivity.data()) < 0)
       return exodusFailure(path, "cannot read the connectivity of block " + std::to_string(ids[b]));
     for (int v : connectivity)
     {
       if (v < 1 || v > numPoints)
-        return exodusFailure(path, "block " + std::to_string(ids[b]) + " names node " + std::to_string(v) + " of " +
-            std::to_string(numPoints));
+        return exodusFailure(path,
+                             "block " + std::to_string(ids[b]) + " names node " + std::to_string(v) + " of " +
+                               std::to_string(numPoints));
       mesh.tets.push_back(v - 1);
     }
     const int32_t region = static_cast<int32_t>(mesh.regionNames.size() + 1);
@@ -124,8 +128,9 @@ Status readSideSets(const std::string& path, int file, int numSets, SolverMesh& 
   {
     int numSides = 0, numFactors = 0;
     if (ex_get_side_set_param(file, ids[k], &numSides, &numFactors) < 0 || numSides < 0 ||
-      numSides > 4 * mesh.numberOfTets())
-      return exodusFailure(path, "cannot read side set " + std::to_string(ids[k]) + " (or it has more sides than the tets)");
+        numSides > 4 * mesh.numberOfTets())
+      return exodusFailure(path,
+                           "cannot read side set " + std::to_string(ids[k]) + " (or it has more sides than the tets)");
     std::vector<int> elements(static_cast<size_t>(numSides)), sides(static_cast<size_t>(numSides));
     if (numSides > 0 && ex_get_side_set(file, ids[k], elements.data(), sides.data()) < 0)
       return exodusFailure(path, "cannot read the sides of side set " + std::to_string(ids[k]));
@@ -134,8 +139,9 @@ Status readSideSets(const std::string& path, int file, int numSets, SolverMesh& 
     for (int s = 0; s < numSides; ++s)
     {
       if (elements[s] < 1 || elements[s] > mesh.numberOfTets() || sides[s] < 1 || sides[s] > 4)
-        return exodusFailure(path, "side set " + std::to_string(ids[k]) + " names side " + std::to_string(sides[s]) +
-            " of element " + std::to_string(elements[s]) + " (tets have sides 1-4)");
+        return exodusFailure(path,
+                             "side set " + std::to_string(ids[k]) + " names side " + std::to_string(sides[s]) +
+                               " of element " + std::to_string(elements[s]) + " (tets have sides 1-4)");
       const int32_t* tet = mesh.tets.data() + 4 * static_cast<int64_t>(elements[s] - 1);
       for (int corner : kExodusTetSide[sides[s] - 1])
         mesh.triangles.push_back(tet[corner]);
@@ -165,10 +171,11 @@ Status readExodus(const std::string& path, SolverMesh& mesh)
   struct stat info;
   const long long limit = stat(path.c_str(), &info) == 0 ? static_cast<long long>(info.st_size) : 0;
   if (numPoints < 0 || numElements < 0 || numBlocks < 0 || numSideSets < 0 || 3LL * numPoints > limit ||
-    4LL * numElements > limit || numBlocks > limit || numSideSets > limit)
-    return exodusFailure(path, "the header claims " + std::to_string(numPoints) + " nodes, " +
-        std::to_string(numElements) + " elements, " + std::to_string(numBlocks) + " blocks and " +
-        std::to_string(numSideSets) + " side sets, impossible in a file of this size");
+      4LL * numElements > limit || numBlocks > limit || numSideSets > limit)
+    return exodusFailure(path,
+                         "the header claims " + std::to_string(numPoints) + " nodes, " + std::to_string(numElements) +
+                           " elements, " + std::to_string(numBlocks) + " blocks and " + std::to_string(numSideSets) +
+                           " side sets, impossible in a file of this size");
   std::vector<double> xyz[3];
   for (auto& axis : xyz)
     axis.resize(static_cast<size_t>(numPoints));

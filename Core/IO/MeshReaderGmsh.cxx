@@ -2,8 +2,8 @@
 // elements are skipped. Labels: a 2.2 element's physical tag (its elementary tag when 0); in 4.1 the first
 // physical tag of the element's entity (from $Entities), else the entity tag. $PhysicalNames names the
 // patches (dim 2) and regions (dim 3).
-#include "MeshReader.h"
 #include "GmshPhysicalNames.h"
+#include "MeshReader.h"
 #include "SurfaceReaderSupport.h"
 
 #include <map>
@@ -34,9 +34,11 @@ Status readInts(Scanner& sc, int64_t* v, int n, const char* what)
 
 Status readPhysicalNames(Scanner& sc, SolverMesh& mesh)
 {
-  return readGmshPhysicalNames(sc, [&](int64_t dim, int64_t tag, std::string name) {
-    (dim == 2 ? mesh.patchNames : mesh.regionNames)[static_cast<int32_t>(tag)] = std::move(name);
-  });
+  return readGmshPhysicalNames(sc,
+                               [&](int64_t dim, int64_t tag, std::string name) {
+                                 (dim == 2 ? mesh.patchNames : mesh.regionNames)[static_cast<int32_t>(tag)] =
+                                   std::move(name);
+                               });
 }
 
 // 4.1 $Entities: the first physical tag of each surface and volume.
@@ -149,12 +151,18 @@ int64_t nodesOf(int64_t type)
 {
   switch (type)
   {
-    case 1: return 2;
-    case 2: return 3;
-    case 3: return 4;
-    case 4: return 4;
-    case 15: return 1;
-    default: return -1;
+    case 1:
+      return 2;
+    case 2:
+      return 3;
+    case 3:
+      return 4;
+    case 4:
+      return 4;
+    case 15:
+      return 1;
+    default:
+      return -1;
   }
 }
 

@@ -40,7 +40,7 @@ void readNameComments(const std::string& text, SolverMesh& mesh)
 
 // Reads `count` records of `nv` 1-based vertex ids and a reference.
 Status readCells(Scanner& sc, int64_t count, int nv, int64_t numPoints, std::vector<int32_t>& cells,
-  std::vector<int32_t>& refs)
+                 std::vector<int32_t>& refs)
 {
   for (int64_t e = 0; e < count; ++e)
   {
@@ -84,7 +84,8 @@ Status readSolverMesh(const std::string& path, SolverMesh& mesh)
   if (solverMeshReaderSupports(path))
     return readTetGenVolume(path, mesh);
   return Status::failure(ErrorKind::InvalidOption,
-    "cannot read a volume mesh from '" + path + "': unknown extension (.mesh .msh .su2 .node .cgns .exo)");
+                         "cannot read a volume mesh from '" + path +
+                           "': unknown extension (.mesh .msh .su2 .node .cgns .exo)");
 }
 
 Status readMeditVolume(const std::string& path, SolverMesh& mesh)
@@ -97,9 +98,10 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
   readNameComments(text, mesh);
   Scanner sc(text, path, true);
   const int64_t limit = countLimit(text);
-  static const std::pair<const char*, int> skipped[] = { { "Edges", 3 }, { "Quadrilaterals", 5 },
-    { "Prisms", 7 }, { "Hexahedra", 9 }, { "Corners", 1 }, { "Ridges", 1 }, { "RequiredVertices", 1 },
-    { "RequiredEdges", 1 }, { "RequiredTriangles", 1 } };
+  static const std::pair<const char*, int> skipped[] = {
+    { "Edges", 3 },  { "Quadrilaterals", 5 },   { "Prisms", 7 },        { "Hexahedra", 9 },        { "Corners", 1 },
+    { "Ridges", 1 }, { "RequiredVertices", 1 }, { "RequiredEdges", 1 }, { "RequiredTriangles", 1 }
+  };
   std::string_view tok;
   int64_t value = 0;
   while (s.ok() && sc.next(tok) && tok != "End")
@@ -128,7 +130,7 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
     }
     else if (tets || tris)
       s = readCells(sc, count, tets ? 4 : 3, mesh.numberOfPoints(), tets ? mesh.tets : mesh.triangles,
-        tets ? mesh.tetRegion : mesh.trianglePatch);
+                    tets ? mesh.tetRegion : mesh.trianglePatch);
     else
     {
       int per = 0;

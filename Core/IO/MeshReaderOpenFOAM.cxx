@@ -26,7 +26,8 @@ Status foamTokens(const std::string& path, std::vector<std::string>& tokens)
     return s;
   tokens.clear();
   std::string cur;
-  auto flush = [&] {
+  auto flush = [&]
+  {
     if (!cur.empty())
       tokens.push_back(cur), cur.clear();
   };
@@ -124,11 +125,12 @@ Status readOpenFOAM(const std::string& caseDir, SolverMesh& mesh)
   if (!s.ok())
     return s;
   if (static_cast<int64_t>(mesh.points.size()) != 3 * numPoints || static_cast<int64_t>(faces.size()) != 4 * numFaces ||
-    static_cast<int64_t>(owner.size()) != numFaces || static_cast<int64_t>(neighbour.size()) != numInternal)
+      static_cast<int64_t>(owner.size()) != numFaces || static_cast<int64_t>(neighbour.size()) != numInternal)
     return readError(dir, 0, "inconsistent counts (only triangular faces, i.e. tetrahedral cells, are read)");
-  auto loop = [&](int64_t f) {
+  auto loop = [&](int64_t f)
+  {
     return std::array<int32_t, 3>{ static_cast<int32_t>(faces[4 * f + 1]), static_cast<int32_t>(faces[4 * f + 2]),
-      static_cast<int32_t>(faces[4 * f + 3]) };
+                                   static_cast<int32_t>(faces[4 * f + 3]) };
   };
   int64_t numCells = 0; // the highest cell number may occur as a neighbour only
   for (const std::vector<double>* cells : { &owner, &neighbour })
@@ -138,7 +140,8 @@ Status readOpenFOAM(const std::string& caseDir, SolverMesh& mesh)
   // other face (for the fourth point).
   std::vector<int64_t> firstFace(numCells, -1), otherFace(numCells, -1), faceCount(numCells, 0);
   std::vector<char> owns(numCells, 0);
-  auto add = [&](int64_t c, int64_t f, bool owned) {
+  auto add = [&](int64_t c, int64_t f, bool owned)
+  {
     ++faceCount[c];
     if (firstFace[c] < 0)
       firstFace[c] = f, owns[c] = owned;
@@ -154,8 +157,8 @@ Status readOpenFOAM(const std::string& caseDir, SolverMesh& mesh)
   for (int64_t c = 0; c < numCells; ++c)
   {
     if (faceCount[c] != 4)
-      return readError(dir, 0, "cell " + std::to_string(c) + " is not a tetrahedron (" +
-        std::to_string(faceCount[c]) + " faces)");
+      return readError(
+        dir, 0, "cell " + std::to_string(c) + " is not a tetrahedron (" + std::to_string(faceCount[c]) + " faces)");
     const std::array<int32_t, 3> l = loop(firstFace[c]);
     int32_t apex = -1;
     for (int32_t v : loop(otherFace[c]))

@@ -17,7 +17,7 @@ namespace
 // Reads `count` records "id v1 .. vn [extra...]" where the header gave `extras` values after the ids;
 // ids are shifted by `first`. The first extra value (if any) goes to `labels` (default 1).
 Status readRecords(Scanner& sc, int64_t count, int nv, int64_t extras, int64_t first, int64_t numPoints,
-  std::vector<int32_t>& cells, std::vector<int32_t>& labels)
+                   std::vector<int32_t>& cells, std::vector<int32_t>& labels)
 {
   for (int64_t e = 0; e < count; ++e)
   {

@@ -77,15 +77,24 @@ const char* meshFormatName(MeshFormat format)
 {
   switch (format)
   {
-    case MeshFormat::Gmsh41: return "gmsh 4.1";
-    case MeshFormat::Gmsh22: return "gmsh 2.2";
-    case MeshFormat::SU2: return "SU2";
-    case MeshFormat::OpenFOAM: return "OpenFOAM polyMesh";
-    case MeshFormat::Medit: return "Medit";
-    case MeshFormat::TetGen: return "TetGen";
-    case MeshFormat::CGNS: return "CGNS";
-    case MeshFormat::Exodus: return "Exodus II";
-    default: return "unknown";
+    case MeshFormat::Gmsh41:
+      return "gmsh 4.1";
+    case MeshFormat::Gmsh22:
+      return "gmsh 2.2";
+    case MeshFormat::SU2:
+      return "SU2";
+    case MeshFormat::OpenFOAM:
+      return "OpenFOAM polyMesh";
+    case MeshFormat::Medit:
+      return "Medit";
+    case MeshFormat::TetGen:
+      return "TetGen";
+    case MeshFormat::CGNS:
+      return "CGNS";
+    case MeshFormat::Exodus:
+      return "Exodus II";
+    default:
+      return "unknown";
   }
 }
 
@@ -99,10 +108,10 @@ std::string defaultOpenFoamPatchType(const std::string& name)
 }
 
 Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshFormat format,
-  const MeshWriteOptions& options)
+                       const MeshWriteOptions& options)
 {
-  if (!normalized(mesh.trianglePatch) || !normalized(mesh.tetRegion) ||
-    mesh.tetRegion.size() != mesh.tets.size() / 4 || mesh.trianglePatch.size() != mesh.triangles.size() / 3)
+  if (!normalized(mesh.trianglePatch) || !normalized(mesh.tetRegion) || mesh.tetRegion.size() != mesh.tets.size() / 4 ||
+      mesh.trianglePatch.size() != mesh.triangles.size() / 3)
   {
     SolverMesh copy = mesh;
     normalizeLabels(copy);
@@ -110,15 +119,24 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
   }
   switch (format)
   {
-    case MeshFormat::Gmsh41: return writeGmsh41(path, mesh);
-    case MeshFormat::Gmsh22: return writeGmsh22(path, mesh);
-    case MeshFormat::SU2: return writeSU2(path, mesh);
-    case MeshFormat::OpenFOAM: return writeOpenFOAM(path, mesh, options);
-    case MeshFormat::Medit: return writeMedit(path, mesh);
-    case MeshFormat::TetGen: return writeTetGen(path, mesh);
-    case MeshFormat::CGNS: return writeCGNS(path, mesh);
-    case MeshFormat::Exodus: return writeExodus(path, mesh);
-    default: break;
+    case MeshFormat::Gmsh41:
+      return writeGmsh41(path, mesh);
+    case MeshFormat::Gmsh22:
+      return writeGmsh22(path, mesh);
+    case MeshFormat::SU2:
+      return writeSU2(path, mesh);
+    case MeshFormat::OpenFOAM:
+      return writeOpenFOAM(path, mesh, options);
+    case MeshFormat::Medit:
+      return writeMedit(path, mesh);
+    case MeshFormat::TetGen:
+      return writeTetGen(path, mesh);
+    case MeshFormat::CGNS:
+      return writeCGNS(path, mesh);
+    case MeshFormat::Exodus:
+      return writeExodus(path, mesh);
+    default:
+      break;
   }
   return Status::failure(ErrorKind::InvalidOption, "no writer for '" + path + "'");
 }

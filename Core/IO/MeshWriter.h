@@ -52,7 +52,7 @@ std::string defaultOpenFoamPatchType(const std::string& name);
 
 // Writes `mesh` (labels normalized first on a copy when needed) in `format` to `path`.
 Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshFormat format,
-  const MeshWriteOptions& options = MeshWriteOptions());
+                       const MeshWriteOptions& options = MeshWriteOptions());
 
 Status writeGmsh41(const std::string& path, const SolverMesh& mesh);
 Status writeGmsh22(const std::string& path, const SolverMesh& mesh);

@@ -56,8 +56,8 @@ std::string longNameError(const SolverMesh& mesh)
 // Writes the element sections of one label kind: cells of `type` with `perCell` vertices, grouped by
 // label in ascending order, numbered from `next`. Returns each group's first and last element number.
 bool writeSections(int file, int base, int zone, CGNS_ENUMT(ElementType_t) type, int perCell,
-  const std::vector<int32_t>& cells, const std::vector<int32_t>& labels, const NameTable& names,
-  const char* prefix, cgsize_t& next, std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
+                   const std::vector<int32_t>& cells, const std::vector<int32_t>& labels, const NameTable& names,
+                   const char* prefix, cgsize_t& next, std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
 {
   for (int32_t label : distinctLabels(labels))
   {
@@ -69,7 +69,7 @@ bool writeSections(int file, int base, int zone, CGNS_ENUMT(ElementType_t) type,
     const cgsize_t count = static_cast<cgsize_t>(connectivity.size() / perCell);
     int section = 0;
     if (cg_section_write(file, base, zone, cgnsName(labelName(names, label, prefix)).c_str(), type, next,
-          next + count - 1, 0, connectivity.data(), &section) != CG_OK)
+                         next + count - 1, 0, connectivity.data(), &section) != CG_OK)
       return false;
     ranges.emplace_back(next, next + count - 1);
     next += count;
@@ -78,7 +78,7 @@ bool writeSections(int file, int base, int zone, CGNS_ENUMT(ElementType_t) type,
 }
 
 bool writeBoundaryConditions(int file, int base, int zone, const SolverMesh& mesh,
-  const std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
+                             const std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
 {
   const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
   for (size_t k = 0; k < patches.size(); ++k)
@@ -87,12 +87,12 @@ bool writeBoundaryConditions(int file, int base, int zone, const SolverMesh& mes
     int family = 0, familyBC = 0, bc = 0;
     cgsize_t range[2] = { ranges[k].first, ranges[k].second };
     if (cg_family_write(file, base, name.c_str(), &family) != CG_OK ||
-      cg_fambc_write(file, base, family, name.c_str(), bcTypeFor(name), &familyBC) != CG_OK ||
-      cg_boco_write(file, base, zone, name.c_str(), CGNS_ENUMV(FamilySpecified), CGNS_ENUMV(PointRange), 2, range,
-        &bc) != CG_OK ||
-      cg_boco_gridlocation_write(file, base, zone, bc, CGNS_ENUMV(FaceCenter)) != CG_OK ||
-      cg_goto(file, base, "Zone_t", zone, "ZoneBC_t", 1, "BC_t", bc, "end") != CG_OK ||
-      cg_famname_write(name.c_str()) != CG_OK)
+        cg_fambc_write(file, base, family, name.c_str(), bcTypeFor(name), &familyBC) != CG_OK ||
+        cg_boco_write(file, base, zone, name.c_str(), CGNS_ENUMV(FamilySpecified), CGNS_ENUMV(PointRange), 2, range,
+                      &bc) != CG_OK ||
+        cg_boco_gridlocation_write(file, base, zone, bc, CGNS_ENUMV(FaceCenter)) != CG_OK ||
+        cg_goto(file, base, "Zone_t", zone, "ZoneBC_t", 1, "BC_t", bc, "end") != CG_OK ||
+        cg_famname_write(name.c_str()) != CG_OK)
       return false;
   }
   return true;
@@ -103,8 +103,8 @@ bool writeZone(int file, const SolverMesh& mesh)
   int base = 0, zone = 0, coordinate = 0;
   cgsize_t size[3] = { static_cast<cgsize_t>(mesh.numberOfPoints()), static_cast<cgsize_t>(mesh.numberOfTets()), 0 };
   if (cg_base_write(file, "Base", 3, 3, &base) != CG_OK ||
-    cg_zone_write(file, base, "Zone", size, CGNS_ENUMV(Unstructured), &zone) != CG_OK ||
-    cg_goto(file, base, "end") != CG_OK || cg_dataclass_write(CGNS_ENUMV(NormalizedByUnknownDimensional)) != CG_OK)
+      cg_zone_write(file, base, "Zone", size, CGNS_ENUMV(Unstructured), &zone) != CG_OK ||
+      cg_goto(file, base, "end") != CG_OK || cg_dataclass_write(CGNS_ENUMV(NormalizedByUnknownDimensional)) != CG_OK)
     return false; // the data class: the coordinates are in the input's (unknown) units
   static const char* const axes[3] = { "CoordinateX", "CoordinateY", "CoordinateZ" };
   std::vector<double> values(static_cast<size_t>(mesh.numberOfPoints()));
@@ -115,16 +115,16 @@ bool writeZone(int file, const SolverMesh& mesh)
     // Coordinates are lengths: exponent 1 of length (mass, length, time, temperature, angle).
     const float lengthExponents[5] = { 0, 1, 0, 0, 0 };
     if (cg_coord_write(file, base, zone, CGNS_ENUMV(RealDouble), axes[axis], values.data(), &coordinate) != CG_OK ||
-      cg_goto(file, base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", coordinate, "end") != CG_OK ||
-      cg_exponents_write(CGNS_ENUMV(RealSingle), lengthExponents) != CG_OK)
+        cg_goto(file, base, "Zone_t", zone, "GridCoordinates_t", 1, "DataArray_t", coordinate, "end") != CG_OK ||
+        cg_exponents_write(CGNS_ENUMV(RealSingle), lengthExponents) != CG_OK)
       return false;
   }
   cgsize_t next = 1;
   std::vector<std::pair<cgsize_t, cgsize_t>> tetRanges, triangleRanges;
-  return writeSections(file, base, zone, CGNS_ENUMV(TETRA_4), 4, mesh.tets, mesh.tetRegion, mesh.regionNames,
-           "region", next, tetRanges) &&
-    writeSections(file, base, zone, CGNS_ENUMV(TRI_3), 3, mesh.triangles, mesh.trianglePatch, mesh.patchNames,
-      "patch", next, triangleRanges) &&
+  return writeSections(file, base, zone, CGNS_ENUMV(TETRA_4), 4, mesh.tets, mesh.tetRegion, mesh.regionNames, "region",
+                       next, tetRanges) &&
+    writeSections(file, base, zone, CGNS_ENUMV(TRI_3), 3, mesh.triangles, mesh.trianglePatch, mesh.patchNames, "patch",
+                  next, triangleRanges) &&
     writeBoundaryConditions(file, base, zone, mesh, triangleRanges);
 }
 } // namespace
@@ -133,11 +133,12 @@ Status writeCGNS(const std::string& path, const SolverMesh& mesh)
 {
   if (mesh.numberOfPoints() > 2147483647LL || mesh.numberOfTets() + mesh.numberOfTriangles() > 2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
-      "cannot write CGNS file '" + path + "': more than 2^31 points or elements (Debian's libcgns is 32-bit)");
+                           "cannot write CGNS file '" + path +
+                             "': more than 2^31 points or elements (Debian's libcgns is 32-bit)");
   const std::string tooLong = longNameError(mesh);
   if (!tooLong.empty())
-    return Status::failure(ErrorKind::InvalidOption, "cannot write CGNS file '" + path + "': " + tooLong +
-        " (rename it with --patch NAME=ID)");
+    return Status::failure(ErrorKind::InvalidOption,
+                           "cannot write CGNS file '" + path + "': " + tooLong + " (rename it with --patch NAME=ID)");
   LibraryOutput out;
   Status s = out.open(path, "CGNS");
   if (!s.ok())

@@ -24,7 +24,7 @@ std::string exodusError()
 
 // ex_put_names wants mutable char*s.
 int putNames(int file, ex_entity_type kind, const std::vector<int32_t>& labels, const NameTable& names,
-  const char* prefix)
+             const char* prefix)
 {
   std::vector<std::string> texts;
   for (int32_t label : labels)
@@ -49,7 +49,7 @@ size_t longestName(const SolverMesh& mesh)
 
 // The tets block by block (ascending region label); elementNumber[t] is tet t's 1-based Exodus number.
 bool writeBlocks(int file, const SolverMesh& mesh, const std::vector<int32_t>& regions,
-  std::vector<int64_t>& elementNumber)
+                 std::vector<int64_t>& elementNumber)
 {
   elementNumber.assign(static_cast<size_t>(mesh.numberOfTets()), 0);
   int64_t next = 1;
@@ -65,14 +65,14 @@ bool writeBlocks(int file, const SolverMesh& mesh, const std::vector<int32_t>& r
         connectivity.push_back(mesh.tets[4 * t + k] + 1);
     }
     if (ex_put_elem_block(file, region, "TETRA", static_cast<int>(connectivity.size() / 4), 4, 0) < 0 ||
-      ex_put_elem_conn(file, region, connectivity.data()) < 0)
+        ex_put_elem_conn(file, region, connectivity.data()) < 0)
       return false;
   }
   return putNames(file, EX_ELEM_BLOCK, regions, mesh.regionNames, "region") >= 0;
 }
 
 bool writeSideSets(int file, const SolverMesh& mesh, const std::vector<int32_t>& patches,
-  const std::vector<FaceOwner>& owners, const std::vector<int64_t>& elementNumber)
+                   const std::vector<FaceOwner>& owners, const std::vector<int64_t>& elementNumber)
 {
   for (int32_t patch : patches)
   {
@@ -85,7 +85,7 @@ bool writeSideSets(int file, const SolverMesh& mesh, const std::vector<int32_t>&
       sides.push_back(owners[t].side + 1);
     }
     if (ex_put_side_set_param(file, patch, static_cast<int>(elements.size()), 0) < 0 ||
-      ex_put_side_set(file, patch, elements.data(), sides.data()) < 0)
+        ex_put_side_set(file, patch, elements.data(), sides.data()) < 0)
       return false;
   }
   return putNames(file, EX_SIDE_SET, patches, mesh.patchNames, "patch") >= 0;
@@ -104,13 +104,13 @@ bool writePointData(int file, const SolverMesh& mesh)
     pointers.push_back(&n[0]);
   const double time = 0.0;
   if (ex_put_variable_param(file, EX_NODAL, static_cast<int>(names.size())) < 0 ||
-    ex_put_variable_names(file, EX_NODAL, static_cast<int>(names.size()), pointers.data()) < 0 ||
-    ex_put_time(file, 1, &time) < 0)
+      ex_put_variable_names(file, EX_NODAL, static_cast<int>(names.size()), pointers.data()) < 0 ||
+      ex_put_time(file, 1, &time) < 0)
     return false;
   int index = 1;
   for (const auto& field : mesh.pointData)
     if (field.second.size() != static_cast<size_t>(mesh.numberOfPoints()) ||
-      ex_put_var(file, 1, EX_NODAL, index++, 1, mesh.numberOfPoints(), field.second.data()) < 0)
+        ex_put_var(file, 1, EX_NODAL, index++, 1, mesh.numberOfPoints(), field.second.data()) < 0)
       return false;
   return true;
 }
@@ -123,8 +123,8 @@ bool writeFile(int file, const SolverMesh& mesh, const std::vector<FaceOwner>& o
   if (longest > 32 && ex_set_max_name_length(file, static_cast<int>(longest)) < 0)
     return false;
   if (ex_put_init(file, "VolGrid tetrahedral mesh", 3, static_cast<int>(mesh.numberOfPoints()),
-        static_cast<int>(mesh.numberOfTets()), static_cast<int>(regions.size()), 0,
-        static_cast<int>(patches.size())) < 0)
+                  static_cast<int>(mesh.numberOfTets()), static_cast<int>(regions.size()), 0,
+                  static_cast<int>(patches.size())) < 0)
     return false;
   std::vector<double> xyz[3];
   for (int axis = 0; axis < 3; ++axis)
@@ -143,7 +143,7 @@ Status writeExodus(const std::string& path, const SolverMesh& mesh)
 {
   if (mesh.numberOfPoints() > 2147483647LL || mesh.numberOfTets() > 2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
-      "cannot write Exodus II file '" + path + "': more than 2^31 points or tets");
+                           "cannot write Exodus II file '" + path + "': more than 2^31 points or tets");
   std::vector<FaceOwner> owners;
   Status s = findBoundaryFaceOwners(mesh, owners);
   if (!s.ok())

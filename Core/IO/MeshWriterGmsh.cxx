@@ -18,7 +18,7 @@ void writeHeader(std::FILE* f, const char* version)
 }
 
 void writePhysicalNames(std::FILE* f, const std::vector<int32_t>& patches, const std::vector<int32_t>& regions,
-  const SolverMesh& mesh)
+                        const SolverMesh& mesh)
 {
   std::fprintf(f, "$PhysicalNames\n%zu\n", patches.size() + regions.size());
   for (int32_t p : patches)
@@ -30,7 +30,7 @@ void writePhysicalNames(std::FILE* f, const std::vector<int32_t>& patches, const
 
 // Bounding box of the points of the cells (nv vertices each) carrying `label`.
 void entityBox(const SolverMesh& mesh, const std::vector<int32_t>& cells, int nv, const std::vector<int32_t>& labels,
-  int32_t label, double box[6])
+               int32_t label, double box[6])
 {
   for (int k = 0; k < 3; ++k)
     box[k] = 1e300, box[3 + k] = -1e300;
@@ -48,7 +48,7 @@ void entityBox(const SolverMesh& mesh, const std::vector<int32_t>& cells, int nv
 }
 
 void writeEntities(std::FILE* f, const SolverMesh& mesh, const std::vector<int32_t>& patches,
-  const std::vector<int32_t>& regions)
+                   const std::vector<int32_t>& regions)
 {
   std::fprintf(f, "$Entities\n0 0 %zu %zu\n", patches.size(), regions.size());
   double b[6];
@@ -67,7 +67,7 @@ void writeEntities(std::FILE* f, const SolverMesh& mesh, const std::vector<int32
 
 // The elements carrying `label`, numbered from `next`; 2.2 lines also carry the physical and entity tags.
 void writeCells(std::FILE* f, const std::vector<int32_t>& cells, int nv, const std::vector<int32_t>& labels,
-  int32_t label, int64_t& next, bool v22)
+                int32_t label, int64_t& next, bool v22)
 {
   const int type = nv == 3 ? 2 : 4;
   for (size_t c = 0; c < labels.size(); ++c)
@@ -103,7 +103,7 @@ Status writeGmsh(const std::string& path, const SolverMesh& mesh, bool v22)
     writeEntities(f, mesh, patches, regions);
     // All nodes in one block on the first volume entity (their classification does not matter here).
     std::fprintf(f, "$Nodes\n1 %" PRId64 " 1 %" PRId64 "\n3 %d 0 %" PRId64 "\n", np, np,
-      regions.empty() ? 1 : regions[0], np);
+                 regions.empty() ? 1 : regions[0], np);
     for (int64_t i = 0; i < np; ++i)
       std::fprintf(f, "%" PRId64 "\n", i + 1);
   }

@@ -10,11 +10,11 @@
 
 #include <algorithm>
 #include <array>
-#include <tuple>
 #include <cinttypes>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
+#include <tuple>
 #include <unistd.h>
 
 namespace volgrid
@@ -24,14 +24,18 @@ namespace
 struct PolyMesh
 {
   std::vector<std::array<int32_t, 3>> faces;
-  std::vector<int32_t> owner, neighbour; // neighbour: internal faces only
+  std::vector<int32_t> owner, neighbour;      // neighbour: internal faces only
   std::vector<int32_t> patchStart, patchSize; // per patch in label order
 };
 
 Status buildPolyMesh(const SolverMesh& mesh, const std::vector<int32_t>& patches, PolyMesh& poly)
 {
   const std::vector<TetFace> faces = sortedTetFaces(mesh.points, mesh.tets);
-  struct Internal { int32_t owner, neighbour; std::array<int32_t, 3> loop; };
+  struct Internal
+  {
+    int32_t owner, neighbour;
+    std::array<int32_t, 3> loop;
+  };
   std::vector<Internal> internal;
   std::vector<std::pair<int32_t, const TetFace*>> boundary; // (patch, face)
   std::vector<std::pair<std::array<int32_t, 3>, int32_t>> triangleKeys;
@@ -52,19 +56,19 @@ Status buildPolyMesh(const SolverMesh& mesh, const std::vector<int32_t>& patches
       i += 2;
       continue;
     }
-    const auto it = std::lower_bound(triangleKeys.begin(), triangleKeys.end(),
-      std::make_pair(faces[i].key, INT32_MIN));
+    const auto it = std::lower_bound(triangleKeys.begin(), triangleKeys.end(), std::make_pair(faces[i].key, INT32_MIN));
     if (it == triangleKeys.end() || it->first != faces[i].key)
       return Status::failure(ErrorKind::InvalidOption,
-        "boundary face (" + std::to_string(faces[i].key[0]) + " " + std::to_string(faces[i].key[1]) + " " +
-          std::to_string(faces[i].key[2]) + ") of tet " + std::to_string(faces[i].tet) + " is in no patch");
+                             "boundary face (" + std::to_string(faces[i].key[0]) + " " +
+                               std::to_string(faces[i].key[1]) + " " + std::to_string(faces[i].key[2]) + ") of tet " +
+                               std::to_string(faces[i].tet) + " is in no patch");
     boundary.emplace_back(it->second, &faces[i]);
     ++i;
   }
   std::sort(internal.begin(), internal.end(),
-    [](const Internal& x, const Internal& y) { return std::tie(x.owner, x.neighbour) < std::tie(y.owner, y.neighbour); });
-  std::stable_sort(boundary.begin(), boundary.end(),
-    [](const auto& x, const auto& y) { return x.first < y.first; });
+            [](const Internal& x, const Internal& y)
+            { return std::tie(x.owner, x.neighbour) < std::tie(y.owner, y.neighbour); });
+  std::stable_sort(boundary.begin(), boundary.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   for (const Internal& f : internal)
   {
     poly.faces.push_back(f.loop);
@@ -94,7 +98,7 @@ void foamHeader(std::FILE* f, const char* cls, const char* object, const std::st
 }
 
 Status writeLabels(const std::string& path, const char* object, const std::vector<int32_t>& labels,
-  const std::string& note)
+                   const std::string& note)
 {
   OutputFile out;
   Status s = out.open(path);
@@ -109,7 +113,7 @@ Status writeLabels(const std::string& path, const char* object, const std::vecto
 }
 
 Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh& poly,
-  const std::vector<int32_t>& patches, const MeshWriteOptions& options)
+                  const std::vector<int32_t>& patches, const MeshWriteOptions& options)
 {
   OutputFile points, faces, boundary;
   Status s = points.open(dir + "/points");
@@ -119,7 +123,7 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
   std::fprintf(points.stream(), "%" PRId64 "\n(\n", mesh.numberOfPoints());
   for (int64_t i = 0; i < mesh.numberOfPoints(); ++i)
     std::fprintf(points.stream(), "(%.17g %.17g %.17g)\n", mesh.points[3 * i], mesh.points[3 * i + 1],
-      mesh.points[3 * i + 2]);
+                 mesh.points[3 * i + 2]);
   std::fprintf(points.stream(), ")\n");
   if (!(s = points.commit()).ok() || !(s = faces.open(dir + "/faces")).ok())
     return s;
@@ -137,8 +141,8 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
     "  nCells:" + std::to_string(mesh.numberOfTets()) + "  nFaces:" + std::to_string(poly.faces.size()) +
     "  nInternalFaces:" + std::to_string(poly.neighbour.size());
   if (!(s = writeLabels(dir + "/owner", "owner", poly.owner, note)).ok() ||
-    !(s = writeLabels(dir + "/neighbour", "neighbour", poly.neighbour, note)).ok() ||
-    !(s = boundary.open(dir + "/boundary")).ok())
+      !(s = writeLabels(dir + "/neighbour", "neighbour", poly.neighbour, note)).ok() ||
+      !(s = boundary.open(dir + "/boundary")).ok())
     return s;
   foamHeader(boundary.stream(), "polyBoundaryMesh", "boundary", "");
   std::fprintf(boundary.stream(), "%zu\n(\n", patches.size());
@@ -148,9 +152,9 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
     const auto it = options.openFoamPatchTypes.find(name);
     const std::string type = it != options.openFoamPatchTypes.end() ? it->second : defaultOpenFoamPatchType(name);
     std::fprintf(boundary.stream(),
-      "    %s\n    {\n        type            %s;\n        inGroups        List<word> 1(%s);\n"
-      "        nFaces          %d;\n        startFace       %d;\n    }\n",
-      name.c_str(), type.c_str(), type.c_str(), poly.patchSize[k], poly.patchStart[k]);
+                 "    %s\n    {\n        type            %s;\n        inGroups        List<word> 1(%s);\n"
+                 "        nFaces          %d;\n        startFace       %d;\n    }\n",
+                 name.c_str(), type.c_str(), type.c_str(), poly.patchSize[k], poly.patchStart[k]);
   }
   std::fprintf(boundary.stream(), ")\n");
   return boundary.commit();
@@ -166,12 +170,14 @@ Status writeOpenFOAM(const std::string& caseDir, const SolverMesh& mesh, const M
     const std::string name = labelName(mesh.patchNames, p, "patch");
     if (!isOpenFoamWord(name))
       return Status::failure(ErrorKind::InvalidOption,
-        "patch name '" + name + "' is not a valid OpenFOAM word (no spaces, quotes, slashes, ;{}()[]#$)");
+                             "patch name '" + name +
+                               "' is not a valid OpenFOAM word (no spaces, quotes, slashes, ;{}()[]#$)");
   }
   std::error_code ec;
   if (fs::exists(caseDir, ec))
     return Status::failure(ErrorKind::InvalidOption,
-      "cannot write the OpenFOAM case '" + caseDir + "': it already exists (remove it or choose another name)");
+                           "cannot write the OpenFOAM case '" + caseDir +
+                             "': it already exists (remove it or choose another name)");
   PolyMesh poly;
   Status s = buildPolyMesh(mesh, patches, poly);
   if (!s.ok())
@@ -185,7 +191,8 @@ Status writeOpenFOAM(const std::string& caseDir, const SolverMesh& mesh, const M
   {
     fs::rename(temp, caseDir, ec);
     if (ec)
-      s = Status::failure(ErrorKind::InvalidOption, "cannot rename '" + temp + "' to '" + caseDir + "': " + ec.message());
+      s =
+        Status::failure(ErrorKind::InvalidOption, "cannot rename '" + temp + "' to '" + caseDir + "': " + ec.message());
   }
   if (!s.ok())
     fs::remove_all(temp, ec);

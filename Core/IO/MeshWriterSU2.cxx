@@ -34,7 +34,7 @@ Status writeSU2(const std::string& path, const SolverMesh& mesh)
   for (size_t k = 0; k < patches.size(); ++k)
   {
     std::fprintf(f, "MARKER_TAG= %s\nMARKER_ELEMS= %" PRId64 "\n",
-      labelName(mesh.patchNames, patches[k], "patch").c_str(), counts[k]);
+                 labelName(mesh.patchNames, patches[k], "patch").c_str(), counts[k]);
     for (int64_t t = 0; t < mesh.numberOfTriangles(); ++t)
     {
       if (mesh.trianglePatch[t] != patches[k])

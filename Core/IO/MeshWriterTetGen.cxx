@@ -41,14 +41,14 @@ Status writeTetGen(const std::string& path, const SolverMesh& mesh)
   {
     const int32_t* v = mesh.tets.data() + 4 * t;
     std::fprintf(ele.stream(), "%" PRId64 " %d %d %d %d %d\n", t + 1, v[0] + 1, v[1] + 1, v[2] + 1, v[3] + 1,
-      mesh.tetRegion[t]);
+                 mesh.tetRegion[t]);
   }
   std::fprintf(face.stream(), "%" PRId64 " 1\n", mesh.numberOfTriangles());
   for (int64_t t = 0; t < mesh.numberOfTriangles(); ++t)
   {
     const int32_t* v = mesh.triangles.data() + 3 * t;
     std::fprintf(face.stream(), "%" PRId64 " %d %d %d %d\n", t + 1, v[0] + 1, v[1] + 1, v[2] + 1,
-      mesh.trianglePatch[t]);
+                 mesh.trianglePatch[t]);
   }
   s = node.commit();
   if (s.ok())

@@ -24,10 +24,10 @@ namespace
 {
 struct ObjFaces
 {
-  std::vector<int64_t> refs;    // vertex references, 1-based after resolving negatives (0: unresolvable)
-  std::vector<size_t> starts;   // first ref of each face, plus the end
-  std::vector<int64_t> lines;   // line of each face
-  std::vector<int32_t> groups;  // group of each face (-1: before any `g` or `o` statement)
+  std::vector<int64_t> refs;   // vertex references, 1-based after resolving negatives (0: unresolvable)
+  std::vector<size_t> starts;  // first ref of each face, plus the end
+  std::vector<int64_t> lines;  // line of each face
+  std::vector<int32_t> groups; // group of each face (-1: before any `g` or `o` statement)
 };
 
 // `g` and `o` statements: the group of the faces that follow, by name.
@@ -69,9 +69,10 @@ Status readVertex(Scanner& sc, const std::vector<std::string_view>& toks, Surfac
   {
     if (!parseDouble(toks[1 + k], xyz[k]) || !std::isfinite(xyz[k]))
     {
-      return Status::failure(ErrorKind::NonFinitePoint, sc.path() + ":" + std::to_string(sc.line()) + ": vertex " +
-          std::to_string(mesh.numberOfPoints() + 1) + ": coordinate '" + std::string(toks[1 + k].substr(0, 40)) +
-          "' is not a finite number");
+      return Status::failure(ErrorKind::NonFinitePoint,
+                             sc.path() + ":" + std::to_string(sc.line()) + ": vertex " +
+                               std::to_string(mesh.numberOfPoints() + 1) + ": coordinate '" +
+                               std::string(toks[1 + k].substr(0, 40)) + "' is not a finite number");
     }
   }
   mesh.points.insert(mesh.points.end(), xyz, xyz + 3);
@@ -79,7 +80,7 @@ Status readVertex(Scanner& sc, const std::vector<std::string_view>& toks, Surfac
 }
 
 Status readFace(Scanner& sc, const std::vector<std::string_view>& toks, int64_t vertices, int32_t group,
-  ObjFaces& faces)
+                ObjFaces& faces)
 {
   if (toks.size() < 4)
   {
@@ -91,7 +92,7 @@ Status readFace(Scanner& sc, const std::vector<std::string_view>& toks, int64_t 
     if (!vertexReference(toks[k], ref) || ref == 0)
     {
       return sc.error("face " + std::to_string(faces.lines.size() + 1) + ": '" + std::string(toks[k].substr(0, 40)) +
-        "' is not a vertex reference");
+                      "' is not a vertex reference");
     }
     faces.refs.push_back(ref < 0 ? vertices + 1 + ref : ref); // -1: the last vertex read so far
   }
@@ -116,13 +117,13 @@ Status checkReferences(const std::string& path, const ObjFaces& faces, int64_t v
       }
   if (bad == 0)
     return Status::success();
-  return readError(path, 0, std::to_string(bad) + " face reference(s) outside the " + std::to_string(vertices) +
-      " vertices; first: " + first);
+  return readError(path, 0,
+                   std::to_string(bad) + " face reference(s) outside the " + std::to_string(vertices) +
+                     " vertices; first: " + first);
 }
 } // namespace
 
-Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
-  const SurfaceReadOptions& options)
+Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
   mesh.clear();
   SurfaceReadInfo localInfo;

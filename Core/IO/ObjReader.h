@@ -9,6 +9,6 @@ namespace volgrid
 
 // Wavefront OBJ (ObjReader.cxx): strict numbers, every bad face reference counted and the first named.
 Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
-  const SurfaceReadOptions& options = SurfaceReadOptions());
+               const SurfaceReadOptions& options = SurfaceReadOptions());
 
 } // namespace volgrid

@@ -12,8 +12,7 @@ namespace volgrid
 
 using namespace detail;
 
-Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
-  const SurfaceReadOptions& options)
+Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
   mesh.clear();
   SurfaceReadInfo localInfo;
@@ -68,7 +67,7 @@ Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   else
   {
     return sc.error("not an OFF file: the first line must be the header 'OFF' (or COFF, NOFF, STOFF ...), got '" +
-      std::string(key.substr(0, 40)) + "'");
+                    std::string(key.substr(0, 40)) + "'");
   }
   (void)hasNormals;
   (void)hasColors;
@@ -152,7 +151,7 @@ Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
       if (!parseInt(toks[1 + k], id) || id < 0 || id >= nv)
       {
         return sc.error("face " + std::to_string(f) + ": vertex id '" + std::string(toks[1 + k]) +
-          "' out of range [0," + std::to_string(nv) + ")");
+                        "' out of range [0," + std::to_string(nv) + ")");
       }
       loop.push_back(static_cast<int32_t>(id));
     }

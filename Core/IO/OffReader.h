@@ -8,6 +8,6 @@ namespace volgrid
 {
 
 Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
-  const SurfaceReadOptions& options = SurfaceReadOptions());
+               const SurfaceReadOptions& options = SurfaceReadOptions());
 
 } // namespace volgrid

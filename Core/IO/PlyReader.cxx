@@ -2,10 +2,10 @@
 // (polygons are ear-clipped in their plane) and `tristrips` lists (-1 restarts a strip; every other
 // triangle of a strip is flipped so the strip keeps one orientation). Other elements and properties are
 // skipped. VTK's vtkPLYReader ignores triangle strips, which is why VolGrid reads PLY itself.
-#include "GzipFile.h"
 #include "PlyReader.h"
-#include "SurfaceReaderSupport.h"
+#include "GzipFile.h"
 #include "PolygonTriangulation.h"
+#include "SurfaceReaderSupport.h"
 
 #include <cmath>
 #include <cstdint>
@@ -119,7 +119,7 @@ private:
       return load<float>(b);
     return load<double>(b);
   }
-  template <class T>
+  template<class T>
   static double load(const unsigned char* b)
   {
     T v;
@@ -146,8 +146,7 @@ Status plyError(const std::string& path, const std::string& what)
 }
 } // namespace
 
-Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
-  const SurfaceReadOptions& options)
+Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
   mesh.clear();
   SurfaceReadInfo localInfo;
@@ -175,7 +174,8 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
       return plyError(path, "cannot open the file");
   }
   std::istream& in = gzip ? static_cast<std::istream&>(unpacked) : file;
-  const double fileBytes = gzip ? static_cast<double>(unpacked.str().size()) : static_cast<double>(detail::fileSize(path));
+  const double fileBytes =
+    gzip ? static_cast<double>(unpacked.str().size()) : static_cast<double>(detail::fileSize(path));
 
   // Header.
   std::string line;
@@ -245,16 +245,19 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   {
     const double least = static_cast<double>(e.count) * minimumBytes(e, encoding);
     if (least > fileBytes || (e.name == "vertex" && e.count > INT32_MAX))
-      return plyError(path, "element '" + e.name + "' claims " + std::to_string(e.count) +
-          " entries, more than the file's " + std::to_string(static_cast<long long>(fileBytes)) + " bytes can hold");
+      return plyError(path,
+                      "element '" + e.name + "' claims " + std::to_string(e.count) + " entries, more than the file's " +
+                        std::to_string(static_cast<long long>(fileBytes)) + " bytes can hold");
   }
 
   // Body.
   BodyReader body(in, encoding);
-  auto endsInside = [&](const Element& e, int64_t i) {
-    return plyError(path, body.BadToken.empty()
-        ? "the file ends inside element '" + e.name + "' " + std::to_string(i)
-        : "element '" + e.name + "' " + std::to_string(i) + ": '" + body.BadToken + "' is not a number");
+  auto endsInside = [&](const Element& e, int64_t i)
+  {
+    return plyError(path,
+                    body.BadToken.empty()
+                      ? "the file ends inside element '" + e.name + "' " + std::to_string(i)
+                      : "element '" + e.name + "' " + std::to_string(i) + ": '" + body.BadToken + "' is not a number");
   };
   std::vector<int32_t> list, triangles;
   int32_t vertexCount = 0;
@@ -300,8 +303,9 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
           {
             char id[32];
             std::snprintf(id, sizeof id, "%.17g", value);
-            return plyError(path, e.name + " " + std::to_string(i) + " refers to vertex " + id + " (the file has " +
-                std::to_string(vertexCount) + ")");
+            return plyError(path,
+                            e.name + " " + std::to_string(i) + " refers to vertex " + id + " (the file has " +
+                              std::to_string(vertexCount) + ")");
           }
           if (indices)
             list.push_back(static_cast<int32_t>(value));
@@ -310,8 +314,9 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
           continue;
         for (const int32_t id : list)
           if (id < -1 || id >= vertexCount || (id == -1 && !isStrip))
-            return plyError(path, e.name + " " + std::to_string(i) + " refers to vertex " + std::to_string(id) +
-                " (the file has " + std::to_string(vertexCount) + ")");
+            return plyError(path,
+                            e.name + " " + std::to_string(i) + " refers to vertex " + std::to_string(id) +
+                              " (the file has " + std::to_string(vertexCount) + ")");
         if (isFace)
         {
           ++info.fileFaces;

@@ -9,6 +9,6 @@ namespace volgrid
 
 // PLY, ASCII or binary, with faces and triangle strips (PlyReader.cxx).
 Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
-  const SurfaceReadOptions& options = SurfaceReadOptions());
+               const SurfaceReadOptions& options = SurfaceReadOptions());
 
 } // namespace volgrid

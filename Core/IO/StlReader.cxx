@@ -45,7 +45,8 @@ Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
     // is recognised by its 'facet' keyword right after the first line.
     const size_t eol = text.find('\n');
     const size_t facet = eol == std::string::npos ? std::string::npos : text.find_first_not_of(" \t\r\n", eol);
-    binary = !(facet != std::string::npos && (text.compare(facet, 5, "facet") == 0 || text.compare(facet, 8, "endsolid") == 0));
+    binary = !(facet != std::string::npos &&
+               (text.compare(facet, 5, "facet") == 0 || text.compare(facet, 8, "endsolid") == 0));
   }
   if (binary)
   {
@@ -68,9 +69,10 @@ Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   else if (startsWithSolid && text.find('\0') != std::string::npos && text.size() >= 84)
   {
     // "solid" header but binary content (NUL bytes): a binary file whose size does not match.
-    return readError(path, 0, "binary STL header announces " + std::to_string(count) + " triangles (" +
-      std::to_string(84 + 50 * uint64_t(count)) + " bytes) but the file has " + std::to_string(text.size()) +
-      " bytes");
+    return readError(path, 0,
+                     "binary STL header announces " + std::to_string(count) + " triangles (" +
+                       std::to_string(84 + 50 * uint64_t(count)) + " bytes) but the file has " +
+                       std::to_string(text.size()) + " bytes");
   }
   else if (startsWithSolid)
   {
@@ -105,9 +107,9 @@ Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
         }
         else
         {
-        // Text after the last endsolid (gmsh appends its .geo commands): ignore, but say so.
-        info.warnings.push_back("text after 'endsolid' at line " + std::to_string(sc.line()) + " ignored");
-        break;
+          // Text after the last endsolid (gmsh appends its .geo commands): ignore, but say so.
+          info.warnings.push_back("text after 'endsolid' at line " + std::to_string(sc.line()) + " ignored");
+          break;
         }
       }
       if (tok == "endsolid")
@@ -189,7 +191,8 @@ Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
     }
     if (strayFacets > 0)
     {
-      info.warnings.push_back(std::to_string(strayFacets) + " time(s) facets followed 'endsolid' without a new 'solid'");
+      info.warnings.push_back(std::to_string(strayFacets) +
+                              " time(s) facets followed 'endsolid' without a new 'solid'");
     }
     if (inSolid)
     {
@@ -203,9 +206,10 @@ Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
     {
       return readError(path, 0, "neither ASCII STL (no 'solid' keyword) nor binary STL (shorter than 84 bytes)");
     }
-    return readError(path, 0, "binary STL header announces " + std::to_string(count) + " triangles (" +
-      std::to_string(84 + 50 * uint64_t(count)) + " bytes) but the file has " + std::to_string(text.size()) +
-      " bytes, and it is not ASCII STL either");
+    return readError(path, 0,
+                     "binary STL header announces " + std::to_string(count) + " triangles (" +
+                       std::to_string(84 + 50 * uint64_t(count)) + " bytes) but the file has " +
+                       std::to_string(text.size()) + " bytes, and it is not ASCII STL either");
   }
   info.filePoints = mesh.numberOfPoints();
   fanFallbackWarning(info);

@@ -3,13 +3,13 @@
 // SurfaceReaderSupport, polygon triangulation in PolygonTriangulation. A trailing ".gz" is transparent:
 // lowerExtension skips it and loadFile decompresses (GzipFile).
 #include "SurfaceReader.h"
-#include "SurfaceReaderSupport.h"
 #include "GmshReader.h"
 #include "MeditReader.h"
 #include "ObjReader.h"
 #include "OffReader.h"
 #include "PlyReader.h"
 #include "StlReader.h"
+#include "SurfaceReaderSupport.h"
 #include "TetGenPolyReader.h"
 
 #include <string>
@@ -26,8 +26,7 @@ bool surfaceReaderSupports(const std::string& path)
     ext == "ply" || ext == "obj";
 }
 
-Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info,
-  const SurfaceReadOptions& options)
+Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info, const SurfaceReadOptions& options)
 {
   const std::string ext = lowerExtension(path);
   if (ext == "off")
@@ -58,9 +57,9 @@ Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* 
   {
     return readOBJ(path, mesh, info, options);
   }
-  return readError(
-    path, 0, "unsupported file extension '." + ext +
-      "' (supported: .off .mesh .poly .smesh .msh .stl .ply .obj, each also gzip-compressed as .gz)");
+  return readError(path, 0,
+                   "unsupported file extension '." + ext +
+                     "' (supported: .off .mesh .poly .smesh .msh .stl .ply .obj, each also gzip-compressed as .gz)");
 }
 
 } // namespace volgrid

@@ -31,15 +31,15 @@ struct SurfaceReadOptions
 
 struct SurfaceReadInfo
 {
-  std::string format;            // "OFF", "Medit", "TetGen poly", "TetGen smesh", "gmsh 2.2", "STL ascii"...
-  int64_t filePoints = 0;         // point records in the file (STL: 3 per facet)
-  int64_t fileFaces = 0;          // faces/facets/elements read (before triangulation)
-  int64_t polygonFaces = 0;       // faces with more than three corners that were triangulated
-  int64_t fanFallbacks = 0;       // polygons that ear clipping could not handle (fan used instead)
-  int64_t holeRegions = 0;        // TetGen facet regions cut away by hole points
-  int64_t mergedPoints = 0;       // points removed by exact merging
-  int64_t skippedElements = 0;    // elements of other kinds skipped (tets, edges, ...)
-  int64_t solids = 0;             // STL solids
+  std::string format;          // "OFF", "Medit", "TetGen poly", "TetGen smesh", "gmsh 2.2", "STL ascii"...
+  int64_t filePoints = 0;      // point records in the file (STL: 3 per facet)
+  int64_t fileFaces = 0;       // faces/facets/elements read (before triangulation)
+  int64_t polygonFaces = 0;    // faces with more than three corners that were triangulated
+  int64_t fanFallbacks = 0;    // polygons that ear clipping could not handle (fan used instead)
+  int64_t holeRegions = 0;     // TetGen facet regions cut away by hole points
+  int64_t mergedPoints = 0;    // points removed by exact merging
+  int64_t skippedElements = 0; // elements of other kinds skipped (tets, edges, ...)
+  int64_t solids = 0;          // STL solids
   std::vector<std::string> warnings;
 };
 
@@ -48,6 +48,6 @@ bool surfaceReaderSupports(const std::string& path);
 
 // Reads by extension. The mesh is cleared first.
 Status readSurface(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
-  const SurfaceReadOptions& options = SurfaceReadOptions());
+                   const SurfaceReadOptions& options = SurfaceReadOptions());
 
 } // namespace volgrid

@@ -9,10 +9,10 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
-#include <cstring>
-#include <new>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <new>
 #include <sstream>
 
 namespace volgrid::detail
@@ -49,7 +49,9 @@ Status readError(const std::string& path, int64_t line, const std::string& what)
 
 Status checkRegularFile(const std::string& path)
 {
-  struct stat st{};
+  struct stat st
+  {
+  };
   if (::stat(path.c_str(), &st) != 0)
   {
     return readError(path, 0, std::string("cannot open the file: ") + std::strerror(errno));
@@ -67,7 +69,9 @@ Status checkRegularFile(const std::string& path)
 
 int64_t fileSize(const std::string& path)
 {
-  struct stat st{};
+  struct stat st
+  {
+  };
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) ? static_cast<int64_t>(st.st_size) : -1;
 }
 
@@ -164,7 +168,7 @@ Status finish(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info,
   if (!allPointsFinite(mesh, &bad))
   {
     return Status::failure(ErrorKind::NonFinitePoint,
-      path + ": point " + std::to_string(bad) + " has a NaN or infinite coordinate", { bad });
+                           path + ": point " + std::to_string(bad) + " has a NaN or infinite coordinate", { bad });
   }
   if (mesh.numberOfTriangles() == 0)
   {
@@ -182,7 +186,7 @@ Status finish(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info,
 }
 
 void addPolygon(SurfaceMesh& mesh, const std::vector<int32_t>& loop, int32_t patch, SurfaceReadInfo& info,
-  std::vector<int32_t>& scratch)
+                std::vector<int32_t>& scratch)
 {
   if (loop.size() == 3)
   {
@@ -205,7 +209,8 @@ void fanFallbackWarning(SurfaceReadInfo& info)
 {
   if (info.fanFallbacks > 0)
   {
-    info.warnings.push_back(std::to_string(info.fanFallbacks) +
+    info.warnings.push_back(
+      std::to_string(info.fanFallbacks) +
       " polygon(s) could not be ear-clipped (self-intersecting or degenerate) and were fan-triangulated");
   }
 }

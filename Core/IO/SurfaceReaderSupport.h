@@ -209,7 +209,7 @@ Status finish(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info,
 
 // Adds a polygon face (point ids already validated) as triangles.
 void addPolygon(SurfaceMesh& mesh, const std::vector<int32_t>& loop, int32_t patch, SurfaceReadInfo& info,
-  std::vector<int32_t>& scratch);
+                std::vector<int32_t>& scratch);
 
 // Adds the warning about polygons that were fan-triangulated, when there were any.
 void fanFallbackWarning(SurfaceReadInfo& info);

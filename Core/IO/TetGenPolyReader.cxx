@@ -2,9 +2,9 @@
 // markers become patch ids); a .poly facet with several polygons or hole points is one planar region
 // with inner boundaries and holes (triangulateFacet). The nodes come from the sibling .node file when
 // the node list is empty.
+#include "TetGenPolyReader.h"
 #include "GzipFile.h"
 #include "PolygonTriangulation.h"
-#include "TetGenPolyReader.h"
 #include "SurfaceReaderSupport.h"
 
 #include <fstream>
@@ -20,8 +20,8 @@ using namespace detail;
 namespace
 {
 // Reads a node list (header line already tokenised in `header`). Returns the index base.
-Status readTetGenNodes(Scanner& sc, const std::vector<std::string_view>& header, SurfaceMesh& mesh,
-  int64_t limit, int64_t& base)
+Status readTetGenNodes(Scanner& sc, const std::vector<std::string_view>& header, SurfaceMesh& mesh, int64_t limit,
+                       int64_t& base)
 {
   int64_t n = 0, dim = 3, nattr = 0, nbm = 0;
   if (!parseInt(header[0], n) || n < 0 || n > limit)
@@ -68,7 +68,7 @@ Status readTetGenNodes(Scanner& sc, const std::vector<std::string_view>& header,
     else if (id != base + i)
     {
       return sc.error("node indices must be consecutive: expected " + std::to_string(base + i) + ", got " +
-        std::to_string(id));
+                      std::to_string(id));
     }
     mesh.addPoint(xyz[0], xyz[1], xyz[2]);
   }
@@ -76,7 +76,7 @@ Status readTetGenNodes(Scanner& sc, const std::vector<std::string_view>& header,
 }
 
 Status readPolygonLine(Scanner& sc, const std::vector<std::string_view>& toks, int64_t base, int64_t nv,
-  std::vector<int32_t>& loop, size_t& used)
+                       std::vector<int32_t>& loop, size_t& used)
 {
   int64_t nc = 0;
   if (!parseInt(toks[0], nc) || nc < 0)
@@ -94,7 +94,7 @@ Status readPolygonLine(Scanner& sc, const std::vector<std::string_view>& toks, i
     if (!parseInt(toks[1 + k], id) || id < base || id >= base + nv)
     {
       return sc.error("polygon corner '" + std::string(toks[1 + k]) + "' is not a node index in [" +
-        std::to_string(base) + "," + std::to_string(base + nv - 1) + "]");
+                      std::to_string(base) + "," + std::to_string(base + nv - 1) + "]");
     }
     loop.push_back(static_cast<int32_t>(id - base));
   }
@@ -104,7 +104,7 @@ Status readPolygonLine(Scanner& sc, const std::vector<std::string_view>& toks, i
 } // namespace
 
 Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
-  const SurfaceReadOptions& options)
+                  const SurfaceReadOptions& options)
 {
   mesh.clear();
   SurfaceReadInfo localInfo;
@@ -139,7 +139,7 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
     const std::string inner = stripGzipSuffix(path);
     const std::string plainNode = inner.substr(0, inner.find_last_of('.')) + ".node";
     const std::string nodeCandidates[2] = { isGzipPath(path) ? plainNode + ".gz" : plainNode,
-      isGzipPath(path) ? plainNode : plainNode + ".gz" };
+                                            isGzipPath(path) ? plainNode : plainNode + ".gz" };
     std::string nodePath = nodeCandidates[0];
     if (!std::ifstream(nodePath) && std::ifstream(nodeCandidates[1]))
     {
@@ -287,13 +287,13 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
     if (!triangulateFacet(mesh.points, polygons, holes, scratch, &facet))
     {
       info.warnings.push_back("facet " + std::to_string(f) + ": " + std::to_string(facet.failures) +
-        " region(s) could not be triangulated exactly (a hole not bridged or a fan fallback)");
+                              " region(s) could not be triangulated exactly (a hole not bridged or a fan fallback)");
     }
     info.holeRegions += facet.holeRegions;
     if (facet.unusedHolePoints > 0)
     {
       info.warnings.push_back("facet " + std::to_string(f) + ": " + std::to_string(facet.unusedHolePoints) +
-        " hole point(s) outside all of its polygons ignored");
+                              " hole point(s) outside all of its polygons ignored");
     }
     for (size_t i = 0; i + 2 < scratch.size(); i += 3)
     {

@@ -9,6 +9,6 @@ namespace volgrid
 
 // .poly and .smesh (chosen by extension).
 Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info = nullptr,
-  const SurfaceReadOptions& options = SurfaceReadOptions());
+                  const SurfaceReadOptions& options = SurfaceReadOptions());
 
 } // namespace volgrid

@@ -22,7 +22,8 @@ bool circumcentre(const double* const p[4], double* out)
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k)
       e[i][k] = p[i + 1][k] - p[0][k];
-  auto cross = [](const double* x, const double* y, double* o) {
+  auto cross = [](const double* x, const double* y, double* o)
+  {
     o[0] = x[1] * y[2] - x[2] * y[1];
     o[1] = x[2] * y[0] - x[0] * y[2];
     o[2] = x[0] * y[1] - x[1] * y[0];
@@ -59,23 +60,26 @@ double triangleNormal(const double* a, const double* b, const double* c, double 
 }
 } // namespace
 
-int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
-  double degrees, int64_t maxPoints, bool speculative, size_t skip)
+int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels, double degrees,
+                     int64_t maxPoints, bool speculative, size_t skip)
 {
   TetEditor editor(mesh, constraints, labels);
   editor.rebuildVertexMap();
   const std::vector<uint8_t> locked = editor.lockedVertices();
   const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
-  auto quality = [&](int32_t t) {
+  auto quality = [&](int32_t t)
+  {
     const int32_t* v = mesh.vertices(t);
     return tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
   };
   std::vector<std::pair<double, int32_t>> bad;
-  mesh.forEachTet([&](int32_t t) {
-    const double q = quality(t);
-    if (q < qT)
-      bad.emplace_back(q, t);
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      const double q = quality(t);
+      if (q < qT)
+        bad.emplace_back(q, t);
+    });
   std::sort(bad.begin(), bad.end());
   bad.erase(bad.begin(), bad.begin() + static_cast<std::ptrdiff_t>(std::min(skip, bad.size())));
   int64_t inserted = 0;
@@ -101,7 +105,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
       }
     const double lmean = lsum / 6;
     cand.push_back({ (p[0][0] + p[1][0] + p[2][0] + p[3][0]) / 4, (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4,
-      (p[0][2] + p[1][2] + p[2][2] + p[3][2]) / 4 });
+                     (p[0][2] + p[1][2] + p[2][2] + p[3][2]) / 4 });
     std::array<double, 3> cc;
     if (circumcentre(p, cc.data()))
       cand.push_back(cc);
@@ -117,8 +121,8 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
       if (!(nn > 0))
         continue;
       const double side = (p[i][0] - f[0][0]) * n[0] + (p[i][1] - f[0][1]) * n[1] + (p[i][2] - f[0][2]) * n[2];
-      const double h = 0.8165 * (std::sqrt(sqDist(f[0], f[1])) + std::sqrt(sqDist(f[1], f[2])) +
-                                  std::sqrt(sqDist(f[2], f[0]))) / 3;
+      const double h =
+        0.8165 * (std::sqrt(sqDist(f[0], f[1])) + std::sqrt(sqDist(f[1], f[2])) + std::sqrt(sqDist(f[2], f[0]))) / 3;
       // Both sides (beyond an unconstrained face the point may replace t together with its neighbour),
       // at the regular height and at half of it.
       for (const double scale : { 1.0, -1.0, 0.5, -0.5 })
@@ -150,14 +154,16 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
               continue;
             for (const double scale : { 0.5, -0.5, 1.0, -1.0 })
               cand.push_back({ (p[i][0] + p[j][0]) / 2 + scale * len * n[0] / nn,
-                (p[i][1] + p[j][1]) / 2 + scale * len * n[1] / nn, (p[i][2] + p[j][2]) / 2 + scale * len * n[2] / nn });
+                               (p[i][1] + p[j][1]) / 2 + scale * len * n[1] / nn,
+                               (p[i][2] + p[j][2]) / 2 + scale * len * n[2] / nn });
           }
         }
     // Score a position: the worst new tet, when the cavity replaces t and beats what it replaces.
     const int32_t nv = mesh.addPoint(cand[0].data()); // coordinates overwritten below (p may move)
     double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
     double best = -3; // best score so far: positions that cannot beat it are pruned
-    auto score = [&](const double* y) {
+    auto score = [&](const double* y)
+    {
       if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
         return -3.0;
       std::copy(y, y + 3, x);
@@ -180,7 +186,9 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     }
     if (best > -3)
     {
-      static const double dirs[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+      static const double dirs[6][3] = {
+        { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 }
+      };
       double step = 0.2 * lmean;
       for (int it = 0; it < 12 && step > 0.01 * lmean; ++it)
       {

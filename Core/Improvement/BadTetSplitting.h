@@ -27,7 +27,7 @@ namespace volgrid
 
 // Tets below `degrees` (of min(theta_min, 180 - theta_max)), worst first after skipping `skip` of them;
 // at most maxPoints points. labels (per tet slot, optional) follow the new tets.
-int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
-  double degrees, int64_t maxPoints, bool speculative = false, size_t skip = 0);
+int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels, double degrees,
+                     int64_t maxPoints, bool speculative = false, size_t skip = 0);
 
 } // namespace volgrid

@@ -92,7 +92,10 @@ public:
   // minDihedralFloor: the mesh's smallest dihedral angle; no new tet may go under it (the sine quality
   // also weighs the largest angle, so a better worst quality alone could still lower the minimum angle).
   Attempt(TetEditor& editor, const std::vector<uint8_t>& locked, double minDihedralFloor)
-    : ed_(editor), m_(editor.mesh), locked_(locked), floor_(minDihedralFloor)
+    : ed_(editor)
+    , m_(editor.mesh)
+    , locked_(locked)
+    , floor_(minDihedralFloor)
   {
   }
 
@@ -243,7 +246,8 @@ private:
   {
     ed_.star(w, star_);
     double* x = m_.points.data() + 3 * static_cast<size_t>(w);
-    auto starMin = [&](int32_t* worstTet) {
+    auto starMin = [&](int32_t* worstTet)
+    {
       double q = 2;
       for (int32_t u : star_)
       {
@@ -270,12 +274,14 @@ private:
       {
         const double* p = m_.point(m_.vertex(u, i));
         if (m_.vertex(u, i) != w)
-          reach = std::min(reach, std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) +
-                                    (p[2] - x[2]) * (p[2] - x[2])));
+          reach = std::min(
+            reach,
+            std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) + (p[2] - x[2]) * (p[2] - x[2])));
       }
     bool movedAny = false;
     std::array<double, 3> dirs[14];
-    auto setDirections = [&]() {
+    auto setDirections = [&]()
+    {
       for (int k = 0; k < 3; ++k)
       {
         dirs[2 * k] = { 0, 0, 0 };
@@ -414,7 +420,8 @@ private:
 } // namespace
 
 int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
-  std::vector<int32_t>* labels, const InsertionImprovementOptions& options, InsertionImprovementReport* report)
+                                std::vector<int32_t>* labels, const InsertionImprovementOptions& options,
+                                InsertionImprovementReport* report)
 {
   InsertionImprovementReport local;
   InsertionImprovementReport& rep = report ? *report : local;
@@ -431,13 +438,14 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   std::vector<std::pair<double, int32_t>> worst;
   std::vector<std::array<int32_t, 4>> quads;
   double previousWorst = -3;
-  int stale = 0; // rounds in a row after which the mesh's worst tet was no better
+  int stale = 0;                               // rounds in a row after which the mesh's worst tet was no better
   std::pair<double, double> lastRange{ 0, 0 }; // the dihedral range after the previous round
   for (int round = 0; round < options.rounds; ++round)
   {
     // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound (a tet tried in
-    // vain is tried again: the points kept since may have made room). Rounds go on while points are kept and the mesh's worst tet improves at least every second
-    // round (two equal worst tets need a round each when the first point pushes into the second's).
+    // vain is tried again: the points kept since may have made room). Rounds go on while points are kept and the mesh's
+    // worst tet improves at least every second round (two equal worst tets need a round each when the first point
+    // pushes into the second's).
     const double q0 = minSineQuality(mesh, options.threads);
     stale = q0 > previousWorst ? 0 : stale + 1;
     if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60 || stale >= 2)
@@ -448,7 +456,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     collectSineBelow(mesh, qLimit, options.threads, worst);
     // A plateau of many tets near a worst tet already at the optimisation's target gains little per point.
     if (sineQualityToDegrees(q0) >= options.plateauDegrees &&
-      static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
+        static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
       break;
     if (floor < 0)
     {

@@ -54,7 +54,7 @@ struct InsertionImprovementReport
 // per-vertex locks (vertices of constrained faces never move anyway). labels: optional, per tet slot.
 // Returns the number of points kept.
 int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
-  std::vector<int32_t>* labels,
-  const InsertionImprovementOptions& options, InsertionImprovementReport* report = nullptr);
+                                std::vector<int32_t>* labels, const InsertionImprovementOptions& options,
+                                InsertionImprovementReport* report = nullptr);
 
 } // namespace volgrid

@@ -34,13 +34,15 @@ Status checkOptions(const ImprovementOptions& o)
 {
   const FieldPointOptions& f = o.fieldPointOptions;
   const SizingOptions& s = o.sizing;
-  const std::pair<const OptionSpec&, double> values[] = { { option::alpha, f.alpha }, { option::beta, f.beta },
-    { option::maxVolume, f.maxVolume }, { option::sizeScale, s.scale }, { option::gradation, s.gradation },
-    { option::maxEdge, s.maxEdgeLength } };
+  const std::pair<const OptionSpec&, double> values[] = {
+    { option::alpha, f.alpha },     { option::beta, f.beta },           { option::maxVolume, f.maxVolume },
+    { option::sizeScale, s.scale }, { option::gradation, s.gradation }, { option::maxEdge, s.maxEdgeLength }
+  };
   for (const auto& [spec, value] : values)
     if (!spec.valid(value))
       return Status::failure(ErrorKind::InvalidOption,
-        std::string(spec.name) + " must be in " + spec.rangeText() + ", not " + std::to_string(value) + ".");
+                             std::string(spec.name) + " must be in " + spec.rangeText() + ", not " +
+                               std::to_string(value) + ".");
   if (f.maxPasses < 0 || !(s.minEdgeLength >= 0))
     return Status::failure(ErrorKind::InvalidOption, "Field points need maxPasses >= 0, sizing minEdgeLength >= 0.");
   if (o.clusterPoints.size() % 3 != 0 || o.sizingPoints.size() % 3 != 0)
@@ -49,10 +51,11 @@ Status checkOptions(const ImprovementOptions& o)
     return Status::failure(ErrorKind::InvalidOption, "clusterSizes needs one value per cluster point (or none).");
   if (o.sizingValues.size() * 3 != o.sizingPoints.size())
     return Status::failure(ErrorKind::InvalidOption, "sizingValues needs one value per sizing point.");
-  if (o.optimize && (!option::targetAngle.valid(o.optimization.targetDegrees) ||
-                      !option::passes.valid(o.optimization.maxPasses)))
-    return Status::failure(ErrorKind::InvalidOption, "Optimisation needs targetDegrees in " +
-        option::targetAngle.rangeText() + " and maxPasses in " + option::passes.rangeText() + ".");
+  if (o.optimize &&
+      (!option::targetAngle.valid(o.optimization.targetDegrees) || !option::passes.valid(o.optimization.maxPasses)))
+    return Status::failure(ErrorKind::InvalidOption,
+                           "Optimisation needs targetDegrees in " + option::targetAngle.rangeText() +
+                             " and maxPasses in " + option::passes.rangeText() + ".");
   return Status::success();
 }
 // The worst tet's min(theta_min, 180 - theta_max) in degrees (a sweep on `threads`, MeshScan.h).
@@ -172,31 +175,35 @@ private:
 std::vector<uint8_t> usedVertices(const TetMesh& mesh)
 {
   std::vector<uint8_t> used(static_cast<size_t>(mesh.numVertices()), 0);
-  mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      used[mesh.vertex(t, i)] = 1;
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        used[mesh.vertex(t, i)] = 1;
+    });
   return used;
 }
 
 // Whether a tet under `degrees` has a vertex on no constrained face and not locked by the caller: only
 // then can a vertex collapse touch the worst tets.
 bool hasUnlockedVertexBelow(TetMesh& mesh, const FaceConstraints& fc, const std::vector<uint8_t>& extraLock,
-  double degrees)
+                            double degrees)
 {
   TetEditor probe(mesh, &fc, nullptr);
   probe.rebuildVertexMap();
   const std::vector<uint8_t> lock = probe.lockedVertices();
   const double q = std::sin(degrees * 3.14159265358979323846 / 180.0);
   bool found = false;
-  mesh.forEachTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    if (found || !(tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q))
-      return;
-    for (int i = 0; i < 4; ++i)
-      if (!lock[v[i]] && !(static_cast<size_t>(v[i]) < extraLock.size() && extraLock[v[i]]))
-        found = true;
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = mesh.vertices(t);
+      if (found || !(tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q))
+        return;
+      for (int i = 0; i < 4; ++i)
+        if (!lock[v[i]] && !(static_cast<size_t>(v[i]) < extraLock.size() && extraLock[v[i]]))
+          found = true;
+    });
   return found;
 }
 
@@ -218,8 +225,8 @@ ImprovementOptions::ImprovementOptions()
 }
 
 Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, const SurfaceMesh& surface,
-  std::vector<VertexKind>& kinds, std::vector<int32_t>& tetRegion, const ImprovementOptions& options,
-  ImprovementStatistics& stats, Progress* progress)
+                         std::vector<VertexKind>& kinds, std::vector<int32_t>& tetRegion,
+                         const ImprovementOptions& options, ImprovementStatistics& stats, Progress* progress)
 {
   stats = ImprovementStatistics();
   TetMesh& mesh = editor.mesh;
@@ -272,8 +279,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       // own PDF: the background Delaunay of the sizing field then sees no cospherical or coplanar sets
       // (spheres, boxes), which would send every insphere test to exact arithmetic, and the interpolated
       // sizes change by a negligible amount. The mesh itself is untouched.
-      const std::vector<double> pdf = pointDistributionFunction(
-        surface.points.data(), surface.numberOfPoints(), surface.triangles.data(), surface.numberOfTriangles());
+      const std::vector<double> pdf = pointDistributionFunction(surface.points.data(), surface.numberOfPoints(),
+                                                                surface.triangles.data(), surface.numberOfTriangles());
       std::vector<double> xyz, h;
       xyz.reserve(surface.points.size());
       h.reserve(pdf.size());
@@ -393,12 +400,14 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     one.vertexRemoval = false; // a second attempt, below
     one.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
     // The first call runs up to three passes, then one pass per call while a pass still pays.
-    auto optimise = [&](int maxPasses) -> Status {
+    auto optimise = [&](int maxPasses) -> Status
+    {
       for (int pass = 0; pass < maxPasses; pass += one.maxPasses)
       {
         one.maxPasses = pass == 0 ? std::min(3, maxPasses) : 1;
         OptimizationReport orep;
-        Status os = optimizeMesh(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, one, progress, &orep);
+        Status os =
+          optimizeMesh(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, &tetRegion, one, progress, &orep);
         if (!os.ok())
           return os;
         stats.after.minDihedral = orep.minDihedralAfter; // what the rounds below decide on (summary: at the end)
@@ -407,8 +416,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
         stats.smoothMoves += orep.smoothMoves;
         const int64_t gained = orep.belowTargetBefore - orep.belowTargetAfter;
         const bool minImproved = orep.minDihedralAfter > orep.minDihedralBefore + 1.0;
-        if (orep.belowTargetAfter == 0 || orep.passes == 0 ||
-          (gained <= orep.belowTargetBefore / 50 && !minImproved))
+        if (orep.belowTargetAfter == 0 || orep.passes == 0 || (gained <= orep.belowTargetBefore / 50 && !minImproved))
           break;
       }
       return Status::success();
@@ -416,7 +424,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     // Beyond the target the mesh's minimum is decided by its few worst tets: while it pays, aim a little
     // above the current worst (flips, smoothing and splitting touch only the tets below the aim and accept
     // strict improvements only), so a mesh already past the target still gets better where it is worst.
-    auto floorRounds = [&]() -> Status {
+    auto floorRounds = [&]() -> Status
+    {
       for (int round = 0; round < options.floorRounds; ++round)
       {
         if (progress && progress->cancelled())
@@ -441,7 +450,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       return Status::success();
     };
     // The stage: optimisation, splitting of what it cannot fix, floor rounds.
-    auto optimiseSplitFloor = [&]() -> Status {
+    auto optimiseSplitFloor = [&]() -> Status
+    {
       one.targetDegrees = options.optimization.targetDegrees;
       Status ps = optimise(options.optimization.maxPasses);
       if (!ps.ok())
@@ -454,7 +464,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
         if (progress && progress->cancelled())
           return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
         const int64_t n = splitBadTets(mesh, &fc, &tetRegion, options.optimization.targetDegrees,
-          std::max<int64_t>(200, mesh.numTets() / 20));
+                                       std::max<int64_t>(200, mesh.numTets() / 20));
         stats.splitPoints += n;
         if (n == 0)
           break;
@@ -486,7 +496,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     if (!s.ok())
       return s;
     const double worstKept = worstSineDegrees(mesh, options.threads);
-    const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
+    const double removalDegrees =
+      std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
     if (removal && worstKept < removalDegrees && hasUnlockedVertexBelow(mesh, fc, clusterLock, removalDegrees))
     {
       TetMesh keptMesh = std::move(mesh);
@@ -522,7 +533,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       const double worst = worstSineDegrees(mesh, options.threads);
       if (!(worst > 0) || worst >= 60)
         break;
-      if (countBelow(mesh, std::max(worst + 2.0, options.optimization.targetDegrees), options.threads) > kSpeculativeMaxBad)
+      if (countBelow(mesh, std::max(worst + 2.0, options.optimization.targetDegrees), options.threads) >
+          kSpeculativeMaxBad)
         speculativeRounds = std::min(speculativeRounds, kSpeculativeRoundsManyBad);
       const TetMesh savedMesh = mesh;
       const std::vector<int32_t> savedRegion = tetRegion;
@@ -533,8 +545,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       bool improved = false;
       for (int depth = 0; depth < 3 && !improved; ++depth)
       {
-        const int64_t k = splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 1, true,
-          depth == 0 ? static_cast<size_t>(skip) : 0);
+        const int64_t k =
+          splitBadTets(mesh, &fc, &tetRegion, one.targetDegrees, 1, true, depth == 0 ? static_cast<size_t>(skip) : 0);
         if (k == 0)
           break;
         n += k;
@@ -581,12 +593,14 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     probe.rebuildVertexMap();
     const std::vector<uint8_t> lock = probe.lockedVertices();
     const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
-    mesh.forEachTet([&](int32_t t) {
-      const int32_t* v = mesh.vertices(t);
-      if (lock[v[0]] && lock[v[1]] && lock[v[2]] && lock[v[3]] &&
-        tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q10)
-        ++stats.boundaryForcedBelow10;
-    });
+    mesh.forEachTet(
+      [&](int32_t t)
+      {
+        const int32_t* v = mesh.vertices(t);
+        if (lock[v[0]] && lock[v[1]] && lock[v[2]] && lock[v[3]] &&
+            tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q10)
+          ++stats.boundaryForcedBelow10;
+      });
   }
 
   // Points removed by vertex collapses: recovery's (below nv0), field points (below nvField), split points.
@@ -627,12 +641,13 @@ Status tetMeshFromTets(const std::vector<double>& points, const std::vector<int3
     for (int i = 0; i < 4; ++i)
       if (v[i] < 0 || v[i] >= nv)
         return Status::failure(ErrorKind::InvalidOption,
-          "Tet " + std::to_string(t) + " refers to point " + std::to_string(v[i]) + ", which does not exist.",
-          { static_cast<int64_t>(t) });
+                               "Tet " + std::to_string(t) + " refers to point " + std::to_string(v[i]) +
+                                 ", which does not exist.",
+                               { static_cast<int64_t>(t) });
     const int o = predicates::orient3d(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
     if (o == 0)
       return Status::failure(ErrorKind::InvalidOption, "Tet " + std::to_string(t) + " is flat.",
-        { static_cast<int64_t>(t) });
+                             { static_cast<int64_t>(t) });
     if (o < 0)
       std::swap(v[0], v[1]);
     mesh.newTet(v[0], v[1], v[2], v[3]);
@@ -670,9 +685,9 @@ Status tetMeshFromTets(const std::vector<double>& points, const std::vector<int3
       }
       if (it->second < 0)
         return Status::failure(ErrorKind::InvalidOption,
-          "Face (" + std::to_string(f[0]) + "," + std::to_string(f[1]) + "," + std::to_string(f[2]) +
-            ") is shared by more than two tets.",
-          { t });
+                               "Face (" + std::to_string(f[0]) + "," + std::to_string(f[1]) + "," +
+                                 std::to_string(f[2]) + ") is shared by more than two tets.",
+                               { t });
       mesh.link(t, i, it->second >> 2, it->second & 3);
       it->second = -2; // closed
     }
@@ -680,7 +695,7 @@ Status tetMeshFromTets(const std::vector<double>& points, const std::vector<int3
 }
 
 Status refineTetMesh(TetMesh& mesh, const std::vector<double>& targetSize, std::vector<int32_t>* regions,
-  const RefineOptions& options, Progress* progress, RefineReport* reportOut)
+                     const RefineOptions& options, Progress* progress, RefineReport* reportOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   RefineReport local;
@@ -697,27 +712,31 @@ Status refineTetMesh(TetMesh& mesh, const std::vector<double>& targetSize, std::
   if (regions)
   {
     regions->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
-    mesh.forEachTet([&](int32_t t) {
-      for (int i = 0; i < 4; ++i)
+    mesh.forEachTet(
+      [&](int32_t t)
       {
-        const int32_t u = mesh.neighbor(t, i);
-        if (u > t && (*regions)[u] != (*regions)[t])
+        for (int i = 0; i < 4; ++i)
         {
-          int32_t f[3];
-          mesh.faceVertices(t, i, f);
-          fc.add(f[0], f[1], f[2]);
+          const int32_t u = mesh.neighbor(t, i);
+          if (u > t && (*regions)[u] != (*regions)[t])
+          {
+            int32_t f[3];
+            mesh.faceVertices(t, i, f);
+            fc.add(f[0], f[1], f[2]);
+          }
         }
-      }
-    });
+      });
   }
 
   // The targets as a background cloud over the used vertices, optionally graded over the mesh edges.
   std::vector<double> sizes = targetSize;
   std::vector<uint8_t> used(static_cast<size_t>(mesh.numVertices()), 0);
-  mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      used[mesh.vertex(t, i)] = 1;
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        used[mesh.vertex(t, i)] = 1;
+    });
   if (options.gradation > 1)
     limitGradation(mesh, options.gradation - 1, sizes);
   std::vector<double> xyz, val;
@@ -735,8 +754,8 @@ Status refineTetMesh(TetMesh& mesh, const std::vector<double>& targetSize, std::
   if (!s.ok())
     return s;
   FieldPointReport fr;
-  s = insertFieldPoints(mesh, sizing, options.fieldPointOptions, fc.empty() ? nullptr : &fc, regions, nullptr,
-    progress, &fr);
+  s = insertFieldPoints(mesh, sizing, options.fieldPointOptions, fc.empty() ? nullptr : &fc, regions, nullptr, progress,
+                        &fr);
   if (!s.ok())
     return s;
   report.inserted = fr.inserted;

@@ -33,8 +33,8 @@
 // between different regions) are kept exactly.
 #pragma once
 
-#include "MeshEditor.h"
 #include "FieldPoints.h"
+#include "MeshEditor.h"
 #include "MeshOptimization.h"
 #include "Progress.h"
 #include "SizingField.h"
@@ -93,17 +93,17 @@ struct ImprovementOptions
 
 struct ImprovementStatistics
 {
-  int64_t fieldPoints = 0;      // field points inserted (and still in the mesh, see removedPoints)
+  int64_t fieldPoints = 0; // field points inserted (and still in the mesh, see removedPoints)
   int fieldPasses = 0;
-  int64_t clusterPoints = 0;    // clustering points inserted
-  int64_t clusterSkipped = 0;   // outside, on the boundary, duplicates or too close
-  int64_t interfaceFaces = 0;   // interior faces kept as constraints (region interfaces)
-  int64_t latticeNodes = 0;     // sizing nodes away from the boundary (size from the gradation)
+  int64_t clusterPoints = 0;     // clustering points inserted
+  int64_t clusterSkipped = 0;    // outside, on the boundary, duplicates or too close
+  int64_t interfaceFaces = 0;    // interior faces kept as constraints (region interfaces)
+  int64_t latticeNodes = 0;      // sizing nodes away from the boundary (size from the gradation)
   DihedralSummary before, after; // dihedral angles before the field points and after everything
   int optimizationPasses = 0;
-  int64_t flips = 0;            // 2-3 flips and edge removals
+  int64_t flips = 0; // 2-3 flips and edge removals
   int64_t smoothMoves = 0;
-  int64_t splitPoints = 0;      // points inserted to split tets optimisation could not fix (still in the mesh)
+  int64_t splitPoints = 0; // points inserted to split tets optimisation could not fix (still in the mesh)
   // Interior points removed by optimisation's vertex collapses: boundary recovery's Steiner points and
   // field or split points (fieldPoints and splitPoints count only those left).
   int64_t removedPoints = 0;
@@ -117,8 +117,8 @@ struct ImprovementStatistics
 // `kinds` is extended to the new vertices; tetRegion (per tet slot) is kept in step.
 // Errors: InvalidOption (bad option values), Cancelled.
 Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, const SurfaceMesh& surface,
-  std::vector<VertexKind>& kinds, std::vector<int32_t>& tetRegion, const ImprovementOptions& options,
-  ImprovementStatistics& stats, Progress* progress = nullptr);
+                         std::vector<VertexKind>& kinds, std::vector<int32_t>& tetRegion,
+                         const ImprovementOptions& options, ImprovementStatistics& stats, Progress* progress = nullptr);
 
 // A ghost-free TetMesh with adjacency from a tet list (4 ids per tet; negatively oriented tets are
 // reoriented). Faces shared by two tets are linked, the others have no neighbour.
@@ -145,6 +145,6 @@ struct RefineReport
 // no target there) is smaller than the current spacing. Faces without a neighbour, and faces between
 // tets of different `regions` labels (optional, per tet slot), are kept exactly. regions is kept in step.
 Status refineTetMesh(TetMesh& mesh, const std::vector<double>& targetSize, std::vector<int32_t>* regions,
-  const RefineOptions& options, Progress* progress = nullptr, RefineReport* report = nullptr);
+                     const RefineOptions& options, Progress* progress = nullptr, RefineReport* report = nullptr);
 
 } // namespace volgrid

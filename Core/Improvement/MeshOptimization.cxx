@@ -56,8 +56,8 @@ Scratch& scratch()
   return s;
 }
 
-void emit(const std::vector<int32_t>& r, const std::vector<int>& K, int n, int i, int j, int32_t x,
-  int32_t y, std::vector<std::array<int32_t, 4>>& out)
+void emit(const std::vector<int32_t>& r, const std::vector<int>& K, int n, int i, int j, int32_t x, int32_t y,
+          std::vector<std::array<int32_t, 4>>& out)
 {
   if (j - i < 2)
     return;
@@ -82,17 +82,18 @@ void minMaxDihedral(const double* p0, const double* p1, const double* p2, const 
 DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads)
 {
   return summarizeDihedrals(mesh.points.data(), mesh.tetVertices.data(), mesh.tetFlags.data(), mesh.tetCapacity(),
-    threads);
+                            threads);
 }
 
-DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags,
-  int64_t n, int threads)
+DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags, int64_t n,
+                                   int threads)
 {
   // Runs over the whole mesh several times per optimisation and insertion round (a tenth of a second per
   // 800,000 tets): the tet slots are split between threads, the partial summaries merged (min, max and
   // counts, so the result does not depend on the split).
   auto point = [points](int32_t v) { return points + 3 * static_cast<size_t>(v); };
-  auto summarize = [&](int64_t begin, int64_t end, DihedralSummary& s) {
+  auto summarize = [&](int64_t begin, int64_t end, DihedralSummary& s)
+  {
     for (int64_t t = begin; t < end; ++t)
     {
       if (tetFlags && (tetFlags[t] & TetMesh::kFree))
@@ -114,7 +115,7 @@ DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVerti
   constexpr int64_t kMinPerThread = 25000;
   std::vector<DihedralSummary> parts(static_cast<size_t>(parallelRanges(threads, n, kMinPerThread)));
   parallelFor(threads, n, kMinPerThread,
-    [&](int k, int64_t begin, int64_t end) { summarize(begin, end, parts[static_cast<size_t>(k)]); });
+              [&](int k, int64_t begin, int64_t end) { summarize(begin, end, parts[static_cast<size_t>(k)]); });
   DihedralSummary s;
   for (const DihedralSummary& p : parts)
   {
@@ -288,7 +289,7 @@ namespace
 // target is among them, so when their smallest angle is under the target (with a margin far above the
 // rounding of either measure) it is the mesh's. Otherwise a sweep.
 double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double, int32_t>>& below, double targetDegrees,
-  int threads)
+                        int threads)
 {
   double m = 180;
   for (const auto& b : below)
@@ -304,7 +305,7 @@ double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double,
 // Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
 // first strict improvement is kept (created receives the new tets). True when one was made.
 bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options, OptimizationReport& report,
-  std::vector<int32_t>& created)
+                std::vector<int32_t>& created)
 {
   TetMesh& mesh = editor.mesh;
   if (options.edgeRemoval)
@@ -335,14 +336,15 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
 } // namespace
 
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
-  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress, OptimizationReport* reportOut)
+                    std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress,
+                    OptimizationReport* reportOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (mesh.numGhostTets() > 0)
     return Status::failure(ErrorKind::InvalidOption, "Optimisation works on a mesh without ghost tets.");
   if (!(options.targetDegrees > 0 && options.targetDegrees < 90) || options.maxPasses < 0 || options.maxRing < 3)
     return Status::failure(ErrorKind::InvalidOption,
-      "Optimisation needs 0 < targetDegrees < 90, maxPasses >= 0 and maxRing >= 3.");
+                           "Optimisation needs 0 < targetDegrees < 90, maxPasses >= 0 and maxRing >= 3.");
   OptimizationReport local;
   OptimizationReport& report = reportOut ? *reportOut : local;
   if (options.summaries)
@@ -362,7 +364,8 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   std::vector<int32_t> queue, created, verts, touched, candidates, star;
   collectSineBelow(mesh, qT, options.threads, bad);
   std::sort(bad.begin(), bad.end());
-  auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out) {
+  auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out)
+  {
     candidates.clear();
     for (const auto& b : bad)
       candidates.push_back(b.second);

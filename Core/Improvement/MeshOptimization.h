@@ -46,9 +46,9 @@ struct OptimizationOptions
   double targetDegrees = option::targetAngle.defaultValue; // target for min(theta_min, 180 - theta_max)
   int maxPasses = static_cast<int>(option::passes.defaultValue);
   bool smoothing = true;
-  bool flips = true;           // 2-3 flips
-  bool edgeRemoval = true;     // includes 3-2 flips
-  int maxRing = 9;             // largest edge ring considered by edge removal
+  bool flips = true;       // 2-3 flips
+  bool edgeRemoval = true; // includes 3-2 flips
+  int maxRing = 9;         // largest edge ring considered by edge removal
   // Removal of unlocked vertices of the tets below vertexRemovalDegrees after the flips and moves of a
   // pass, by collapsing them onto a neighbour (see tryVertexCollapse); the removed vertex stays in
   // mesh.points, used by no tet (callers that write every point keep it off).
@@ -78,8 +78,8 @@ struct DihedralSummary
 DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads = 0);
 // The same over plain arrays: n tets of 4 vertex ids each (rows with a negative id are skipped), and
 // optional per-tet flags (TetMesh::kFree rows skipped). No adjacency needed.
-DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags,
-  int64_t n, int threads = 0);
+DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags, int64_t n,
+                                   int threads = 0);
 
 struct OptimizationReport
 {
@@ -98,8 +98,8 @@ struct OptimizationReport
 // Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot
 // labels kept in step. Errors: InvalidOption (ghost tets, bad options), Cancelled.
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
-  std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress = nullptr,
-  OptimizationReport* report = nullptr);
+                    std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress = nullptr,
+                    OptimizationReport* report = nullptr);
 
 // Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
 // of the worst tet of the affected region; created receives the new tets.

@@ -19,7 +19,7 @@ double quality(const TetMesh& m, int32_t t)
 }
 
 // f(t) for every live tet of [begin, end).
-template <class F>
+template<class F>
 void forLive(const TetMesh& m, int64_t begin, int64_t end, F&& f)
 {
   for (int64_t t = begin; t < end; ++t)
@@ -32,11 +32,13 @@ double minSineQuality(const TetMesh& mesh, int threads)
 {
   const int64_t n = mesh.tetCapacity();
   std::vector<double> part(static_cast<size_t>(parallelRanges(threads, n, kMinPerThread)), 2.0);
-  parallelFor(threads, n, kMinPerThread, [&](int k, int64_t begin, int64_t end) {
-    double q = 2.0;
-    forLive(mesh, begin, end, [&](int32_t t) { q = std::min(q, quality(mesh, t)); });
-    part[static_cast<size_t>(k)] = q;
-  });
+  parallelFor(threads, n, kMinPerThread,
+              [&](int k, int64_t begin, int64_t end)
+              {
+                double q = 2.0;
+                forLive(mesh, begin, end, [&](int32_t t) { q = std::min(q, quality(mesh, t)); });
+                part[static_cast<size_t>(k)] = q;
+              });
   return *std::min_element(part.begin(), part.end());
 }
 
@@ -44,11 +46,13 @@ int64_t countSineBelow(const TetMesh& mesh, double q, int threads)
 {
   const int64_t n = mesh.tetCapacity();
   std::vector<int64_t> part(static_cast<size_t>(parallelRanges(threads, n, kMinPerThread)), 0);
-  parallelFor(threads, n, kMinPerThread, [&](int k, int64_t begin, int64_t end) {
-    int64_t c = 0;
-    forLive(mesh, begin, end, [&](int32_t t) { c += quality(mesh, t) < q; });
-    part[static_cast<size_t>(k)] = c;
-  });
+  parallelFor(threads, n, kMinPerThread,
+              [&](int k, int64_t begin, int64_t end)
+              {
+                int64_t c = 0;
+                forLive(mesh, begin, end, [&](int32_t t) { c += quality(mesh, t) < q; });
+                part[static_cast<size_t>(k)] = c;
+              });
   int64_t total = 0;
   for (int64_t c : part)
     total += c;
@@ -62,21 +66,27 @@ void collectSineBelow(const TetMesh& mesh, double q, int threads, std::vector<st
   const int k = parallelRanges(threads, n, kMinPerThread);
   if (k == 1)
   {
-    forLive(mesh, 0, n, [&](int32_t t) {
-      const double qt = quality(mesh, t);
-      if (qt < q)
-        out.emplace_back(qt, t);
-    });
+    forLive(mesh, 0, n,
+            [&](int32_t t)
+            {
+              const double qt = quality(mesh, t);
+              if (qt < q)
+                out.emplace_back(qt, t);
+            });
     return;
   }
   std::vector<std::vector<std::pair<double, int32_t>>> part(static_cast<size_t>(k));
-  parallelFor(threads, n, kMinPerThread, [&](int r, int64_t begin, int64_t end) {
-    forLive(mesh, begin, end, [&](int32_t t) {
-      const double qt = quality(mesh, t);
-      if (qt < q)
-        part[static_cast<size_t>(r)].emplace_back(qt, t);
-    });
-  });
+  parallelFor(threads, n, kMinPerThread,
+              [&](int r, int64_t begin, int64_t end)
+              {
+                forLive(mesh, begin, end,
+                        [&](int32_t t)
+                        {
+                          const double qt = quality(mesh, t);
+                          if (qt < q)
+                            part[static_cast<size_t>(r)].emplace_back(qt, t);
+                        });
+              });
   for (const auto& p : part)
     out.insert(out.end(), p.begin(), p.end());
 }

@@ -47,7 +47,7 @@ bool starPositive(const TetMesh& m, const std::vector<int32_t>& star)
 // strictly positive (exact). Only a result above `floor` is used: the scan stops at the first tet at or
 // below it (most trial positions fail there) and returns that tet's quality.
 double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, const std::vector<int32_t>& star,
-  double floor)
+                   double floor)
 {
   double* p = m.points.data() + 3 * static_cast<size_t>(v);
   p[0] = x[0];
@@ -117,7 +117,7 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
     c[1] += p[1];
     c[2] += p[2];
     scale += std::sqrt((p[0] - home[0]) * (p[0] - home[0]) + (p[1] - home[1]) * (p[1] - home[1]) +
-      (p[2] - home[2]) * (p[2] - home[2]));
+                       (p[2] - home[2]) * (p[2] - home[2]));
   }
   const double inv = 1.0 / s.nbrs.size();
   c[0] *= inv;
@@ -201,7 +201,7 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
 }
 
 Status smoothMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
-  const SmoothingOptions& options, Progress* progress, SmoothingReport* reportOut)
+                  const SmoothingOptions& options, Progress* progress, SmoothingReport* reportOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (mesh.numGhostTets() > 0)

@@ -30,9 +30,9 @@ namespace volgrid
 
 struct SmoothingOptions
 {
-  int passes = 3;               // sweeps over the vertices
-  bool optimize = true;         // optimisation-based move when the Laplacian move is rejected
-  int optimizeIterations = 12;  // hill-climbing steps per vertex
+  int passes = 3;              // sweeps over the vertices
+  bool optimize = true;        // optimisation-based move when the Laplacian move is rejected
+  int optimizeIterations = 12; // hill-climbing steps per vertex
   // Only vertices whose star is worse than this (in degrees of min(theta_min, 180 - theta_max)) are
   // smoothed; 90 = every vertex.
   double belowDegrees = 90.0;
@@ -60,6 +60,6 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
 // Smooth every unlocked vertex. locked: optional extra per-vertex locks (non-zero = keep), OR-ed with the
 // vertices of constrained faces. Errors: InvalidOption (ghost tets present), Cancelled.
 Status smoothMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
-  const SmoothingOptions& options, Progress* progress = nullptr, SmoothingReport* report = nullptr);
+                  const SmoothingOptions& options, Progress* progress = nullptr, SmoothingReport* report = nullptr);
 
 } // namespace volgrid

@@ -40,8 +40,7 @@ bool setOption(ImprovementOptions& options, const OptionSpec& spec, double value
 
 bool refinementOption(const OptionSpec& spec)
 {
-  return &spec == &option::alpha || &spec == &option::beta || &spec == &option::targetAngle ||
-    &spec == &option::passes;
+  return &spec == &option::alpha || &spec == &option::beta || &spec == &option::targetAngle || &spec == &option::passes;
 }
 
 bool setOption(RefineOptions& options, const OptionSpec& spec, double value)

@@ -89,9 +89,8 @@ bool BoundaryConstraints::forbiddenEdge(int32_t u, int32_t v) const
   if (splitSegments_.count(edgeKey(u, v)))
     return true;
   auto iu = segmentOf_.find(u), iv = segmentOf_.find(v);
-  auto onSeg = [](uint64_t seg, int32_t w) {
-    return static_cast<int32_t>(seg >> 32) == w || static_cast<int32_t>(seg & 0xffffffffu) == w;
-  };
+  auto onSeg = [](uint64_t seg, int32_t w)
+  { return static_cast<int32_t>(seg >> 32) == w || static_cast<int32_t>(seg & 0xffffffffu) == w; };
   if (iu != segmentOf_.end() && (onSeg(iu->second, v) || (iv != segmentOf_.end() && iv->second == iu->second)))
     return true;
   return iv != segmentOf_.end() && onSeg(iv->second, u);

@@ -18,12 +18,12 @@ namespace volgrid
 // What a mesh vertex is, for recovery and Steiner removal.
 enum class VertexKind : uint8_t
 {
-  Unused = 0,      // not (yet) in the mesh, or an input point no triangle references
-  Boundary,        // an input point used by the boundary triangles
-  Box,             // a corner of the auxiliary far box (only in exterior tets, removed with them)
-  SteinerSegment,  // added on an input edge (boundary: must be removed)
-  SteinerFacet,    // added inside an input triangle (boundary: must be removed)
-  SteinerInterior  // added strictly inside a region (allowed, counted)
+  Unused = 0,     // not (yet) in the mesh, or an input point no triangle references
+  Boundary,       // an input point used by the boundary triangles
+  Box,            // a corner of the auxiliary far box (only in exterior tets, removed with them)
+  SteinerSegment, // added on an input edge (boundary: must be removed)
+  SteinerFacet,   // added inside an input triangle (boundary: must be removed)
+  SteinerInterior // added strictly inside a region (allowed, counted)
 };
 
 // The boundary the mesh must contain: the input triangles, each possibly split into subfaces while

@@ -26,10 +26,10 @@ class EditJournal
 public:
   struct Mark
   {
-    size_t tets = 0, points = 0;   // log positions
-    int32_t capacity = 0;          // tet slots
-    int32_t vertices = 0;          // mesh points
-    size_t labels = 0;             // labels->size()
+    size_t tets = 0, points = 0; // log positions
+    int32_t capacity = 0;        // tet slots
+    int32_t vertices = 0;        // mesh points
+    size_t labels = 0;           // labels->size()
     TetMesh::Bookkeeping bookkeeping{ -1, 0, 0 };
   };
 

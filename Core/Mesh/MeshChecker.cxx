@@ -35,7 +35,7 @@ struct Checker
     ++counter;
     rep.valid = false;
     if (rep.firstBadTets.size() < opt.maxReported &&
-      std::find(rep.firstBadTets.begin(), rep.firstBadTets.end(), t) == rep.firstBadTets.end())
+        std::find(rep.firstBadTets.begin(), rep.firstBadTets.end(), t) == rep.firstBadTets.end())
       rep.firstBadTets.push_back(t);
   }
 
@@ -217,15 +217,17 @@ struct Checker
     std::vector<int32_t> verts;
     edges.reserve(6 * static_cast<size_t>(rep.finiteTets));
     verts.reserve(4 * static_cast<size_t>(rep.finiteTets));
-    mesh.forEachFiniteTet([&](int32_t t) {
-      const int32_t* w = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
+    mesh.forEachFiniteTet(
+      [&](int32_t t)
       {
-        verts.push_back(w[i]);
-        for (int j = i + 1; j < 4; ++j)
-          edges.push_back(pairKey(std::min(w[i], w[j]), std::max(w[i], w[j])));
-      }
-    });
+        const int32_t* w = mesh.vertices(t);
+        for (int i = 0; i < 4; ++i)
+        {
+          verts.push_back(w[i]);
+          for (int j = i + 1; j < 4; ++j)
+            edges.push_back(pairKey(std::min(w[i], w[j]), std::max(w[i], w[j])));
+        }
+      });
     std::sort(edges.begin(), edges.end());
     rep.edges = std::unique(edges.begin(), edges.end()) - edges.begin();
     std::sort(verts.begin(), verts.end());
@@ -248,7 +250,8 @@ std::string MeshCheckReport::summary() const
     << hullFaces << " hull faces";
   if (edges)
     s << ", " << vertices << " vertices, " << edges << " edges";
-  auto item = [&](int64_t n, const char* what) {
+  auto item = [&](int64_t n, const char* what)
+  {
     if (n)
       s << "; " << n << " " << what;
   };

@@ -37,13 +37,13 @@ struct MeshCheckReport
 {
   bool valid = true;
   // Violation counts.
-  int64_t badVertices = 0;        // id out of range, repeated in a tet, two ghost vertices
-  int64_t invertedTets = 0;       // finite tets with orient3d <= 0
-  int64_t badNeighbors = 0;       // out of range or pointing at a free slot
+  int64_t badVertices = 0;  // id out of range, repeated in a tet, two ghost vertices
+  int64_t invertedTets = 0; // finite tets with orient3d <= 0
+  int64_t badNeighbors = 0; // out of range or pointing at a free slot
   int64_t asymmetricNeighbors = 0;
-  int64_t faceMismatches = 0;     // neighbours whose shared face differs or has the same orientation
-  int64_t openFaces = 0;          // faces without neighbour while ghosts are present
-  int64_t hullErrors = 0;         // ghost hull faces not on finite tets, non-manifold/open hull edges
+  int64_t faceMismatches = 0; // neighbours whose shared face differs or has the same orientation
+  int64_t openFaces = 0;      // faces without neighbour while ghosts are present
+  int64_t hullErrors = 0;     // ghost hull faces not on finite tets, non-manifold/open hull edges
   int64_t nonDelaunayFaces = 0;
   int64_t nonConvexHullEdges = 0;
   bool eulerOk = true;

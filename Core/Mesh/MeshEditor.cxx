@@ -23,12 +23,14 @@ MeshEditor::MeshEditor(TetMesh& m)
 void MeshEditor::rebuildVertexMap()
 {
   vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
-  mesh.forEachTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    for (int i = 0; i < 4; ++i)
-      if (v[i] >= 0)
-        vertTet_[v[i]] = t;
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        if (v[i] >= 0)
+          vertTet_[v[i]] = t;
+    });
 }
 
 int32_t MeshEditor::tetOf(int32_t v)
@@ -163,7 +165,7 @@ bool MeshEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>&
 }
 
 bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
-  std::vector<int32_t>* created, bool allowOpen)
+                         std::vector<int32_t>* created, bool allowOpen)
 {
   for (int32_t t : oldTets)
     mesh.tetFlags[t] |= TetMesh::kMarkA;
@@ -299,9 +301,8 @@ bool MeshEditor::flip23(int32_t t, int face, const BoundaryConstraints* bc, std:
   return true;
 }
 
-
-bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
-  std::array<int32_t, 2> chord)
+bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
+                            std::vector<int32_t>* created, std::array<int32_t, 2> chord)
 {
   if (bc && bc->isEdge(x, y))
     return false;
@@ -318,7 +319,8 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
   const double kInvalid = -std::numeric_limits<double>::infinity();
   std::vector<double> best(static_cast<size_t>(n * n), kInvalid);
   std::vector<int> choice(static_cast<size_t>(n * n), -1);
-  auto chordOk = [&](int i, int j) { return j == i + 1 || (i == 0 && j == n - 1) || !bc->forbiddenEdge(ring[i], ring[j]); };
+  auto chordOk = [&](int i, int j)
+  { return j == i + 1 || (i == 0 && j == n - 1) || !bc->forbiddenEdge(ring[i], ring[j]); };
   // A required chord (positions ci < cj in the ring): no chord of the triangulation may cross it.
   int ci = -1, cj = -1;
   if (chord[0] >= 0)
@@ -338,7 +340,8 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
     const bool atI = i == ci || j == ci, atJ = i == cj || j == cj;
     return !atI && !atJ && inI != inJ;
   };
-  auto triQ = [&](int i, int k, int j) -> double {
+  auto triQ = [&](int i, int k, int j) -> double
+  {
     if (bc && (!chordOk(i, k) || !chordOk(k, j) || !chordOk(i, j)))
       return kInvalid;
     if (crossesChord(i, k) || crossesChord(k, j) || crossesChord(i, j))
@@ -377,10 +380,12 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
   if (!(best[n - 1] > kInvalid))
     return false;
   tmpNew_.clear();
-  forEachChosenTriangle(choice, n, [&](int i, int k, int j) {
-    tmpNew_.push_back({ { ring[i], ring[k], ring[j], y } });
-    tmpNew_.push_back({ { ring[i], ring[j], ring[k], x } });
-  });
+  forEachChosenTriangle(choice, n,
+                        [&](int i, int k, int j)
+                        {
+                          tmpNew_.push_back({ { ring[i], ring[k], ring[j], y } });
+                          tmpNew_.push_back({ { ring[i], ring[j], ring[k], x } });
+                        });
   lastRemoved.clear();
   for (int32_t u : tets)
     lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
@@ -395,7 +400,7 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
 }
 
 bool MeshEditor::removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
-  std::vector<int32_t>* created, int depth, std::array<int32_t, 2> chord)
+                                std::vector<int32_t>* created, int depth, std::array<int32_t, 2> chord)
 {
   if (removeEdge(t, x, y, bc, created, chord))
     return true;

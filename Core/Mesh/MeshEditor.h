@@ -41,7 +41,7 @@ public:
   // the region may change where it has no neighbour: unmatched new faces get no neighbour and outer tets
   // whose old face is gone lose that neighbour (used when the boundary moves, SteinerRemoval).
   bool replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
-    std::vector<int32_t>* created = nullptr, bool allowOpen = false);
+               std::vector<int32_t>* created = nullptr, bool allowOpen = false);
 
   // Flips. Each checks validity exactly and returns false (mesh untouched) when invalid or when it
   // would remove a constraint (a boundary subface / subface edge).
@@ -49,7 +49,7 @@ public:
   // Removes edge xy (contained in tet t): n-to-(2n-4) with the best valid ring triangulation.
   // chord: two ring vertices the ring triangulation must join (no other chord crosses theirs), or -1s.
   bool removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc,
-    std::vector<int32_t>* created = nullptr, std::array<int32_t, 2> chord = { -1, -1 });
+                  std::vector<int32_t>* created = nullptr, std::array<int32_t, 2> chord = { -1, -1 });
 
   // Inserts a new vertex v (coordinates already in mesh.points) with a Bowyer-Watson cavity grown from
   // the tets whose closure contains it, not crossing constraint faces (nor hull faces), made star-shaped
@@ -67,7 +67,7 @@ public:
   // Edge removal that first tries to shrink the edge's ring by removing the edges joining its ends to
   // the ring vertices (recursively, `depth` levels) when the edge cannot be removed directly.
   bool removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryConstraints* bc, std::vector<int32_t>* created,
-    int depth, std::array<int32_t, 2> chord = { -1, -1 });
+                      int depth, std::array<int32_t, 2> chord = { -1, -1 });
 
   // The tets the last successful flip removed (for undo: replace(created, lastRemoved)) and their ids
   // before the flip.

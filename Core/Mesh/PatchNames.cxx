@@ -73,10 +73,10 @@ Status applyPatchAssignment(const PatchAssignment& assignment, std::vector<int32
     {
       if (!newLabel.emplace(id, static_cast<int32_t>(g + 1)).second)
         return Status::failure(ErrorKind::InvalidOption,
-          "--patch: patch id " + std::to_string(id) + " is assigned twice");
+                               "--patch: patch id " + std::to_string(id) + " is assigned twice");
       if (!present.count(id))
         return Status::failure(ErrorKind::InvalidOption,
-          "--patch: no boundary triangle has patch id " + std::to_string(id));
+                               "--patch: no boundary triangle has patch id " + std::to_string(id));
     }
   }
   NameTable renamed;

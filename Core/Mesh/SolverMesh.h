@@ -16,13 +16,13 @@ namespace volgrid
 
 struct SolverMesh
 {
-  std::vector<double> points;          // 3 per point
-  std::vector<int32_t> tets;           // 4 per tet, positive volume ((b-a)x(c-a).(d-a) > 0)
-  std::vector<int32_t> tetRegion;      // one per tet
-  std::vector<int32_t> triangles;      // boundary triangles, 3 each
-  std::vector<int32_t> trianglePatch;  // one per boundary triangle
-  NameTable patchNames;                // patch label -> name
-  NameTable regionNames;               // region label -> name
+  std::vector<double> points;         // 3 per point
+  std::vector<int32_t> tets;          // 4 per tet, positive volume ((b-a)x(c-a).(d-a) > 0)
+  std::vector<int32_t> tetRegion;     // one per tet
+  std::vector<int32_t> triangles;     // boundary triangles, 3 each
+  std::vector<int32_t> trianglePatch; // one per boundary triangle
+  NameTable patchNames;               // patch label -> name
+  NameTable regionNames;              // region label -> name
   // Point fields by name, one value per point (a solver's target size, ...): kept by the formats that
   // hold them (Exodus II nodal variables), ignored by the others.
   std::map<std::string, std::vector<double>> pointData;

@@ -160,7 +160,7 @@ double signedVolume(const SurfaceMesh& mesh, const std::vector<int32_t>& triangl
     return 0.0;
   }
   const double o[3] = { 0.5 * (box.min[0] + box.max[0]), 0.5 * (box.min[1] + box.max[1]),
-    0.5 * (box.min[2] + box.max[2]) };
+                        0.5 * (box.min[2] + box.max[2]) };
   KahanSum s;
   for (int32_t t : triangleIds)
   {
@@ -209,7 +209,8 @@ int64_t exactCoincidenceMap(const std::vector<double>& points, std::vector<int32
   std::vector<int32_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   const double* p = points.data();
-  auto lessPoint = [p](int32_t i, int32_t j) {
+  auto lessPoint = [p](int32_t i, int32_t j)
+  {
     for (int k = 0; k < 3; ++k)
     {
       const double a = p[3 * size_t(i) + k], b = p[3 * size_t(j) + k];
@@ -224,7 +225,8 @@ int64_t exactCoincidenceMap(const std::vector<double>& points, std::vector<int32
     }
     return i < j;
   };
-  auto samePoint = [p](int32_t i, int32_t j) {
+  auto samePoint = [p](int32_t i, int32_t j)
+  {
     for (int k = 0; k < 3; ++k)
     {
       if (!(p[3 * size_t(i) + k] == p[3 * size_t(j) + k]))

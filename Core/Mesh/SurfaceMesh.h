@@ -14,9 +14,9 @@ namespace volgrid
 
 struct SurfaceMesh
 {
-  std::vector<double> points;    // 3 * numberOfPoints()
-  std::vector<int32_t> triangles; // 3 * numberOfTriangles()
-  std::vector<int32_t> patchIds;  // empty, or one per triangle
+  std::vector<double> points;                // 3 * numberOfPoints()
+  std::vector<int32_t> triangles;            // 3 * numberOfTriangles()
+  std::vector<int32_t> patchIds;             // empty, or one per triangle
   std::map<int32_t, std::string> patchNames; // patch id -> name (STL solid, gmsh physical name, ...)
 
   int32_t numberOfPoints() const { return static_cast<int32_t>(points.size() / 3); }
@@ -63,8 +63,8 @@ int64_t exactCoincidenceMap(const std::vector<double>& points, std::vector<int32
 
 struct MergeResult
 {
-  int64_t mergedPoints = 0;       // points removed because an earlier point had the same coordinates
-  std::vector<int32_t> oldToNew;  // old point id -> new point id
+  int64_t mergedPoints = 0;      // points removed because an earlier point had the same coordinates
+  std::vector<int32_t> oldToNew; // old point id -> new point id
 };
 
 // Merges exactly coincident points in place and renumbers triangles. Triangles are not removed (a

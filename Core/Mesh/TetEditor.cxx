@@ -41,7 +41,8 @@ TetFrame tetFrame(const double* a, const double* b, const double* c, const doubl
   for (int k = 0; k < 6; ++k)
     for (int i = 0; i < 3; ++i)
       f.e[k][i] = to[k][i] - from[k][i];
-  auto cross = [](const double* u, const double* v, double* w) {
+  auto cross = [](const double* u, const double* v, double* w)
+  {
     w[0] = u[1] * v[2] - u[2] * v[1];
     w[1] = u[2] * v[0] - u[0] * v[2];
     w[2] = u[0] * v[1] - u[1] * v[0];
@@ -131,12 +132,14 @@ TetEditor::TetEditor(TetMesh& m, const FaceConstraints* c, std::vector<int32_t>*
 void TetEditor::rebuildVertexMap()
 {
   vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
-  mesh.forEachTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    for (int i = 0; i < 4; ++i)
-      if (v[i] >= 0)
-        vertTet_[v[i]] = t;
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        if (v[i] >= 0)
+          vertTet_[v[i]] = t;
+    });
 }
 
 void TetEditor::ensureStamp()
@@ -155,17 +158,19 @@ std::vector<uint8_t> TetEditor::lockedVertices() const
   for (int32_t v = 0; v < mesh.numVertices(); ++v)
     if (tetOf(v) < 0)
       locked[v] = 1;
-  mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      if (isConstrainedFace(t, i))
-      {
-        int32_t f[3];
-        mesh.faceVertices(t, i, f);
-        for (int k = 0; k < 3; ++k)
-          if (f[k] >= 0)
-            locked[f[k]] = 1;
-      }
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        if (isConstrainedFace(t, i))
+        {
+          int32_t f[3];
+          mesh.faceVertices(t, i, f);
+          for (int k = 0; k < 3; ++k)
+            if (f[k] >= 0)
+              locked[f[k]] = 1;
+        }
+    });
   return locked;
 }
 
@@ -210,7 +215,7 @@ void TetEditor::neighbors(int32_t v, const std::vector<int32_t>& starTets, std::
 }
 
 bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
-  int maxRing) const
+                         int maxRing) const
 {
   ring.clear();
   tets.clear();
@@ -263,7 +268,7 @@ bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& 
 }
 
 bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
-  std::vector<int32_t>* created)
+                        std::vector<int32_t>* created)
 {
   if (oldTets.empty())
     return false;
@@ -271,7 +276,8 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
   for (int32_t t : oldTets)
     stamp_[t] = s;
   faces_.clear();
-  auto sortKey = [](int32_t* k) {
+  auto sortKey = [](int32_t* k)
+  {
     if (k[0] > k[1])
       std::swap(k[0], k[1]);
     if (k[1] > k[2])
@@ -308,15 +314,17 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
       faces_.push_back(e);
     }
   (void)numOuter;
-  std::sort(faces_.begin(), faces_.end(), [](const FaceEntry& a, const FaceEntry& b) {
-    if (a.key[0] != b.key[0])
-      return a.key[0] < b.key[0];
-    if (a.key[1] != b.key[1])
-      return a.key[1] < b.key[1];
-    if (a.key[2] != b.key[2])
-      return a.key[2] < b.key[2];
-    return a.owner < b.owner; // outer (-1) first
-  });
+  std::sort(faces_.begin(), faces_.end(),
+            [](const FaceEntry& a, const FaceEntry& b)
+            {
+              if (a.key[0] != b.key[0])
+                return a.key[0] < b.key[0];
+              if (a.key[1] != b.key[1])
+                return a.key[1] < b.key[1];
+              if (a.key[2] != b.key[2])
+                return a.key[2] < b.key[2];
+              return a.owner < b.owner; // outer (-1) first
+            });
   // Every key must appear exactly twice: (outer, new) or (new, new).
   if (faces_.size() % 2)
     return false;
@@ -334,7 +342,8 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
     }
   }
   // Commit.
-  const uint8_t userBits = mesh.tetFlags[oldTets[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
+  const uint8_t userBits =
+    mesh.tetFlags[oldTets[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
   const int32_t label = labels && static_cast<size_t>(oldTets[0]) < labels->size() ? (*labels)[oldTets[0]] : -1;
   for (int32_t t : oldTets)
   {
@@ -447,17 +456,19 @@ int32_t TetEditor::locateRobust(const double* p, int32_t start) const
 }
 
 TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double minDistance, double* nearest,
-  std::vector<int32_t>* created)
+                                               std::vector<int32_t>* created)
 {
   const double* p = mesh.point(v);
   if (start < 0 || mesh.isFree(start))
     return InsertStatus::NotInside;
-  auto faceSide = [&](int32_t t, int i) {
+  auto faceSide = [&](int32_t t, int i)
+  {
     int32_t f[3];
     mesh.faceVertices(t, i, f);
     return predicates::orient3dInline(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p);
   };
-  auto containsP = [&](int32_t t) {
+  auto containsP = [&](int32_t t)
+  {
     for (int i = 0; i < 4; ++i)
       if (faceSide(t, i) < 0)
         return false;
@@ -488,7 +499,7 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
         continue;
       const int32_t* w = mesh.vertices(u);
       const int c = predicates::insphereSoSInline(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]),
-        mesh.point(w[3]), p, w[0], w[1], w[2], w[3], v);
+                                                  mesh.point(w[3]), p, w[0], w[1], w[2], w[3], v);
       if (c > 0)
       {
         stamp_[u] = s;
@@ -628,8 +639,8 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   return InsertStatus::Inserted;
 }
 
-double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality,
-  bool commit, std::vector<int32_t>* created, int maxCavity, double mustBeat)
+double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,
+                                   std::vector<int32_t>* created, int maxCavity, double mustBeat)
 {
   if (start < 0 || mesh.isFree(start))
     return -3;
@@ -677,7 +688,8 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
     stamp_[t] = s;
   // The cone over the cavity's boundary faces, kept up to date as the cavity grows.
   cone_.clear();
-  auto addFaces = [&](int32_t t) {
+  auto addFaces = [&](int32_t t)
+  {
     const int32_t* w = mesh.vertices(t);
     for (int i = 0; i < 4; ++i)
     {
@@ -845,12 +857,14 @@ void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
       for (int m = 0; m < 4; ++m)
         if (m != i && m != j)
           (a < 0 ? a : b) = q[m];
-      const uint64_t key = a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b) : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
+      const uint64_t key =
+        a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b) : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
       edgeSlots_.push_back({ key, TetMesh::encode(t, j) });
     }
   }
   std::sort(edgeSlots_.begin(), edgeSlots_.end(),
-    [](const std::pair<uint64_t, int32_t>& x, const std::pair<uint64_t, int32_t>& y) { return x.first < y.first; });
+            [](const std::pair<uint64_t, int32_t>& x, const std::pair<uint64_t, int32_t>& y)
+            { return x.first < y.first; });
   for (size_t k = 0; k + 1 < edgeSlots_.size(); k += 2)
   {
     const int32_t c1 = edgeSlots_[k].second, c2 = edgeSlots_[k + 1].second;

@@ -108,12 +108,12 @@ public:
   // {x,y,r_i,r_i+1} with orient3d(x,y,r_i,r_i+1) > 0. False when the ring is open (edge on the boundary),
   // when a face around the edge is constrained, or when the ring has more than maxRing tets.
   bool edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
-    int maxRing = 64) const;
+                int maxRing = 64) const;
 
   // Replace oldTets by newTets (vertex quadruples, positively oriented, filling the same region).
   // False (mesh untouched) when the faces do not match. created (optional) receives the new tet ids.
   bool replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
-    std::vector<int32_t>* created = nullptr);
+               std::vector<int32_t>* created = nullptr);
 
   // Visibility walk from `start` to a tet whose closure contains p; -1 if the walk leaves the mesh
   // (p outside, or behind a boundary concavity) or does not converge.
@@ -124,26 +124,27 @@ public:
   enum class InsertStatus
   {
     Inserted,
-    NotInside,   // p is outside the start tet's closure, or on a constrained face
-    TooClose,    // a cavity vertex is closer than minDistance
-    NoCavity     // no valid star-shaped cavity (would swallow a vertex); nothing changed
+    NotInside, // p is outside the start tet's closure, or on a constrained face
+    TooClose,  // a cavity vertex is closer than minDistance
+    NoCavity   // no valid star-shaped cavity (would swallow a vertex); nothing changed
   };
   // Insert vertex v (coordinates already in mesh.points, used by no tet) whose position lies in the
   // closure of tet `start`. Rejects it when a vertex of the cavity (which contains the nearest vertex in a
   // Delaunay mesh) is closer than minDistance. nearest (optional) receives that distance.
   InsertStatus insertPoint(int32_t v, int32_t start, double minDistance = 0, double* nearest = nullptr,
-    std::vector<int32_t>* created = nullptr);
+                           std::vector<int32_t>* created = nullptr);
 
   // Quality-driven insertion (after Klingner and Shewchuk's smart vertex insertion) of vertex v
   // (coordinates in mesh.points, used by no tet) lying in the closure of tet `start`: the cavity starts
   // from `start` (with mustReplace >= 0: the shortest path of at most 5 tets from `start` to mustReplace)
   // and grows one tet at a time across the unconstrained face that makes the worst new tet; the cavity
-  // (star-shaped from v, every cavity vertex on its boundary) whose worst new tet is best is kept. Returns that worst new quality (tetSineQuality), or -3 when there is no valid cavity or when
-  // mustReplace >= 0 is not in it; replacedQuality (optional) receives the worst replaced tet's quality.
-  // commit = false leaves the mesh untouched (to compare positions); true inserts v with that cavity.
-  // mustBeat: only cavities whose worst new tet is above it count (-3 when none; prunes the search).
+  // (star-shaped from v, every cavity vertex on its boundary) whose worst new tet is best is kept. Returns that worst
+  // new quality (tetSineQuality), or -3 when there is no valid cavity or when mustReplace >= 0 is not in it;
+  // replacedQuality (optional) receives the worst replaced tet's quality. commit = false leaves the mesh untouched (to
+  // compare positions); true inserts v with that cavity. mustBeat: only cavities whose worst new tet is above it count
+  // (-3 when none; prunes the search).
   double qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,
-    std::vector<int32_t>* created = nullptr, int maxCavity = 24, double mustBeat = -3);
+                          std::vector<int32_t>* created = nullptr, int maxCavity = 24, double mustBeat = -3);
 
   uint64_t replacements = 0;
 

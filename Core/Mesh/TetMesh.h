@@ -81,7 +81,7 @@ public:
   // ---- sizes ----
   int32_t numVertices() const { return static_cast<int32_t>(points.size() / 3); }
   int32_t tetCapacity() const { return static_cast<int32_t>(tetFlags.size()); } // slots, free included
-  int32_t numTets() const { return tetCapacity() - numFree_; }                // live tets, ghosts included
+  int32_t numTets() const { return tetCapacity() - numFree_; }                  // live tets, ghosts included
   int32_t numFreeTets() const { return numFree_; }
   int32_t numGhostTets() const { return numGhost_; }
   int32_t numFiniteTets() const { return numTets() - numGhost_; }
@@ -190,7 +190,7 @@ public:
   // Bytes held by the tet arrays and the points (capacity, not size).
   size_t memoryBytes() const;
 
-  template <class F>
+  template<class F>
   void forEachTet(F&& f) const
   {
     const int32_t n = tetCapacity();
@@ -198,7 +198,7 @@ public:
       if (!(tetFlags[t] & kFree))
         f(t);
   }
-  template <class F>
+  template<class F>
   void forEachFiniteTet(F&& f) const
   {
     const int32_t n = tetCapacity();

@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <unordered_set>
 #include <numeric>
+#include <unordered_set>
 
 namespace volgrid
 {
@@ -30,7 +30,8 @@ std::vector<int32_t> shellsOf(const SurfaceMesh& s, int32_t* count)
   const int32_t nt = s.numberOfTriangles();
   std::vector<int32_t> parent(static_cast<size_t>(nt));
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int32_t x) {
+  auto find = [&](int32_t x)
+  {
     while (parent[x] != x)
       x = parent[x] = parent[parent[x]];
     return x;
@@ -68,11 +69,11 @@ void markForcedTets(MesherResult& result)
   for (size_t t = 0; t < nt; ++t, tet += 4)
   {
     if (tet[0] >= result.numInputPoints || tet[1] >= result.numInputPoints || tet[2] >= result.numInputPoints ||
-      tet[3] >= result.numInputPoints)
+        tet[3] >= result.numInputPoints)
       continue;
     const double* p = result.points.data();
     const bool forced = tetSineQuality(p + 3 * static_cast<size_t>(tet[0]), p + 3 * static_cast<size_t>(tet[1]),
-                          p + 3 * static_cast<size_t>(tet[2]), p + 3 * static_cast<size_t>(tet[3])) < q10;
+                                       p + 3 * static_cast<size_t>(tet[2]), p + 3 * static_cast<size_t>(tet[3])) < q10;
     result.tetForced[t] = forced;
     result.stats.forcedTets += forced;
   }
@@ -100,9 +101,9 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     {
       const int32_t v = surf.triangle(t)[k];
       if (v < 0 || v >= surf.numberOfPoints())
-        return Status::failure(ErrorKind::InvalidOption,
-          "Triangle " + std::to_string(t) + " refers to point " + std::to_string(v) + ", which does not exist.",
-          { t });
+        return Status::failure(
+          ErrorKind::InvalidOption,
+          "Triangle " + std::to_string(t) + " refers to point " + std::to_string(v) + ", which does not exist.", { t });
     }
   MergeResult merge = mergeCoincidentPoints(surf);
   st.mergedPoints = merge.mergedPoints;
@@ -289,10 +290,12 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   const int32_t nv = mesh.numVertices();
   std::vector<int32_t> outId(static_cast<size_t>(nv), -1);
   std::vector<uint8_t> inTet(static_cast<size_t>(nv), 0);
-  mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      inTet[mesh.vertex(t, i)] = 1;
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        inTet[mesh.vertex(t, i)] = 1;
+    });
   result.points.assign(mesh.points.begin(), mesh.points.begin() + 3 * static_cast<size_t>(N));
   result.numInputPoints = N;
   for (int32_t v = 0; v < N; ++v)
@@ -305,7 +308,7 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
       return Status::failure(ErrorKind::InternalError, "A far-box corner is still used by a domain tet.");
     outId[v] = static_cast<int32_t>(result.points.size() / 3);
     result.points.insert(result.points.end(), mesh.points.begin() + 3 * static_cast<size_t>(v),
-      mesh.points.begin() + 3 * static_cast<size_t>(v) + 3);
+                         mesh.points.begin() + 3 * static_cast<size_t>(v) + 3);
     if (kinds[v] == VertexKind::SteinerInterior)
       ++st.steinerInterior;
     else
@@ -313,11 +316,13 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   }
   result.tets.reserve(static_cast<size_t>(mesh.numTets()) * 4);
   result.tetRegion.reserve(static_cast<size_t>(mesh.numTets()));
-  mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      result.tets.push_back(outId[mesh.vertex(t, i)]);
-    result.tetRegion.push_back(regions.tetRegion[t]);
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        result.tets.push_back(outId[mesh.vertex(t, i)]);
+      result.tetRegion.push_back(regions.tetRegion[t]);
+    });
   markForcedTets(result);
   // Boundary triangles: input triangles that are faces of the mesh (all of them unless keep-all
   // interfaces... which are faces too), found by one sweep over the tets.
@@ -351,9 +356,9 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
         e[1][k] = cc[k] - a[k];
         e[2][k] = d[k] - a[k];
       }
-      const double v = (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                         e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                         e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+      const double v =
+        (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+         e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
         6.0;
       const double y = v - c, tt = sum + y;
       c = (tt - sum) - y;
@@ -363,9 +368,9 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   }
   if (options.verify)
   {
-    BoundaryCheckReport br =
-      checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume);
-    const bool boundaryOk = options.regionRule == RegionRule::EvenOdd ? br.boundaryEqualsInput() : br.inputTrianglesNotFaces == 0;
+    BoundaryCheckReport br = checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume);
+    const bool boundaryOk =
+      options.regionRule == RegionRule::EvenOdd ? br.boundaryEqualsInput() : br.inputTrianglesNotFaces == 0;
     if (!br.meshValid() || !boundaryOk || (options.checkSurface && br.relativeVolumeError > 1e-9))
     {
       std::vector<int64_t> ids = br.firstProblems;

@@ -62,21 +62,21 @@ struct MesherOptions
 
 struct MesherStatistics
 {
-  int64_t inputPoints = 0;       // after exact merging
-  int64_t mergedPoints = 0;      // coincident input points merged
+  int64_t inputPoints = 0;  // after exact merging
+  int64_t mergedPoints = 0; // coincident input points merged
   int64_t inputTriangles = 0;
-  int64_t points = 0;            // output points
+  int64_t points = 0; // output points
   int64_t tets = 0;
   int64_t regions = 0;
-  int64_t missingEdges = 0;      // boundary edges missing from the Delaunay tetrahedralization
-  int64_t missingFacets = 0;     // facets still missing once all edges were present
-  int64_t flips = 0;             // flips done by recovery
-  int64_t steinerInterior = 0;   // points added strictly inside the domain
-  int64_t steinerBoundary = 0;   // points left on the boundary (0 unless removeBoundarySteiner is off)
-  int64_t steinerInserted = 0;   // boundary Steiner points recovery inserted (all later relocated)
-  int recoveryAttempts = 0;      // 2: the retry with presplit segments ran; 3: also the one with segment cones
-  double enclosedVolume = 0;     // volume of the domain computed from the input surface
-  double tetVolume = 0;          // sum of the output tets' volumes
+  int64_t missingEdges = 0;    // boundary edges missing from the Delaunay tetrahedralization
+  int64_t missingFacets = 0;   // facets still missing once all edges were present
+  int64_t flips = 0;           // flips done by recovery
+  int64_t steinerInterior = 0; // points added strictly inside the domain
+  int64_t steinerBoundary = 0; // points left on the boundary (0 unless removeBoundarySteiner is off)
+  int64_t steinerInserted = 0; // boundary Steiner points recovery inserted (all later relocated)
+  int recoveryAttempts = 0;    // 2: the retry with presplit segments ran; 3: also the one with segment cones
+  double enclosedVolume = 0;   // volume of the domain computed from the input surface
+  double tetVolume = 0;        // sum of the output tets' volumes
   double secondsCheck = 0, secondsDelaunay = 0, secondsRecovery = 0, secondsExterior = 0, secondsSteiner = 0,
          secondsTotal = 0;
   // Grid control and quality (field, cluster and split points are not counted in steinerInterior).
@@ -87,25 +87,25 @@ struct MesherStatistics
 
 struct MesherResult
 {
-  std::vector<double> points;            // input points (merged) first, added points after
+  std::vector<double> points; // input points (merged) first, added points after
   int32_t numInputPoints = 0;
   std::vector<int32_t> inputToOutputPoint; // original input point id -> output point id
-  std::vector<int32_t> tets;             // 4 per tet, orient3d > 0
-  std::vector<int32_t> tetRegion;        // region label per tet (0..regions-1)
+  std::vector<int32_t> tets;               // 4 per tet, orient3d > 0
+  std::vector<int32_t> tetRegion;          // region label per tet (0..regions-1)
   // Per tet, 1 when the input surface forces its shape: a dihedral angle under 10 or over 170 degrees
   // (sine quality, TetEditor.h) with all four vertices on the input boundary, so that no flip or move can
   // change it without changing the boundary; else 0. The cell array Forced; stats.forcedTets counts them.
   std::vector<uint8_t> tetForced;
-  std::vector<int32_t> boundaryTriangles; // 3 per triangle: the input triangles bounding the domain
+  std::vector<int32_t> boundaryTriangles;     // 3 per triangle: the input triangles bounding the domain
   std::vector<int32_t> boundaryInputTriangle; // input triangle id of each boundary triangle
-  std::vector<int32_t> boundaryPatch;    // PatchId: the input patch id if present, else the shell index
-  std::vector<int32_t> triangleShell;    // shell index of each input triangle
+  std::vector<int32_t> boundaryPatch;         // PatchId: the input patch id if present, else the shell index
+  std::vector<int32_t> triangleShell;         // shell index of each input triangle
   MesherStatistics stats;
   std::vector<std::string> warnings;
 };
 
 // Mesh the volume enclosed by `surface`. On failure the result is empty and the Status says why.
 Status meshSurface(const SurfaceMesh& surface, const MesherOptions& options, MesherResult& result,
-  Progress* progress = nullptr);
+                   Progress* progress = nullptr);
 
 } // namespace volgrid

@@ -112,7 +112,7 @@ SizeEstimate estimateMeshSize(const SurfaceMesh& surface, const ImprovementOptio
 }
 
 SizeEstimate estimateRefineSize(const std::vector<double>& points, const std::vector<int32_t>& tets,
-  const std::vector<double>& targetSize, double alpha)
+                                const std::vector<double>& targetSize, double alpha)
 {
   const double alphaFactor = std::pow(std::max(0.75 / alpha, 1.0), 3.0);
   const size_t numPoints = points.size() / 3;
@@ -140,7 +140,8 @@ SizeEstimate estimateRefineSize(const std::vector<double>& points, const std::ve
       const double v[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
       const double w[3] = { p[3][0] - p[0][0], p[3][1] - p[0][1], p[3][2] - p[0][2] };
       const double volume = std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                              u[2] * (v[0] * w[1] - v[1] * w[0])) / 6.0;
+                                      u[2] * (v[0] * w[1] - v[1] * w[0])) /
+        6.0;
       here = std::max(1.0, kTetsPerUnitVolume * alphaFactor * volume / (h * h * h));
     }
     sum += here;

@@ -47,7 +47,7 @@ SizeEstimate estimateMeshSize(const SurfaceMesh& surface, const ImprovementOptio
 
 // volgrid refine: a tet mesh (4 point ids per tet) and one target size per point (non-finite or <= 0: none).
 SizeEstimate estimateRefineSize(const std::vector<double>& points, const std::vector<int32_t>& tets,
-  const std::vector<double>& targetSize, double alpha);
+                                const std::vector<double>& targetSize, double alpha);
 
 // volgrid delaunay on n points.
 SizeEstimate estimateDelaunaySize(double numPoints);

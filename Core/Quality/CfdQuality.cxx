@@ -37,7 +37,7 @@ void areaVector(const double* a, const double* b, const double* c, double s[3])
 
 // |sv| / fd for the face (a, b, c) with centre-to-centre vector d (see the header).
 double skewness(const double* a, const double* b, const double* c, const double owner[3], const double d[3],
-  double distanceFactor)
+                double distanceFactor)
 {
   double fc[3], s[3];
   centroid(a, b, c, fc);
@@ -46,7 +46,8 @@ double skewness(const double* a, const double* b, const double* c, const double 
   const double f = dot(s, cpf) / (dot(s, d) + kRootVSmall);
   const double sv[3] = { cpf[0] - f * d[0], cpf[1] - f * d[1], cpf[2] - f * d[2] };
   const double magSv = std::sqrt(dot(sv, sv));
-  const double svHat[3] = { sv[0] / (magSv + kRootVSmall), sv[1] / (magSv + kRootVSmall), sv[2] / (magSv + kRootVSmall) };
+  const double svHat[3] = { sv[0] / (magSv + kRootVSmall), sv[1] / (magSv + kRootVSmall),
+                            sv[2] / (magSv + kRootVSmall) };
   double fd = distanceFactor * std::sqrt(dot(d, d)) + kRootVSmall;
   for (const double* p : { a, b, c })
   {
@@ -69,8 +70,10 @@ double tetVolumeAbs(const std::vector<double>& points, const int32_t* v)
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k)
       e[i][k] = points[3 * v[i + 1] + k] - p0[k];
-  return std::fabs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-           e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) / 6.0;
+  return std::fabs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                   e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                   e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+    6.0;
 }
 } // namespace
 
@@ -82,7 +85,7 @@ double faceNonOrthogonality(const double owner[3], const double neighbour[3], co
 }
 
 double internalFaceSkewness(const double* a, const double* b, const double* c, const double owner[3],
-  const double neighbour[3])
+                            const double neighbour[3])
 {
   const double d[3] = { neighbour[0] - owner[0], neighbour[1] - owner[1], neighbour[2] - owner[2] };
   return skewness(a, b, c, owner, d, 0.2);

@@ -43,7 +43,7 @@ struct CfdCellMetrics
 double faceNonOrthogonality(const double owner[3], const double neighbour[3], const double area[3]);
 // Skewness of the triangle (a, b, c) between cell centres `owner` and `neighbour`.
 double internalFaceSkewness(const double* a, const double* b, const double* c, const double owner[3],
-  const double neighbour[3]);
+                            const double neighbour[3]);
 // Skewness of the boundary triangle (a, b, c) of the cell centred at `owner`.
 double boundaryFaceSkewness(const double* a, const double* b, const double* c, const double owner[3]);
 

@@ -21,20 +21,38 @@ struct V3
 {
   double x, y, z;
 };
-inline V3 sub(const double a[3], const double b[3]) { return { a[0] - b[0], a[1] - b[1], a[2] - b[2] }; }
-inline V3 operator-(const V3& a) { return { -a.x, -a.y, -a.z }; }
+inline V3 sub(const double a[3], const double b[3])
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+inline V3 operator-(const V3& a)
+{
+  return { -a.x, -a.y, -a.z };
+}
 inline V3 cross(const V3& a, const V3& b)
 {
   return { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
 }
-inline double dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline double norm(const V3& a) { return std::sqrt(dot(a, a)); }
+inline double dot(const V3& a, const V3& b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline double norm(const V3& a)
+{
+  return std::sqrt(dot(a, a));
+}
 
 // NaN and infinity (zero denominators) become kMaxRatio; see Quality.h.
-inline double clampRatio(double r) { return r < kMaxRatio ? r : kMaxRatio; }
+inline double clampRatio(double r)
+{
+  return r < kMaxRatio ? r : kMaxRatio;
+}
 
 // Interior angle in degrees between two faces with consistently oriented normals n and m.
-inline double dihedral(const V3& n, const V3& m) { return std::atan2(norm(cross(n, m)), -dot(n, m)) * kDegrees; }
+inline double dihedral(const V3& n, const V3& m)
+{
+  return std::atan2(norm(cross(n, m)), -dot(n, m)) * kDegrees;
+}
 
 // Everything the metrics share: edge vectors, squared lengths, inward face normals (face k is opposite
 // vertex k; |n_k| is twice its area) and the triple product 6V.
@@ -76,7 +94,7 @@ struct TetGeometry
   {
     const V3 bc = n[1], ca = n[2], ab = n[3];
     const V3 o = { l2[0] * bc.x + l2[1] * ca.x + l2[2] * ab.x, l2[0] * bc.y + l2[1] * ca.y + l2[2] * ab.y,
-      l2[0] * bc.z + l2[1] * ca.z + l2[2] * ab.z };
+                   l2[0] * bc.z + l2[1] * ca.z + l2[2] * ab.z };
     return norm(o) / (2.0 * std::fabs(triple));
   }
 
@@ -172,8 +190,7 @@ double tetAspectRatio(const double p0[3], const double p1[3], const double p2[3]
   return tetMetrics(p0, p1, p2, p3).aspectRatio;
 }
 
-void tetDihedralAngles(
-  const double p0[3], const double p1[3], const double p2[3], const double p3[3], double angles[6])
+void tetDihedralAngles(const double p0[3], const double p1[3], const double p2[3], const double p3[3], double angles[6])
 {
   const TetGeometry g(p0, p1, p2, p3);
   const bool degenerate = g.degenerateFace();
@@ -187,14 +204,13 @@ void tetDihedralAngles(
   }
 }
 
-void tetDihedralExtremes(
-  const double p0[3], const double p1[3], const double p2[3], const double p3[3], double& minAngle, double& maxAngle)
+void tetDihedralExtremes(const double p0[3], const double p1[3], const double p2[3], const double p3[3],
+                         double& minAngle, double& maxAngle)
 {
   dihedralExtremes(TetGeometry(p0, p1, p2, p3), minAngle, maxAngle);
 }
 
-void tetSolidAngles(
-  const double p0[3], const double p1[3], const double p2[3], const double p3[3], double omega[4])
+void tetSolidAngles(const double p0[3], const double p1[3], const double p2[3], const double p3[3], double omega[4])
 {
   const TetGeometry g(p0, p1, p2, p3);
   double l[6], d[4];
@@ -233,15 +249,14 @@ TriangleMetrics triangleMetrics(const double a[3], const double b[3], const doub
   return m;
 }
 
-template <typename Id>
+template<typename Id>
 void measureTets(const double* points, const Id* tets, int64_t begin, int64_t end, const TetMetricArrays& out)
 {
   for (int64_t t = begin; t < end; ++t)
   {
     const Id* v = tets + 4 * t;
-    const TetMetrics m = tetMetrics(points + 3 * static_cast<int64_t>(v[0]),
-      points + 3 * static_cast<int64_t>(v[1]), points + 3 * static_cast<int64_t>(v[2]),
-      points + 3 * static_cast<int64_t>(v[3]));
+    const TetMetrics m = tetMetrics(points + 3 * static_cast<int64_t>(v[0]), points + 3 * static_cast<int64_t>(v[1]),
+                                    points + 3 * static_cast<int64_t>(v[2]), points + 3 * static_cast<int64_t>(v[3]));
     if (out.aspectRatio)
       out.aspectRatio[t] = m.aspectRatio;
     if (out.minDihedralAngle)
@@ -268,7 +283,7 @@ void PointTets::reset(int64_t numPoints, int64_t numTets)
   Items.reset();
 }
 
-template <typename Id>
+template<typename Id>
 void PointTets::count(const Id* tets, int64_t pointBegin, int64_t pointEnd)
 {
   int64_t* counts = Offsets.data() + 1;
@@ -289,7 +304,7 @@ void PointTets::finishCounts()
   Items.reset(new int64_t[static_cast<size_t>(4 * NumTets)]);
 }
 
-template <typename Id>
+template<typename Id>
 void PointTets::fill(const Id* tets, int64_t pointBegin, int64_t pointEnd)
 {
   for (int64_t i = 0; i < 4 * NumTets; ++i)
@@ -304,16 +319,16 @@ void PointTets::fill(const Id* tets, int64_t pointBegin, int64_t pointEnd)
 
 namespace
 {
-template <typename Id>
+template<typename Id>
 inline bool holds(const Id* w, Id p)
 {
   return w[0] == p || w[1] == p || w[2] == p || w[3] == p;
 }
 } // namespace
 
-template <typename Id>
-void volumeGradient(const Id* tets, const double* volumes, const PointTets& incidence, int64_t begin,
-  int64_t end, double* gradient)
+template<typename Id>
+void volumeGradient(const Id* tets, const double* volumes, const PointTets& incidence, int64_t begin, int64_t end,
+                    double* gradient)
 {
   // The face neighbours of t are the tets other than t that share three of its points. Those sharing the
   // three faces through v0 are in v0's row and hold two of v1, v2, v3; those sharing the face opposite v0
@@ -344,10 +359,10 @@ void volumeGradient(const Id* tets, const double* volumes, const PointTets& inci
   }
 }
 
-#define VOLGRID_QUALITY_INSTANTIATE(Id)                                                                 \
-  template void measureTets<Id>(const double*, const Id*, int64_t, int64_t, const TetMetricArrays&);     \
-  template void PointTets::count<Id>(const Id*, int64_t, int64_t);                                     \
-  template void PointTets::fill<Id>(const Id*, int64_t, int64_t);                                      \
+#define VOLGRID_QUALITY_INSTANTIATE(Id)                                                                                \
+  template void measureTets<Id>(const double*, const Id*, int64_t, int64_t, const TetMetricArrays&);                   \
+  template void PointTets::count<Id>(const Id*, int64_t, int64_t);                                                     \
+  template void PointTets::fill<Id>(const Id*, int64_t, int64_t);                                                      \
   template void volumeGradient<Id>(const Id*, const double*, const PointTets&, int64_t, int64_t, double*);
 VOLGRID_QUALITY_INSTANTIATE(int)
 VOLGRID_QUALITY_INSTANTIATE(long)
@@ -362,10 +377,7 @@ struct HalfEdge
 {
   int64_t lo, hi, tri;
   bool forward; // lo -> hi in the triangle's orientation
-  bool operator<(const HalfEdge& o) const
-  {
-    return lo != o.lo ? lo < o.lo : (hi != o.hi ? hi < o.hi : tri < o.tri);
-  }
+  bool operator<(const HalfEdge& o) const { return lo != o.lo ? lo < o.lo : (hi != o.hi ? hi < o.hi : tri < o.tri); }
 };
 } // namespace
 
@@ -376,7 +388,7 @@ SurfaceSummary surfaceSummary(const double* points, int64_t numPoints, const int
   std::vector<HalfEdge> edges;
   edges.reserve(static_cast<size_t>(3 * numTris));
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-    std::numeric_limits<double>::max() };
+                   std::numeric_limits<double>::max() };
   double hi[3] = { -lo[0], -lo[1], -lo[2] };
   for (int64_t t = 0; t < numTris; ++t)
   {

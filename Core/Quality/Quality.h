@@ -71,15 +71,14 @@ double tetAspectRatio(const double p0[3], const double p1[3], const double p2[3]
 // inverted. Only ranks candidates: validity is always decided by the exact predicates.
 double tetShapeMeasure(const double p0[3], const double p1[3], const double p2[3], const double p3[3]);
 // The six dihedral angles in degrees, for edges (0,1) (0,2) (0,3) (1,2) (1,3) (2,3).
-void tetDihedralAngles(
-  const double p0[3], const double p1[3], const double p2[3], const double p3[3], double angles[6]);
+void tetDihedralAngles(const double p0[3], const double p1[3], const double p2[3], const double p3[3],
+                       double angles[6]);
 // The smallest and largest of the six dihedral angles in degrees (the same values as tetMetrics(); two
 // atan2 instead of six: the angles are ranked by their cosines).
-void tetDihedralExtremes(
-  const double p0[3], const double p1[3], const double p2[3], const double p3[3], double& minAngle, double& maxAngle);
+void tetDihedralExtremes(const double p0[3], const double p1[3], const double p2[3], const double p3[3],
+                         double& minAngle, double& maxAngle);
 // The solid angle at each vertex in steradians.
-void tetSolidAngles(
-  const double p0[3], const double p1[3], const double p2[3], const double p3[3], double omega[4]);
+void tetSolidAngles(const double p0[3], const double p1[3], const double p2[3], const double p3[3], double omega[4]);
 
 // Measures tets [begin, end) of a flat connectivity (4 point ids per tet) over flat xyz points and writes
 // each metric into its array at the tet's index (any output pointer may be null). Safe to call
@@ -94,21 +93,21 @@ struct TetMetricArrays
   double* radiusEdgeRatio = nullptr;
   double* radiusRatio = nullptr;
 };
-template <typename Id>
+template<typename Id>
 void measureTets(const double* points, const Id* tets, int64_t begin, int64_t end, const TetMetricArrays& out);
 
 // Surface-wide properties of a triangle surface (paper 8.2).
 struct SurfaceSummary
 {
-  int64_t elements = 0;          // triangles
-  double area = 0.0;             // sum of triangle areas
-  bool closed = false;           // every edge used by exactly two triangles
+  int64_t elements = 0;              // triangles
+  double area = 0.0;                 // sum of triangle areas
+  bool closed = false;               // every edge used by exactly two triangles
   bool consistentlyOriented = false; // every interior edge used once in each direction
-  double enclosedVolume = 0.0;   // signed (positive for outward normals); NaN unless closed and oriented
-  int64_t boundaryEdges = 0;     // edges used by one triangle
-  int64_t boundaryLoops = 0;     // connected components of the boundary-edge graph
-  int64_t nonManifoldEdges = 0;  // edges used by three or more triangles
-  int64_t shells = 0;            // components of triangles connected through shared edges
+  double enclosedVolume = 0.0;       // signed (positive for outward normals); NaN unless closed and oriented
+  int64_t boundaryEdges = 0;         // edges used by one triangle
+  int64_t boundaryLoops = 0;         // connected components of the boundary-edge graph
+  int64_t nonManifoldEdges = 0;      // edges used by three or more triangles
+  int64_t shells = 0;                // components of triangles connected through shared edges
 };
 // points: flat xyz; tris: 3 point ids per triangle. Ids must be in [0, numPoints).
 SurfaceSummary surfaceSummary(const double* points, int64_t numPoints, const int64_t* tris, int64_t numTris);
@@ -121,7 +120,7 @@ SurfaceSummary surfaceSummary(const double* points, int64_t numPoints, const int
 class PointTets
 {
 public:
-  template <typename Id>
+  template<typename Id>
   void build(const Id* tets, int64_t numTets, int64_t numPoints)
   {
     reset(numPoints, numTets);
@@ -130,10 +129,10 @@ public:
     fill(tets, 0, numPoints);
   }
   void reset(int64_t numPoints, int64_t numTets);
-  template <typename Id>
+  template<typename Id>
   void count(const Id* tets, int64_t pointBegin, int64_t pointEnd);
   void finishCounts();
-  template <typename Id>
+  template<typename Id>
   void fill(const Id* tets, int64_t pointBegin, int64_t pointEnd);
 
   const int64_t* begin(int64_t point) const { return Items.get() + Offsets[point]; }
@@ -151,9 +150,9 @@ private:
 // face with t (all of them if a face is shared by more than two); 0 for a tet without face neighbours.
 // A duplicate of t (the same four points) is not a face neighbour. Safe to call concurrently on disjoint
 // ranges; the result is exact, so it does not depend on the split or on the order within the rows.
-template <typename Id>
-void volumeGradient(const Id* tets, const double* volumes, const PointTets& incidence, int64_t begin,
-  int64_t end, double* gradient);
+template<typename Id>
+void volumeGradient(const Id* tets, const double* volumes, const PointTets& incidence, int64_t begin, int64_t end,
+                    double* gradient);
 
 } // namespace quality
 } // namespace volgrid

@@ -47,16 +47,17 @@ void histogram(const double* values, int64_t begin, int64_t end, const std::vect
 
 struct Statistics
 {
-  int64_t count = 0;   // measured (non-NaN) values
-  int64_t skipped = 0; // NaN values
+  int64_t count = 0;                                     // measured (non-NaN) values
+  int64_t skipped = 0;                                   // NaN values
   double min = 0.0, max = 0.0, mean = 0.0, stddev = 0.0; // NaN when count == 0
-  int64_t worstIndex = -1;                                // first index of the worst value
-  std::vector<double> binEdges;                           // numBins + 1
-  std::vector<int64_t> binCounts;                         // numBins, sum == count
+  int64_t worstIndex = -1;                               // first index of the worst value
+  std::vector<double> binEdges;                          // numBins + 1
+  std::vector<int64_t> binCounts;                        // numBins, sum == count
 };
 
 // Builds the Statistics from the merged partial and the summed histogram counts.
-Statistics finish(const Partial& all, int64_t size, Worst worst, std::vector<double> edges, std::vector<int64_t> counts);
+Statistics finish(const Partial& all, int64_t size, Worst worst, std::vector<double> edges,
+                  std::vector<int64_t> counts);
 
 // The serial reference: the same chunking, so the same bits as any threaded computation.
 Statistics computeStatistics(const double* values, int64_t size, int numBins, Worst worst);

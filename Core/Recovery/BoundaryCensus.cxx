@@ -77,8 +77,9 @@ void BoundaryCensus::take(const TetMesh& mesh, const int32_t* triangles, int32_t
 
 bool BoundaryCensus::upToDate(const MeshEditor& editor, const BoundaryConstraints& bc) const
 {
-  return edgesSwept_ && mesh_ == &editor.mesh && bc_ == &bc && edits_ == editor.edits && tetCapacity_ == editor.mesh.tetCapacity() &&
-    numTets_ == editor.mesh.numTets() && bcCapacity_ == bc.capacity() && bcAlive_ == bc.numAlive();
+  return edgesSwept_ && mesh_ == &editor.mesh && bc_ == &bc && edits_ == editor.edits &&
+    tetCapacity_ == editor.mesh.tetCapacity() && numTets_ == editor.mesh.numTets() && bcCapacity_ == bc.capacity() &&
+    bcAlive_ == bc.numAlive();
 }
 
 void BoundaryCensus::index(const int32_t* verts, int32_t count, const int32_t* parent, int32_t numVertices)
@@ -93,7 +94,8 @@ void BoundaryCensus::index(const int32_t* verts, int32_t count, const int32_t* p
   // Counting sort of the edges (each listed by both its subfaces) by smallest vertex; degenerate subfaces
   // (a repeated vertex) are left out.
   std::vector<int32_t> edgeStart(n + 1, 0), faceCount(n, 0);
-  auto sortedSubface = [&](int32_t f, int32_t& x, int32_t& y, int32_t& z) {
+  auto sortedSubface = [&](int32_t f, int32_t& x, int32_t& y, int32_t& z)
+  {
     x = verts[3 * static_cast<size_t>(f)];
     y = verts[3 * static_cast<size_t>(f) + 1];
     z = verts[3 * static_cast<size_t>(f) + 2];
@@ -172,7 +174,8 @@ void BoundaryCensus::sweep(const TetMesh& m, bool withEdges)
     // s0 and s1.
     int32_t s[4] = { w[0], w[1], w[2], w[3] };
     int li[4] = { 0, 1, 2, 3 };
-    auto order = [&](int i, int j) {
+    auto order = [&](int i, int j)
+    {
       const bool swap = s[i] > s[j];
       const int32_t lo = swap ? s[j] : s[i], hi = swap ? s[i] : s[j];
       const int a = swap ? li[j] : li[i], b = swap ? li[i] : li[j];

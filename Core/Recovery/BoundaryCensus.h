@@ -52,7 +52,7 @@ public:
   // Calls fn(f, a, b, id, first) for each edge ab of each live subface f of bc, in subface order, with
   // the edge's id (edgeId) and whether this is its first visit (an edge of two subfaces comes twice; an
   // edge without id, never present, is always a first visit).
-  template <class Fn>
+  template<class Fn>
   void forEachSubfaceEdge(const BoundaryConstraints& bc, Fn&& fn) const
   {
     std::vector<uint8_t> seen(data_.size(), 0);

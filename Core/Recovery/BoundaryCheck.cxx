@@ -78,7 +78,8 @@ std::string BoundaryCheckReport::summary() const
 }
 
 BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, int32_t numInputPoints,
-  const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles, double expected)
+                                            const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
+                                            double expected)
 {
   BoundaryCheckReport r;
   const int64_t np = static_cast<int64_t>(points.size() / 3);
@@ -92,7 +93,8 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
   std::vector<int64_t> events; // 8 * tet + slot (0 bad or inverted, 1 + face): notes in tet order
   Sum vol;
   std::vector<int64_t> start(static_cast<size_t>(np) + 1, 0);
-  auto faceOf = [&](uint32_t code, int32_t f[3]) {
+  auto faceOf = [&](uint32_t code, int32_t f[3])
+  {
     const int32_t* v = tets.data() + 4 * static_cast<int64_t>(code >> 2);
     const int* fv = TetMesh::kFaceVertex[code & 3];
     f[0] = v[fv[0]];
@@ -239,7 +241,7 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
 }
 
 double enclosedVolume(const std::vector<double>& points, const std::vector<int32_t>& triangles,
-  const std::vector<int32_t>& triangleShell, const std::vector<int>& shellDepth, RegionRule rule)
+                      const std::vector<int32_t>& triangleShell, const std::vector<int>& shellDepth, RegionRule rule)
 {
   const int32_t nt = static_cast<int32_t>(triangles.size() / 3);
   // Reference point: the box centre (reduces cancellation).

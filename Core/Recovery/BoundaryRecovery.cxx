@@ -11,8 +11,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <string>
 
@@ -109,7 +109,8 @@ public:
     const uint32_t s = ed_.newStamp();
     for (int32_t t : queue_)
       ed_.tetStamp[t] = s;
-    auto push = [&](int32_t u) {
+    auto push = [&](int32_t u)
+    {
       if (u >= 0 && ed_.tetStamp[u] != s)
       {
         ed_.tetStamp[u] = s;
@@ -182,7 +183,8 @@ public:
     const uint32_t s = ed_.newStamp();
     for (int32_t t : queue_)
       ed_.tetStamp[t] = s;
-    auto push = [&](int32_t u) {
+    auto push = [&](int32_t u)
+    {
       if (u >= 0 && ed_.tetStamp[u] != s)
       {
         ed_.tetStamp[u] = s;
@@ -350,9 +352,9 @@ public:
           continue;
         const std::array<int32_t, 2> chord = inPlaneChord(a, b, { t, c.a, c.b });
         if (!ed_.removeEdgeDeep(t, c.a, c.b, &bc_, &created, 2, chord) &&
-          (chord[0] < 0 || (t = ed_.findEdge(c.a, c.b)) < 0 ||
-            !flipInPlane(ed_, t, c.a, c.b, chord[0], chord[1], &bc_, &created, &kinds_)) &&
-          ((t = ed_.findEdge(c.a, c.b)) < 0 || !ed_.removeEdgeDeep(t, c.a, c.b, &bc_, &created, 2)))
+            (chord[0] < 0 || (t = ed_.findEdge(c.a, c.b)) < 0 ||
+             !flipInPlane(ed_, t, c.a, c.b, chord[0], chord[1], &bc_, &created, &kinds_)) &&
+            ((t = ed_.findEdge(c.a, c.b)) < 0 || !ed_.removeEdgeDeep(t, c.a, c.b, &bc_, &created, 2)))
           continue;
         if (ed_.findEdge(a, b) >= 0)
           return true;
@@ -437,7 +439,8 @@ public:
       const size_t m0 = edges.size();
       if (m0 == 0)
         return false;
-      auto better = [&]() {
+      auto better = [&]()
+      {
         if (ed_.findFace(a, b, c) >= 0)
           return true;
         return traceFacet(a, b, c, e2, nullptr) && e2.size() < m0;
@@ -507,7 +510,8 @@ public:
     if (traceSegment(a, b, faces, edges))
     {
       double bestCos = 2, bestT = 0.5;
-      auto consider = [&](int32_t q) {
+      auto consider = [&](int32_t q)
+      {
         if (q == a || q == b)
           return;
         const double* Q = m_.point(q);
@@ -597,9 +601,8 @@ public:
     if (++coneRounds_[seg] > kMaxConeRounds)
       return false;
     std::vector<int32_t> added; // points of this call, on the line too
-    auto onLine = [&](int32_t w) {
-      return w == a || w == b || std::find(added.begin(), added.end(), w) != added.end() || bc_.onSegment(w, seg);
-    };
+    auto onLine = [&](int32_t w)
+    { return w == a || w == b || std::find(added.begin(), added.end(), w) != added.end() || bc_.onSegment(w, seg); };
     int32_t from = a;
     bool any = false;
     for (size_t n = 0; n < maxPoints; ++n)
@@ -692,15 +695,15 @@ static constexpr int kMaxGrowingRounds = 3;
 static constexpr uint64_t kWorkPerMissingEdge = 1000, kWorkBase = 100000;
 
 Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
-  const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
+                       const RecoveryOptions& options, Progress* progress, RecoveryReport* report)
 {
   const auto t0 = std::chrono::steady_clock::now();
   SilentProgress silent;
   Progress* pr = progress ? progress : &silent;
   RecoveryReport rep;
   Recoverer rec(ed, bc, kinds);
-  const int64_t budget = options.maxSteinerPoints >= 0 ? options.maxSteinerPoints
-                                                       : 4 * static_cast<int64_t>(bc.numInputTriangles()) + 1000;
+  const int64_t budget =
+    options.maxSteinerPoints >= 0 ? options.maxSteinerPoints : 4 * static_cast<int64_t>(bc.numInputTriangles()) + 1000;
   const uint64_t f23 = ed.flips23, f32 = ed.flips32, fer = ed.flipsEdgeRemoval;
   std::vector<std::pair<int32_t, int32_t>> missingEdges;
   std::vector<int32_t> missingFaces;
@@ -716,7 +719,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   // (flips, then Steiner points) like the segments. Other triangles only need their segments: the cavity
   // retetrahedralization (FacetRecovery.h) triangulates their interior.
   std::vector<char> fallback(static_cast<size_t>(bc.numInputTriangles()), 0);
-  auto requiredEdge = [&](int32_t a, int32_t b) {
+  auto requiredEdge = [&](int32_t a, int32_t b)
+  {
     const std::array<int32_t, 2>* ef = bc.edgeFaces(a, b);
     if (!ef)
       return false;
@@ -729,15 +733,18 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   BoundaryCensus census;
   // Missing required subface edges, in subface order (the order recovery tries them in); `only`: those
   // on these input segments.
-  auto collectMissingEdges = [&](const std::unordered_set<uint64_t>* only) {
+  auto collectMissingEdges = [&](const std::unordered_set<uint64_t>* only)
+  {
     missingEdges.clear();
     if (!census.upToDate(ed, bc))
       census.take(ed, bc);
-    census.forEachSubfaceEdge(bc, [&](int32_t, int32_t a, int32_t b, int32_t id, bool first) {
-      if (first && (id < 0 || !census.edgePresent(id)) && requiredEdge(a, b) &&
-        (!only || only->count(bc.segmentOf(a, b))))
-        missingEdges.push_back({ a, b });
-    });
+    census.forEachSubfaceEdge(bc,
+                              [&](int32_t, int32_t a, int32_t b, int32_t id, bool first)
+                              {
+                                if (first && (id < 0 || !census.edgePresent(id)) && requiredEdge(a, b) &&
+                                    (!only || only->count(bc.segmentOf(a, b))))
+                                  missingEdges.push_back({ a, b });
+                              });
   };
   if (options.presplitSegments && !options.presplitSegments->empty() && options.allowSteiner)
   {
@@ -773,8 +780,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       if (report)
         *report = rep;
       return Status::failure(ErrorKind::RecoveryFailed,
-        "Boundary recovery failed: splitting the listed segments did not make them edges within " +
-          std::to_string(presplitBudget) + " Steiner points (needle-thin triangles).");
+                             "Boundary recovery failed: splitting the listed segments did not make them edges within " +
+                               std::to_string(presplitBudget) + " Steiner points (needle-thin triangles).");
     }
   }
   for (int round = 0; round < 100000; ++round)
@@ -825,7 +832,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
           continue;
         const int64_t before = rec.steinerSegment + rec.steinerFacet;
         if ((options.segmentCones && rec.splitEdgeByCones(a, b, static_cast<size_t>(budget - steinerUsed))) ||
-          rec.splitEdge(a, b))
+            rec.splitEdge(a, b))
         {
           steinerUsed += rec.steinerSegment + rec.steinerFacet - before;
           changed = true;
@@ -873,8 +880,8 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
               return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
           }
           if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats) &&
-            !recoverFacetByPieces(ed, bc, par, subs, &cavityStats) &&
-            !recoverFacetBySlab(ed, bc, par, subs, &cavityStats))
+              !recoverFacetByPieces(ed, bc, par, subs, &cavityStats) &&
+              !recoverFacetBySlab(ed, bc, par, subs, &cavityStats))
             fallback[static_cast<size_t>(par)] = 1;
         }
       }
@@ -926,15 +933,17 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       census.take(ed, bc);
     // A live subface none of whose edges was counted missing above, yet not a face, is a missing facet.
     std::vector<uint8_t> edgeMissing(static_cast<size_t>(bc.capacity()), 0);
-    census.forEachSubfaceEdge(bc, [&](int32_t f, int32_t, int32_t, int32_t id, bool first) {
-      if (first && (id < 0 || !census.edgePresent(id)))
-      {
-        ++rep.unrecoveredEdges;
-        edgeMissing[static_cast<size_t>(f)] = 1;
-        if (badEdges.size() < 5)
-          badEdges.push_back(bc.parent[f]);
-      }
-    });
+    census.forEachSubfaceEdge(bc,
+                              [&](int32_t f, int32_t, int32_t, int32_t id, bool first)
+                              {
+                                if (first && (id < 0 || !census.edgePresent(id)))
+                                {
+                                  ++rep.unrecoveredEdges;
+                                  edgeMissing[static_cast<size_t>(f)] = 1;
+                                  if (badEdges.size() < 5)
+                                    badEdges.push_back(bc.parent[f]);
+                                }
+                              });
     for (int32_t f = 0; f < bc.capacity(); ++f)
       if (bc.alive(f) && !edgeMissing[static_cast<size_t>(f)] && census.faceCode(f) < 0)
       {
@@ -959,15 +968,16 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     std::vector<int64_t> ids = badEdges;
     ids.insert(ids.end(), badFaces.begin(), badFaces.end());
     return Status::failure(ErrorKind::RecoveryFailed,
-      "Boundary recovery failed: " + std::to_string(rep.unrecoveredEdges) + " edge(s) and " +
-        std::to_string(rep.unrecoveredFacets) + " facet(s) could not be recovered (" +
-        std::to_string(steinerUsed) + " Steiner points used" +
-        (options.allowSteiner ? "" : ", Steiner points disabled") +
-        (outOfWork ? ", flip work budget exhausted"
-                   : growing >= kMaxGrowingRounds ? ", missing edges kept growing"
-                                                  : steinerUsed >= budget ? ", Steiner budget exhausted" : "") +
-        "); first input triangles listed.",
-      ids);
+                           "Boundary recovery failed: " + std::to_string(rep.unrecoveredEdges) + " edge(s) and " +
+                             std::to_string(rep.unrecoveredFacets) + " facet(s) could not be recovered (" +
+                             std::to_string(steinerUsed) + " Steiner points used" +
+                             (options.allowSteiner ? "" : ", Steiner points disabled") +
+                             (outOfWork                        ? ", flip work budget exhausted"
+                                : growing >= kMaxGrowingRounds ? ", missing edges kept growing"
+                                : steinerUsed >= budget        ? ", Steiner budget exhausted"
+                                                               : "") +
+                             "); first input triangles listed.",
+                           ids);
   }
   return Status::success();
 }

@@ -48,10 +48,9 @@
 namespace volgrid
 {
 
-
 struct RecoveryOptions
 {
-  bool allowSteiner = true;   // false: flips only (what flips cannot do is reported)
+  bool allowSteiner = true;      // false: flips only (what flips cannot do is reported)
   int64_t maxSteinerPoints = -1; // budget; -1 = automatic (4 x triangles + 1000)
   // Input segments (edgeKey of their end points) to split first, while the mesh is still Delaunay:
   // before any flip, their missing pieces are split by plain Delaunay insertion until every piece is an
@@ -72,10 +71,10 @@ struct RecoveryReport
   int64_t steinerSegment = 0;         // Steiner points put on input edges
   int64_t steinerFacet = 0;           // Steiner points put inside input triangles
   uint64_t flips23 = 0, flips32 = 0, flipsEdgeRemoval = 0;
-  int64_t facetCavities = 0;          // input triangles recovered by cavity retetrahedralization
+  int64_t facetCavities = 0;           // input triangles recovered by cavity retetrahedralization
   int64_t facetCavityEnlargements = 0; // tets added to those cavities for missing boundary faces
   int64_t unrecoveredEdges = 0, unrecoveredFacets = 0;
-  int64_t presplitPoints = 0;          // Steiner points of the presplit stage (part of steinerSegment)
+  int64_t presplitPoints = 0;                 // Steiner points of the presplit stage (part of steinerSegment)
   std::unordered_set<uint64_t> splitSegments; // input segments that received Steiner points
   double seconds = 0;
 };
@@ -83,6 +82,6 @@ struct RecoveryReport
 // Recover the boundary. `mesh` has no ghost tets; every vertex of the constraints is a mesh vertex;
 // `kinds` gives one VertexKind per mesh vertex and is extended for the Steiner points added.
 Status recoverBoundary(MeshEditor& editor, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
-  const RecoveryOptions& options, Progress* progress, RecoveryReport* report);
+                       const RecoveryOptions& options, Progress* progress, RecoveryReport* report);
 
 } // namespace volgrid

@@ -62,7 +62,7 @@ private:
     {
       const Face& g = front[i];
       if ((g[0] == f[0] || g[1] == f[0] || g[2] == f[0]) && (g[0] == f[1] || g[1] == f[1] || g[2] == f[1]) &&
-        (g[0] == f[2] || g[1] == f[2] || g[2] == f[2]))
+          (g[0] == f[2] || g[1] == f[2] || g[2] == f[2]))
         return static_cast<int>(i);
     }
     return -1;
@@ -156,8 +156,8 @@ private:
 } // namespace
 
 bool carveCavity(const TetMesh& mesh, const std::vector<std::array<int32_t, 3>>& faces,
-  const std::function<bool(int32_t, int32_t)>& edgeAllowed, int64_t maxSteps,
-  std::vector<std::array<int32_t, 4>>& tets)
+                 const std::function<bool(int32_t, int32_t)>& edgeAllowed, int64_t maxSteps,
+                 std::vector<std::array<int32_t, 4>>& tets)
 {
   if (faces.size() < 4)
     return false;

@@ -27,7 +27,7 @@ namespace volgrid
 // faces: the cavity's boundary, each seen positively from inside. edgeAllowed(u, v) is asked for every
 // edge a tet would add that is not an edge of `faces`. True with `tets` (positively oriented) on success.
 bool carveCavity(const TetMesh& mesh, const std::vector<std::array<int32_t, 3>>& faces,
-  const std::function<bool(int32_t, int32_t)>& edgeAllowed, int64_t maxSteps,
-  std::vector<std::array<int32_t, 4>>& tets);
+                 const std::function<bool(int32_t, int32_t)>& edgeAllowed, int64_t maxSteps,
+                 std::vector<std::array<int32_t, 4>>& tets);
 
 } // namespace volgrid

@@ -41,8 +41,8 @@ bool CavityInteriorPoint::find(int32_t p, const std::vector<std::array<int32_t, 
     normals_[i] = { { n[0], n[1], n[2] } };
     dist[i] = (P[0] - A[0]) * n[0] + (P[1] - A[1]) * n[1] + (P[2] - A[2]) * n[2];
     for (const double* X : { A, B, C })
-      L = std::max(L, std::sqrt((X[0] - P[0]) * (X[0] - P[0]) + (X[1] - P[1]) * (X[1] - P[1]) +
-                        (X[2] - P[2]) * (X[2] - P[2])));
+      L = std::max(
+        L, std::sqrt((X[0] - P[0]) * (X[0] - P[0]) + (X[1] - P[1]) * (X[1] - P[1]) + (X[2] - P[2]) * (X[2] - P[2])));
   }
   if (!(L > 0))
     return false;
@@ -126,8 +126,8 @@ bool CavityInteriorPoint::pickCandidate(const std::vector<std::array<int32_t, 3>
 bool CavityInteriorPoint::chebyshevCentre(const std::vector<double>& dist, double L, double* y)
 {
   const int nf = static_cast<int>(dist.size());
-  const int n = 7;           // y+ (3), y- (3), r
-  const int m = nf + 7;      // faces, |y_k| <= 1 (6), r <= 1
+  const int n = 7;            // y+ (3), y- (3), r
+  const int m = nf + 7;       // faces, |y_k| <= 1 (6), r <= 1
   const int cols = n + m + 1; // variables, slacks, right-hand side
   std::vector<double>& T = tableau_;
   T.assign(static_cast<size_t>(m + 1) * cols, 0.0);

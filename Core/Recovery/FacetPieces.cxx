@@ -35,14 +35,14 @@ double shapeOf(const double* a, const double* b, const double* c)
   const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
   const double area2 = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   const double l = std::max({ u[0] * u[0] + u[1] * u[1] + u[2] * u[2], v[0] * v[0] + v[1] * v[1] + v[2] * v[2],
-    w[0] * w[0] + w[1] * w[1] + w[2] * w[2] });
+                              w[0] * w[0] + w[1] * w[1] + w[2] * w[2] });
   return l > 0 ? area2 / l : 0;
 }
 
 // The border of the region covered by `subfaces` as one cycle starting at corner `a`, in the parent's
 // orientation. False when the border is not a single simple cycle through a or a vertex is inner.
 bool borderCycle(const BoundaryConstraints& bc, const std::vector<int32_t>& subfaces, int32_t a,
-  std::vector<int32_t>& cycle)
+                 std::vector<int32_t>& cycle)
 {
   std::unordered_map<uint64_t, int> uses;
   for (int32_t f : subfaces)
@@ -80,7 +80,7 @@ bool borderCycle(const BoundaryConstraints& bc, const std::vector<int32_t>& subf
 // projection and may not have their three corners on one side of the parent (`sides`: bit mask per
 // vertex). False when no such triangulation exists.
 bool chooseTriangulation(MeshEditor& ed, const std::vector<int32_t>& poly, const std::vector<int>& sides, int axis,
-  int o, std::vector<std::array<int32_t, 3>>& out)
+                         int o, std::vector<std::array<int32_t, 3>>& out)
 {
   const TetMesh& m = ed.mesh;
   const int n = static_cast<int>(poly.size());
@@ -101,7 +101,8 @@ bool chooseTriangulation(MeshEditor& ed, const std::vector<int32_t>& poly, const
           present[static_cast<size_t>(i * n + it->second)] = 1;
       }
   }
-  auto miss = [&](int i, int j) {
+  auto miss = [&](int i, int j)
+  {
     if (j == i + 1 || (i == 0 && j == n - 1))
       return 0;
     return present[static_cast<size_t>(i * n + j)] ? 0 : 1;
@@ -132,8 +133,8 @@ bool chooseTriangulation(MeshEditor& ed, const std::vector<int32_t>& poly, const
         const double *A = m.point(poly[i]), *B = m.point(poly[k]), *C = m.point(poly[j]);
         if (predicates::orient2dProjected(A, B, C, axis) != o)
           continue;
-        const double q = std::min({ shape[static_cast<size_t>(i * n + k)], shape[static_cast<size_t>(k * n + j)],
-          shapeOf(A, B, C) });
+        const double q =
+          std::min({ shape[static_cast<size_t>(i * n + k)], shape[static_cast<size_t>(k * n + j)], shapeOf(A, B, C) });
         if (c < bc || q > bq)
         {
           bc = c;
@@ -155,7 +156,7 @@ bool chooseTriangulation(MeshEditor& ed, const std::vector<int32_t>& poly, const
 } // namespace
 
 bool recoverFacetByPieces(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats)
+                          FacetCavityStats* stats)
 {
   if (subfaces.empty())
     return false;

@@ -14,6 +14,6 @@ namespace volgrid
 // are present is recovered by recoverSubfaceByCavity. Regions with inner vertices keep their subfaces.
 // True when every piece is a mesh face; the new subfaces are written back to `subfaces` in any case.
 bool recoverFacetByPieces(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats = nullptr);
+                          FacetCavityStats* stats = nullptr);
 
 } // namespace volgrid

@@ -55,8 +55,8 @@ struct OKeyHash
 struct BFace
 {
   int32_t v[3];
-  int32_t outer;     // mesh tet outside (-1: none)
-  int outerFace;     // its face index
+  int32_t outer; // mesh tet outside (-1: none)
+  int outerFace; // its face index
 };
 using FaceMap = std::unordered_map<TriKey, BFace, TriKeyHash>;
 
@@ -66,7 +66,7 @@ public:
   // corners: the plane and extent of R (the input triangle, or the single subface when `single`). A
   // single-subface region keeps every other constraint, its siblings included.
   FacetCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, const std::vector<int32_t>& subfaces,
-    const int32_t* corners, bool single, bool slab = false)
+              const int32_t* corners, bool single, bool slab = false)
     : ed_(ed)
     , m_(ed.mesh)
     , bc_(bc)
@@ -363,7 +363,7 @@ private:
   // Delaunay tetrahedralization of side s's cavity. 0: done (tets appended to newTets, the faces in R
   // to tri), 1: boundary faces missing (listed), -1: failure.
   int solveSide(int s, std::vector<std::array<int32_t, 4>>& newTets,
-    std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash>& tri, std::vector<TriKey>& missing)
+                std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash>& tri, std::vector<TriKey>& missing)
   {
     const FaceMap& fm = faces_[s];
     if (fm.empty())
@@ -530,13 +530,13 @@ private:
   {
     if (lm.tetCapacity() > kMaxRepairTets)
       return;
-    auto local = [&](int32_t g) {
-      return static_cast<int32_t>(std::lower_bound(verts.begin(), verts.end(), g) - verts.begin());
-    };
+    auto local = [&](int32_t g)
+    { return static_cast<int32_t>(std::lower_bound(verts.begin(), verts.end(), g) - verts.begin()); };
     std::vector<std::array<int32_t, 3>> want;
     for (auto& [k, bf] : fm)
       want.push_back({ { local(bf.v[0]), local(bf.v[1]), local(bf.v[2]) } });
-    auto score = [&](TetMesh& mesh) {
+    auto score = [&](TetMesh& mesh)
+    {
       MeshEditor e(mesh);
       int sc = 0;
       for (auto& f : want)
@@ -550,7 +550,8 @@ private:
       return sc;
     };
     // Every mesh one flip away from `from`.
-    auto neighbours = [](const TetMesh& from, std::vector<TetMesh>& out) {
+    auto neighbours = [](const TetMesh& from, std::vector<TetMesh>& out)
+    {
       static const int kEdge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
       out.clear();
       for (int32_t t = 0; t < from.tetCapacity(); ++t)
@@ -616,7 +617,7 @@ private:
   // rounded border point): if some vertex off R sees every other face of the side strictly (its boundary
   // faces and R's current subfaces), the side is the cone of those faces from it.
   bool coneSide(int s, std::vector<std::array<int32_t, 4>>& newTets,
-    std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash>& tri)
+                std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash>& tri)
   {
     std::vector<std::array<int32_t, 3>> faces;
     std::vector<int32_t> cand;
@@ -652,7 +653,7 @@ private:
       bool sees = true;
       for (auto& f : faces)
         if (f[0] != w && f[1] != w && f[2] != w &&
-          orient3d(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(w)) <= 0)
+            orient3d(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), m_.point(w)) <= 0)
         {
           sees = false;
           break;
@@ -702,7 +703,7 @@ private:
   // slab between the two triangulations (all its vertices on R's border) is filled by the Delaunay
   // tetrahedralization of its faces, and the upper triangulation becomes R's subfaces.
   bool fillSlab(const std::unordered_map<TriKey, std::array<int32_t, 3>, TriKeyHash> (&tri)[2],
-    std::vector<std::array<int32_t, 4>>& newTets)
+                std::vector<std::array<int32_t, 4>>& newTets)
   {
     std::vector<std::array<int32_t, 3>> faces;
     for (int s = 0; s < 2; ++s)
@@ -746,7 +747,7 @@ private:
 } // namespace
 
 bool fillCavityDelaunay(const TetMesh& m, const std::vector<std::array<int32_t, 3>>& faces,
-  std::vector<std::array<int32_t, 4>>& tets, std::vector<std::array<int32_t, 3>>* missing)
+                        std::vector<std::array<int32_t, 4>>& tets, std::vector<std::array<int32_t, 3>>* missing)
 {
   tets.clear();
   if (missing)
@@ -851,7 +852,7 @@ namespace
 // The whole-triangle cavity (slab: R's border vertices counted as on R); on success the subfaces of
 // `parent` are replaced by the triangulation of R the cavity produced.
 bool recoverWholeFacet(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats, bool slab)
+                       FacetCavityStats* stats, bool slab)
 {
   if (stats)
     ++stats->attempts;
@@ -876,13 +877,13 @@ bool recoverWholeFacet(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, 
 } // namespace
 
 bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats)
+                          FacetCavityStats* stats)
 {
   return recoverWholeFacet(ed, bc, parent, subfaces, stats, false);
 }
 
 bool recoverFacetBySlab(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats)
+                        FacetCavityStats* stats)
 {
   return recoverWholeFacet(ed, bc, parent, subfaces, stats, true);
 }

@@ -36,12 +36,13 @@ struct FacetCavityStats
 // retetrahedralization. On success the listed subfaces are replaced in `bc` by the new triangulation
 // (their ids are written back to `subfaces`) and true is returned.
 bool recoverFacetByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats = nullptr);
+                          FacetCavityStats* stats = nullptr);
 
 // Recover one subface (its three edges present) as its own triangle R = the subface: the same cavity
 // method, independent of whether its sibling subfaces are coplanar with it (segment Steiner points are
 // rounded, so the pieces of a split input triangle generally are not). Every other constraint is kept.
-bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t subface, FacetCavityStats* stats = nullptr);
+bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t subface,
+                            FacetCavityStats* stats = nullptr);
 
 // Recover input triangle `parent` whose split polygon is not planar (rounded segment Steiner points) when
 // neither the whole-triangle cavity nor the pieces work: the cavity method with R's border vertices counted
@@ -51,7 +52,7 @@ bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t sub
 // repaired by flips of that local tetrahedralization, or filled as the cone of its faces and R's current
 // subfaces from a vertex that sees them all, before its cavity is grown.
 bool recoverFacetBySlab(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
-  FacetCavityStats* stats = nullptr);
+                        FacetCavityStats* stats = nullptr);
 
 // Tetrahedralize a closed cavity given by its boundary faces, each oriented with the cavity on its
 // positive side (orient3d(f0,f1,f2,x) > 0 for x inside), every cavity vertex being a vertex of some
@@ -61,6 +62,7 @@ bool recoverFacetBySlab(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent,
 // `missing` (optional) receives the faces absent from the Delaunay tetrahedralization (as given), so
 // that the caller can grow the cavity across them and retry.
 bool fillCavityDelaunay(const TetMesh& mesh, const std::vector<std::array<int32_t, 3>>& faces,
-  std::vector<std::array<int32_t, 4>>& tets, std::vector<std::array<int32_t, 3>>* missing = nullptr);
+                        std::vector<std::array<int32_t, 4>>& tets,
+                        std::vector<std::array<int32_t, 3>>* missing = nullptr);
 
 } // namespace volgrid

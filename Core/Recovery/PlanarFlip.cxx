@@ -42,7 +42,7 @@ bool orientTowards(const TetMesh& m, Face& f, int32_t inside)
 // Fills the closed polyhedron `faces` (oriented inwards): the cone from one of `apexes` that sees every
 // face not through it, else the Delaunay fill.
 bool fillSide(const TetMesh& m, const std::vector<Face>& faces, const std::vector<int32_t>& apexes,
-  std::vector<std::array<int32_t, 4>>& out)
+              std::vector<std::array<int32_t, 4>>& out)
 {
   for (int32_t c : apexes)
   {
@@ -79,7 +79,7 @@ bool fillSide(const TetMesh& m, const std::vector<Face>& faces, const std::vecto
 // Candidates: between the centroids of the ring vertices and of the floor, then m moved towards each ring
 // vertex by shrinking amounts; each is checked exactly and the best-shaped cone among the valid wins.
 bool interiorPoint(const TetMesh& m, const std::vector<Face>& faces, const std::vector<int32_t>& chain,
-  const int32_t floor[4], double* out)
+                   const int32_t floor[4], double* out)
 {
   double top[3] = { 0, 0, 0 }, bottom[3] = { 0, 0, 0 }, mid[3];
   for (int32_t c : chain)
@@ -93,11 +93,11 @@ bool interiorPoint(const TetMesh& m, const std::vector<Face>& faces, const std::
   std::vector<std::array<double, 3>> cands;
   for (double t : { 0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.05 })
     cands.push_back({ { bottom[0] + t * (top[0] - bottom[0]), bottom[1] + t * (top[1] - bottom[1]),
-      bottom[2] + t * (top[2] - bottom[2]) } });
+                        bottom[2] + t * (top[2] - bottom[2]) } });
   for (int32_t r : chain)
     for (double t : { 0.5, 0.25, 0.1, 0.03, 0.01, 1e-3, 1e-4, 1e-6 })
       cands.push_back({ { mid[0] + t * (m.point(r)[0] - mid[0]), mid[1] + t * (m.point(r)[1] - mid[1]),
-        mid[2] + t * (m.point(r)[2] - mid[2]) } });
+                          mid[2] + t * (m.point(r)[2] - mid[2]) } });
   double bestQ = 0;
   bool found = false;
   for (const auto& cand : cands)
@@ -127,7 +127,7 @@ bool interiorPoint(const TetMesh& m, const std::vector<Face>& faces, const std::
 } // namespace
 
 bool flipInPlane(MeshEditor& ed, int32_t t, int32_t x, int32_t y, int32_t p, int32_t q, const BoundaryConstraints* bc,
-  std::vector<int32_t>* created, std::vector<VertexKind>* kinds)
+                 std::vector<int32_t>* created, std::vector<VertexKind>* kinds)
 {
   if (bc && (bc->isEdge(x, y) || bc->forbiddenEdge(p, q)))
     return false;
@@ -152,7 +152,8 @@ bool flipInPlane(MeshEditor& ed, int32_t t, int32_t x, int32_t y, int32_t p, int
       }
     if (u < 0)
       return false;
-    const double *X = ed.mesh.point(x), *Y = ed.mesh.point(y), *P = ed.mesh.point(p), *Q = ed.mesh.point(q), *U = ed.mesh.point(u);
+    const double *X = ed.mesh.point(x), *Y = ed.mesh.point(y), *P = ed.mesh.point(p), *Q = ed.mesh.point(q),
+                 *U = ed.mesh.point(u);
     if (orient3d(P, Q, U, X) * orient3d(P, Q, U, Y) >= 0 || orient3d(X, Y, U, P) * orient3d(X, Y, U, Q) >= 0)
       return false;
   }
@@ -216,7 +217,8 @@ bool flipInPlane(MeshEditor& ed, int32_t t, int32_t x, int32_t y, int32_t p, int
   }
   ed.lastRemoved.clear();
   for (int32_t u : tets)
-    ed.lastRemoved.push_back({ { ed.mesh.vertex(u, 0), ed.mesh.vertex(u, 1), ed.mesh.vertex(u, 2), ed.mesh.vertex(u, 3) } });
+    ed.lastRemoved.push_back(
+      { { ed.mesh.vertex(u, 0), ed.mesh.vertex(u, 1), ed.mesh.vertex(u, 2), ed.mesh.vertex(u, 3) } });
   if (!ed.replace(tets, fresh, created))
     return false;
   ed.lastRemovedIds = tets;

@@ -31,7 +31,7 @@ static bool sameCyclicOrder(const int32_t* f, const int32_t* s)
 }
 
 Status removeExterior(MeshEditor& ed, const BoundaryConstraints& bc, RegionRule rule, RegionResult& res,
-  Progress* progress)
+                      Progress* progress)
 {
   TetMesh& m = ed.mesh;
   SilentProgress silent;
@@ -51,8 +51,9 @@ Status removeExterior(MeshEditor& ed, const BoundaryConstraints& bc, RegionRule 
     const int i = code & 3;
     if (t < 0)
       return Status::failure(ErrorKind::InternalError,
-        "Exterior removal: boundary triangle " + std::to_string(bc.parent[f]) + " is not a face of the mesh.",
-        { bc.parent[f] });
+                             "Exterior removal: boundary triangle " + std::to_string(bc.parent[f]) +
+                               " is not a face of the mesh.",
+                             { bc.parent[f] });
     mask[t] |= static_cast<uint8_t>(1u << i);
     const int32_t u = m.neighbor(t, i);
     if (u >= 0)
@@ -155,7 +156,8 @@ Status removeExterior(MeshEditor& ed, const BoundaryConstraints& bc, RegionRule 
       if (c == exterior)
         continue;
       if (votesIn[c] > 0 && votesOut[c] > 0)
-        return Status::failure(ErrorKind::InvalidOption,
+        return Status::failure(
+          ErrorKind::InvalidOption,
           "Region rule 'orientation': the facets around one region point both into and out of it (" +
             std::to_string(votesIn[c]) + " and " + std::to_string(votesOut[c]) +
             " faces); orient the input consistently or use the even-odd rule.");
@@ -171,8 +173,9 @@ Status removeExterior(MeshEditor& ed, const BoundaryConstraints& bc, RegionRule 
       res.componentRegion[c] = res.numRegions++;
   if (res.numRegions == 0)
     return Status::failure(ErrorKind::InvalidOption,
-      std::string("No region of the domain is selected by the region rule '") + regionRuleName(rule) +
-        "' (with the orientation rule, facet normals must point away from the domain).");
+                           std::string("No region of the domain is selected by the region rule '") +
+                             regionRuleName(rule) +
+                             "' (with the orientation rule, facet normals must point away from the domain).");
   // Delete the others.
   res.tetRegion.assign(static_cast<size_t>(cap), -1);
   for (int32_t t = 0; t < cap; ++t)

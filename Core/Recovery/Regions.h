@@ -47,6 +47,6 @@ struct RegionResult
 
 // Classify and delete the tets outside the domain. Boundary faces are the live subfaces of `bc`.
 Status removeExterior(MeshEditor& editor, const BoundaryConstraints& bc, RegionRule rule, RegionResult& result,
-  Progress* progress = nullptr);
+                      Progress* progress = nullptr);
 
 } // namespace volgrid

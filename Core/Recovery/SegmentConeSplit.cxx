@@ -52,9 +52,9 @@ constexpr int kMaxGrowth = 64;
 
 struct Link
 {
-  int32_t tet;  // chain tet
-  int entry;    // face index through which the segment enters it (-1 for the first tet)
-  int exit;     // face index through which it leaves (-1 for the last tet)
+  int32_t tet; // chain tet
+  int entry;   // face index through which the segment enters it (-1 for the first tet)
+  int exit;    // face index through which it leaves (-1 for the last tet)
 };
 
 // The chain of tets the open segment ab crosses, from a to b. False when it passes through an edge or
@@ -147,9 +147,9 @@ public:
   std::vector<std::array<int32_t, 4>> tets;
 
   // allowed(w): may the apex be joined to w?
-  template <class Allowed>
+  template<class Allowed>
   bool build(const std::vector<int32_t>& seed, const double* apex, int32_t apexId, int32_t frozen, const Fan* fan,
-    const Allowed& allowed)
+             const Allowed& allowed)
   {
     const uint32_t s = ed_.newStamp();
     region = seed;
@@ -229,7 +229,7 @@ private:
           return false;
       for (const auto& e : kEdge)
         if (bc_.isEdge(v[e[0]], v[e[1]]) &&
-          !std::binary_search(keptEdges_.begin(), keptEdges_.end(), edgeKey(v[e[0]], v[e[1]])))
+            !std::binary_search(keptEdges_.begin(), keptEdges_.end(), edgeKey(v[e[0]], v[e[1]])))
           return false;
     }
     return true;
@@ -245,7 +245,7 @@ private:
 } // namespace
 
 ConeStep coneStepAlongSegment(MeshEditor& ed, const BoundaryConstraints& bc, int32_t a, int32_t b,
-  const std::function<bool(int32_t)>& onLine, int32_t* newPoint)
+                              const std::function<bool(int32_t)>& onLine, int32_t* newPoint)
 {
   TetMesh& m = ed.mesh;
   if (ed.findEdge(a, b) >= 0)
@@ -261,7 +261,8 @@ ConeStep coneStepAlongSegment(MeshEditor& ed, const BoundaryConstraints& bc, int
   std::vector<int32_t> seed;
   int32_t f[3];
   double E[3];
-  auto setSeed = [&](size_t n) {
+  auto setSeed = [&](size_t n)
+  {
     seed.clear();
     for (size_t k = 0; k < n; ++k)
       seed.push_back(chain[k].tet);
@@ -281,21 +282,22 @@ ConeStep coneStepAlongSegment(MeshEditor& ed, const BoundaryConstraints& bc, int
   // chain[0..j+1]. The longest j that works.
   auto fromE = [&](int32_t w) { return !onLine(w) || w == a || w == b; };
   // The tet beyond the exit face, coned from E (which lies in its entry face), added to the cavity.
-  auto coneBeyond = [&](int32_t t, int entry, int32_t eId) {
+  auto coneBeyond = [&](int32_t t, int entry, int32_t eId)
+  {
     for (int fi = 0; fi < 4; ++fi)
     {
       if (fi == entry)
         continue;
       m.faceVertices(t, fi, f);
-      if (!fromE(f[0]) || !fromE(f[1]) || !fromE(f[2]) ||
-        orient3d(m.point(f[0]), m.point(f[1]), m.point(f[2]), E) <= 0)
+      if (!fromE(f[0]) || !fromE(f[1]) || !fromE(f[2]) || orient3d(m.point(f[0]), m.point(f[1]), m.point(f[2]), E) <= 0)
         return false;
       cav.tets.push_back({ f[0], f[1], f[2], eId });
     }
     cav.region.push_back(t);
     return true;
   };
-  auto tryPiece = [&](size_t j, int32_t eId) {
+  auto tryPiece = [&](size_t j, int32_t eId)
+  {
     m.faceVertices(chain[j].tet, chain[j].exit, f);
     planeCrossing(m, f, A, B, E);
     setSeed(j + 1);
@@ -303,9 +305,9 @@ ConeStep coneStepAlongSegment(MeshEditor& ed, const BoundaryConstraints& bc, int
     const int32_t beyond = chain[j + 1].tet;
     // (the fan joins E to the crossed face's vertices: none may be on the line)
     if (!onLine(f[0]) && !onLine(f[1]) && !onLine(f[2]) &&
-      cav.build(seed, A, a, beyond, &fan,
-          [&](int32_t w) { return (!onLine(w) || bc.isEdge(a, w)) && !bc.forbiddenEdge(a, w); }) &&
-      coneBeyond(beyond, chain[j + 1].entry, eId))
+        cav.build(seed, A, a, beyond, &fan,
+                  [&](int32_t w) { return (!onLine(w) || bc.isEdge(a, w)) && !bc.forbiddenEdge(a, w); }) &&
+        coneBeyond(beyond, chain[j + 1].entry, eId))
       return true;
     setSeed(j + 2);
     return cav.build(seed, E, eId, -1, nullptr, fromE);

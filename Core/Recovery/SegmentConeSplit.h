@@ -40,6 +40,6 @@ enum class ConeStep
 // One step from a (see above). The caller registers the new point (vertex kind, subfaces) and goes on
 // from it.
 ConeStep coneStepAlongSegment(MeshEditor& editor, const BoundaryConstraints& bc, int32_t a, int32_t b,
-  const std::function<bool(int32_t)>& onLine, int32_t* newPoint);
+                              const std::function<bool(int32_t)>& onLine, int32_t* newPoint);
 
 } // namespace volgrid

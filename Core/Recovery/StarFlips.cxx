@@ -7,7 +7,7 @@ namespace volgrid
 {
 
 void starFlipCandidates(MeshEditor& ed, const BoundaryConstraints& bc, int32_t p,
-  std::vector<std::pair<int32_t, int32_t>>& out)
+                        std::vector<std::pair<int32_t, int32_t>>& out)
 {
   out.clear();
   std::vector<int32_t> star;
@@ -18,11 +18,12 @@ void starFlipCandidates(MeshEditor& ed, const BoundaryConstraints& bc, int32_t p
     {
       const int32_t u = ed.mesh.neighbor(t, i);
       if (u >= 0 && std::find(star.begin(), star.end(), u) == star.end() &&
-        std::find(layer.begin(), layer.end(), u) == layer.end())
+          std::find(layer.begin(), layer.end(), u) == layer.end())
         layer.push_back(u);
     }
   std::vector<uint64_t> seen;
-  auto add = [&](int32_t x, int32_t y, int pass) {
+  auto add = [&](int32_t x, int32_t y, int pass)
+  {
     const bool throughP = x == p || y == p;
     if ((pass == 0) != throughP || bc.isEdge(x, y))
       return;
@@ -43,7 +44,7 @@ void starFlipCandidates(MeshEditor& ed, const BoundaryConstraints& bc, int32_t p
 }
 
 bool removeEdgeKeepingRegion(MeshEditor& ed, const BoundaryConstraints& bc, int32_t x, int32_t y,
-  std::vector<int32_t>* tetRegion)
+                             std::vector<int32_t>* tetRegion)
 {
   const int32_t t = ed.findEdge(x, y);
   if (t < 0)

@@ -26,10 +26,10 @@ namespace volgrid
 // Edges (x, y) of the tets of p's star and of their face neighbours that are not boundary edges.
 // Edges through p come first, then those of the star's outer faces, then those one layer out.
 void starFlipCandidates(MeshEditor& editor, const BoundaryConstraints& bc, int32_t p,
-  std::vector<std::pair<int32_t, int32_t>>& out);
+                        std::vector<std::pair<int32_t, int32_t>>& out);
 
 // Edge removal of xy (when still an edge) with the region labels of tetRegion kept in step.
 bool removeEdgeKeepingRegion(MeshEditor& editor, const BoundaryConstraints& bc, int32_t x, int32_t y,
-  std::vector<int32_t>* tetRegion);
+                             std::vector<int32_t>* tetRegion);
 
 } // namespace volgrid

@@ -13,9 +13,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
-#include <string>
 
 namespace volgrid
 {
@@ -25,13 +25,12 @@ using predicates::orient3d;
 namespace
 {
 
-
 // Ear clipping of a polygon (point ids, counter-clockwise in the parent's orientation) in the projection
 // that drops `axis`; `o` is the sign of a counter-clockwise turn in that projection.
 // `allowed(a, c)` says whether diagonal ac may be created (not along a split segment).
-template <class Allowed>
+template<class Allowed>
 bool triangulatePolygon3(const TetMesh& m, std::vector<int32_t> poly, int axis, int o,
-  std::vector<std::array<int32_t, 3>>& out, const Allowed& allowed)
+                         std::vector<std::array<int32_t, 3>>& out, const Allowed& allowed)
 {
   while (poly.size() > 3)
   {
@@ -52,8 +51,8 @@ bool triangulatePolygon3(const TetMesh& m, std::vector<int32_t> poly, int axis, 
           continue;
         const double* W = m.point(w);
         if (predicates::orient2dProjected(A, B, W, axis) * o >= 0 &&
-          predicates::orient2dProjected(B, C, W, axis) * o >= 0 &&
-          predicates::orient2dProjected(C, A, W, axis) * o >= 0)
+            predicates::orient2dProjected(B, C, W, axis) * o >= 0 &&
+            predicates::orient2dProjected(C, A, W, axis) * o >= 0)
           empty = false;
       }
       if (!empty)
@@ -286,7 +285,8 @@ public:
       {
         // New edges may not run along a split segment, except the piece that replaces p's two pieces
         // (the ends of an open polygon).
-        auto allowed = [&](int32_t a, int32_t c) {
+        auto allowed = [&](int32_t a, int32_t c)
+        {
           if (!pl.closed && edgeKey(a, c) == edgeKey(pl.v.front(), pl.v.back()))
             return true;
           return !bc_.forbiddenEdge(a, c);
@@ -393,7 +393,6 @@ public:
           newTetSide.push_back(sd);
         }
       }
-
     }
     if (!good)
       return false;
@@ -474,7 +473,7 @@ private:
     }
     return true;
   }
-  std::vector<int32_t> cav;  // cavity tets: p's star, then enlargement layers
+  std::vector<int32_t> cav; // cavity tets: p's star, then enlargement layers
   std::vector<int32_t> cavSide;
 
   // Faces of side sd's cavity, each seen positively from inside: the faces of its tets that are not
@@ -483,8 +482,8 @@ private:
   // orientations (an empty part of the cavity) cancels. False when a new triangle has no orientation for
   // this side or a vertex of the cavity would end up strictly inside it.
   bool cavityFaces(int32_t p, int sd, const std::vector<std::array<int32_t, 3>>& newTris,
-    const std::vector<int32_t>& newTriParent, const std::map<int32_t, int>& sideOf,
-    std::vector<std::array<int32_t, 3>>& faces)
+                   const std::vector<int32_t>& newTriParent, const std::map<int32_t, int>& sideOf,
+                   std::vector<std::array<int32_t, 3>>& faces)
   {
     faces.clear();
     const uint32_t s = ed_.newStamp();
@@ -525,13 +524,13 @@ private:
     for (size_t a = 0; a < faces.size(); ++a)
       for (size_t b = a + 1; b < faces.size(); ++b)
         if (faces[a][0] >= 0 && faces[b][0] >= 0 &&
-          TriKey(faces[a][0], faces[a][1], faces[a][2]) == TriKey(faces[b][0], faces[b][1], faces[b][2]))
+            TriKey(faces[a][0], faces[a][1], faces[a][2]) == TriKey(faces[b][0], faces[b][1], faces[b][2]))
         {
           faces[a][0] = -1;
           faces[b][0] = -1;
         }
     faces.erase(std::remove_if(faces.begin(), faces.end(), [](const std::array<int32_t, 3>& x) { return x[0] < 0; }),
-      faces.end());
+                faces.end());
     // No vertex may become interior (it would be lost).
     for (int32_t v : verts_)
     {
@@ -675,7 +674,8 @@ private:
     verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
     // The cone must close up: each cavity face once, every other face of its tets twice (a cavity whose
     // boundary is not a simple surface, e.g. with zero-volume parts, fails this).
-    auto closes = [&](int32_t v) {
+    auto closes = [&](int32_t v)
+    {
       std::unordered_map<TriKey, int, TriKeyHash> count;
       for (auto& fc : faces)
       {
@@ -736,7 +736,8 @@ private:
   {
     if (faces.size() > kMaxCarveFaces)
       return false;
-    return carveCavity(m_, faces, [&](int32_t u, int32_t v) { return !bc_.forbiddenEdge(u, v); }, kMaxCarveSteps, tets);
+    return carveCavity(
+      m_, faces, [&](int32_t u, int32_t v) { return !bc_.forbiddenEdge(u, v); }, kMaxCarveSteps, tets);
   }
 
   MeshEditor& ed_;
@@ -753,7 +754,7 @@ private:
 constexpr size_t kMaxStarFlips = 200;
 
 Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
-  std::vector<int32_t>* tetRegion, Progress* progress, SteinerRemovalReport* report)
+                                   std::vector<int32_t>* tetRegion, Progress* progress, SteinerRemovalReport* report)
 {
   SilentProgress silent;
   Progress* pr = progress ? progress : &silent;
@@ -767,7 +768,8 @@ Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std:
   // Facet points first (their polygons are closed), then segment points; retry what failed while the
   // neighbourhood keeps changing.
   std::stable_sort(todo.begin(), todo.end(),
-    [&](int32_t a, int32_t b) { return kinds[a] == VertexKind::SteinerFacet && kinds[b] != VertexKind::SteinerFacet; });
+                   [&](int32_t a, int32_t b)
+                   { return kinds[a] == VertexKind::SteinerFacet && kinds[b] != VertexKind::SteinerFacet; });
   for (int pass = 0; pass < 4 && !todo.empty(); ++pass)
   {
     std::vector<int32_t> failed;
@@ -835,9 +837,10 @@ Status removeBoundarySteinerPoints(MeshEditor& ed, BoundaryConstraints& bc, std:
     *report = rep;
   if (rep.remaining > 0)
     return Status::failure(ErrorKind::RecoveryFailed,
-      std::to_string(rep.remaining) + " Steiner point(s) added on the boundary during recovery could not be "
-        "removed; the boundary would not equal the input (first vertex ids listed).",
-      std::vector<int64_t>(rep.firstRemaining.begin(), rep.firstRemaining.end()));
+                           std::to_string(rep.remaining) +
+                             " Steiner point(s) added on the boundary during recovery could not be "
+                             "removed; the boundary would not equal the input (first vertex ids listed).",
+                           std::vector<int64_t>(rep.firstRemaining.begin(), rep.firstRemaining.end()));
   return Status::success();
 }
 

@@ -35,15 +35,15 @@ namespace volgrid
 
 struct SteinerRemovalReport
 {
-  int64_t boundaryBefore = 0;  // boundary Steiner points present before
-  int64_t removed = 0;         // removed from the boundary (relocated inside)
-  int64_t remaining = 0;       // could not be removed
-  int64_t addedInterior = 0;   // extra interior points for the second side of a two-sided interface
+  int64_t boundaryBefore = 0;          // boundary Steiner points present before
+  int64_t removed = 0;                 // removed from the boundary (relocated inside)
+  int64_t remaining = 0;               // could not be removed
+  int64_t addedInterior = 0;           // extra interior points for the second side of a two-sided interface
   std::vector<int32_t> firstRemaining; // vertex ids
 };
 
 // tetRegion: per tet slot labels (kept in step with the new tets; may be null).
 Status removeBoundarySteinerPoints(MeshEditor& editor, BoundaryConstraints& bc, std::vector<VertexKind>& kinds,
-  std::vector<int32_t>* tetRegion, Progress* progress, SteinerRemovalReport* report);
+                                   std::vector<int32_t>* tetRegion, Progress* progress, SteinerRemovalReport* report);
 
 } // namespace volgrid

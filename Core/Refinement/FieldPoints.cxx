@@ -20,7 +20,9 @@ inline double volume(const double* a, const double* b, const double* c, const do
   const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
   const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
   const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6.0;
+  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+          u[2] * (v[0] * w[1] - v[1] * w[0])) /
+    6.0;
 }
 double secondsSince(std::chrono::steady_clock::time_point t0)
 {
@@ -29,12 +31,13 @@ double secondsSince(std::chrono::steady_clock::time_point t0)
 } // namespace
 
 Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options,
-  const FaceConstraints* constraints, std::vector<int32_t>* labels, const std::function<bool(const double*)>& inside,
-  Progress* progress, FieldPointReport* reportOut)
+                         const FaceConstraints* constraints, std::vector<int32_t>* labels,
+                         const std::function<bool(const double*)>& inside, Progress* progress,
+                         FieldPointReport* reportOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (!(options.alpha > 0) || !std::isfinite(options.alpha) || !(options.beta >= 0) || !std::isfinite(options.beta) ||
-    !(options.maxVolume >= 0))
+      !(options.maxVolume >= 0))
     return Status::failure(ErrorKind::InvalidOption, "Field points need alpha > 0, beta >= 0 and maxVolume >= 0.");
   if (mesh.numGhostTets() > 0)
     return Status::failure(ErrorKind::InvalidOption, "Field points are inserted into a mesh without ghost tets.");
@@ -49,10 +52,12 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
   {
     // Tets to examine: those created by the previous pass (all tets in the first).
     todo.clear();
-    mesh.forEachTet([&](int32_t t) {
-      if (birth[t] == pass - 1)
-        todo.push_back(t);
-    });
+    mesh.forEachTet(
+      [&](int32_t t)
+      {
+        if (birth[t] == pass - 1)
+          todo.push_back(t);
+      });
     int64_t insertedThisPass = 0;
     size_t k = 0;
     for (int32_t t : todo)
@@ -68,7 +73,7 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
       const int32_t* v = mesh.vertices(t);
       const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]), *d = mesh.point(v[3]);
       const double cen[3] = { (a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
-        (a[2] + b[2] + c[2] + d[2]) / 4 };
+                              (a[2] + b[2] + c[2] + d[2]) / 4 };
       double h = sizing.evaluate(cen);
       if (hVol > 0)
         h = std::min(h, hVol);
@@ -114,8 +119,8 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
 }
 
 Status insertClusterPoints(TetMesh& mesh, const double* xyz, size_t n, double minSpacing,
-  const FaceConstraints* constraints, std::vector<int32_t>* labels, std::vector<int32_t>* vertexIds,
-  Progress* progress, FieldPointReport* reportOut)
+                           const FaceConstraints* constraints, std::vector<int32_t>* labels,
+                           std::vector<int32_t>* vertexIds, Progress* progress, FieldPointReport* reportOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (mesh.numGhostTets() > 0)
@@ -128,10 +133,12 @@ Status insertClusterPoints(TetMesh& mesh, const double* xyz, size_t n, double mi
   if (vertexIds)
     vertexIds->assign(n, -1);
   int32_t hint = -1;
-  mesh.forEachTet([&](int32_t t) {
-    if (hint < 0)
-      hint = t;
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      if (hint < 0)
+        hint = t;
+    });
   std::vector<int32_t> created;
   for (size_t i = 0; i < n; ++i)
   {

@@ -42,8 +42,8 @@ struct FieldPointOptions
 {
   double alpha = option::alpha.defaultValue; // eq. 4 (> 0): larger = fewer points
   double beta = option::beta.defaultValue;   // eq. 5 (>= 0): minimum spacing in units of h
-  int maxPasses = 64;      // pass cap
-  int64_t maxPoints = -1;  // cap on inserted points; -1 = none
+  int maxPasses = 64;                        // pass cap
+  int64_t maxPoints = -1;                    // cap on inserted points; -1 = none
   // Global cap on tet volume (0 = none): h is capped at the edge of the regular tet of that volume, and
   // tets larger than maxVolume skip the eq. 4 test (eq. 5 still applies).
   double maxVolume = 0;
@@ -53,14 +53,14 @@ struct FieldPointReport
 {
   int passes = 0;
   int64_t inserted = 0;
-  int64_t candidates = 0;       // centroids that passed eq. 4
-  int64_t rejectedSpacing = 0;  // eq. 5
-  int64_t rejectedOther = 0;    // outside (inside() false), no valid cavity
+  int64_t candidates = 0;      // centroids that passed eq. 4
+  int64_t rejectedSpacing = 0; // eq. 5
+  int64_t rejectedOther = 0;   // outside (inside() false), no valid cavity
   std::vector<int64_t> insertedPerPass;
   // Clustering.
   int64_t clusterInserted = 0;
-  int64_t clusterOutside = 0;   // outside the mesh or on its boundary
-  int64_t clusterRejected = 0;  // too close to a vertex (duplicates) or no valid cavity
+  int64_t clusterOutside = 0;  // outside the mesh or on its boundary
+  int64_t clusterRejected = 0; // too close to a vertex (duplicates) or no valid cavity
   double seconds = 0;
 };
 
@@ -69,9 +69,9 @@ struct FieldPointReport
 // centroid (for the before-recovery order); null = every tet is in the domain.
 // Errors: InvalidOption (alpha <= 0, beta < 0, mesh with ghost tets), Cancelled.
 Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options,
-  const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr,
-  const std::function<bool(const double*)>& inside = nullptr, Progress* progress = nullptr,
-  FieldPointReport* report = nullptr);
+                         const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr,
+                         const std::function<bool(const double*)>& inside = nullptr, Progress* progress = nullptr,
+                         FieldPointReport* report = nullptr);
 
 // Clustering (paper section 2, "a cluster of points"): insert user points into a ghost-free mesh. Points
 // outside the mesh, on a constrained face, or closer than minSpacing to a vertex (exact duplicates are
@@ -79,7 +79,8 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
 // in the SizingField (SizingField::addSizedPoints) and insert field points after this call.
 // vertexIds (optional) receives the mesh vertex of each point, -1 when skipped.
 Status insertClusterPoints(TetMesh& mesh, const double* xyz, size_t n, double minSpacing,
-  const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr,
-  std::vector<int32_t>* vertexIds = nullptr, Progress* progress = nullptr, FieldPointReport* report = nullptr);
+                           const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr,
+                           std::vector<int32_t>* vertexIds = nullptr, Progress* progress = nullptr,
+                           FieldPointReport* report = nullptr);
 
 } // namespace volgrid

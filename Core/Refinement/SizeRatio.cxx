@@ -94,25 +94,29 @@ SizeRatioSummary summarizeSizeRatios(const TetMesh& mesh, double threshold)
 {
   SizeRatioSummary s;
   std::vector<double> size(static_cast<size_t>(mesh.tetCapacity()), 0);
-  mesh.forEachTet([&](int32_t t) {
-    if (!mesh.isGhost(t))
-      size[t] = meanEdge(mesh.points.data(), mesh.vertices(t));
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      if (!mesh.isGhost(t))
+        size[t] = meanEdge(mesh.points.data(), mesh.vertices(t));
+    });
   std::vector<float> ratios;
   ratios.reserve(2 * static_cast<size_t>(mesh.numTets()));
-  mesh.forEachTet([&](int32_t t) {
-    if (mesh.isGhost(t))
-      return;
-    for (int i = 0; i < 4; ++i)
+  mesh.forEachTet(
+    [&](int32_t t)
     {
-      const int32_t u = mesh.neighbor(t, i);
-      if (u < t || mesh.isGhost(u)) // no neighbour (< 0), or the face is counted from its lower tet
-        continue;
-      const double r = ratioOf(size[t], size[u]);
-      ratios.push_back(static_cast<float>(r));
-      s.aboveThreshold += threshold > 0 && r > threshold;
-    }
-  });
+      if (mesh.isGhost(t))
+        return;
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(t, i);
+        if (u < t || mesh.isGhost(u)) // no neighbour (< 0), or the face is counted from its lower tet
+          continue;
+        const double r = ratioOf(size[t], size[u]);
+        ratios.push_back(static_cast<float>(r));
+        s.aboveThreshold += threshold > 0 && r > threshold;
+      }
+    });
   summarize(ratios, s);
   return s;
 }

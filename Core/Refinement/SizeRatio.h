@@ -17,7 +17,7 @@ class TetMesh;
 
 struct SizeRatioSummary
 {
-  int64_t faces = 0;          // interior faces measured
+  int64_t faces = 0; // interior faces measured
   double median = 1, p99 = 1, max = 1;
   int64_t aboveThreshold = 0; // faces whose ratio is strictly above `threshold`
 };

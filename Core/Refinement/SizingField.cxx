@@ -50,7 +50,8 @@ Status LinearInterpolant::build(const double* xyz, size_t n, const double* value
   for (size_t i = 0; i < n; ++i)
     if (!std::isfinite(values[i]))
       return Status::failure(ErrorKind::InvalidOption,
-        "The sizing interpolant got a non-finite value at point " + std::to_string(i) + ".", { int64_t(i) });
+                             "The sizing interpolant got a non-finite value at point " + std::to_string(i) + ".",
+                             { int64_t(i) });
   std::vector<int32_t> inputToVertex;
   DelaunayOptions opt;
   Status st = n >= 4 ? buildDelaunay(xyz, n, opt, mesh_, inputToVertex, progress)
@@ -119,7 +120,8 @@ double LinearInterpolant::evaluate(const double* p) const
       const double *a = mesh_.point(f[0]), *b = mesh_.point(f[1]), *c = mesh_.point(f[2]);
       const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
       const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-      const double nrm[3] = { ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0] };
+      const double nrm[3] = { ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                              ab[0] * ac[1] - ab[1] * ac[0] };
       const double nn = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
       double w[3];
       const double* q[3] = { a, b, c };
@@ -129,7 +131,8 @@ double LinearInterpolant::evaluate(const double* p) const
         const double* s = q[(k + 2) % 3];
         const double e1[3] = { u[0] - p[0], u[1] - p[1], u[2] - p[2] };
         const double e2[3] = { s[0] - p[0], s[1] - p[1], s[2] - p[2] };
-        const double cr[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+        const double cr[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                               e1[0] * e2[1] - e1[1] * e2[0] };
         w[k] = nn > 0 ? std::max(0.0, (cr[0] * nrm[0] + cr[1] * nrm[1] + cr[2] * nrm[2]) / nn) : 1.0;
       }
       const double sw = w[0] + w[1] + w[2];
@@ -186,8 +189,8 @@ double LinearInterpolant::evaluate(const double* p) const
 }
 
 // ---------------------------------------------------------------------------------------------------------
-std::vector<double> pointDistributionFunction(
-  const double* points, int32_t numPoints, const int32_t* triangles, int32_t numTriangles)
+std::vector<double> pointDistributionFunction(const double* points, int32_t numPoints, const int32_t* triangles,
+                                              int32_t numTriangles)
 {
   std::vector<std::pair<int32_t, int32_t>> edges;
   edges.reserve(3 * static_cast<size_t>(numTriangles));
@@ -226,15 +229,17 @@ void limitGradation(const TetMesh& mesh, double slope, std::vector<double>& size
   // Edge lists (CSR) from the finite tets.
   std::vector<std::pair<int32_t, int32_t>> edges;
   edges.reserve(7 * static_cast<size_t>(mesh.numFiniteTets()));
-  mesh.forEachFiniteTet([&](int32_t t) {
-    const int32_t* v = mesh.vertices(t);
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-      {
-        const int32_t a = std::min(v[i], v[j]), b = std::max(v[i], v[j]);
-        edges.emplace_back(a, b);
-      }
-  });
+  mesh.forEachFiniteTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+          const int32_t a = std::min(v[i], v[j]), b = std::max(v[i], v[j]);
+          edges.emplace_back(a, b);
+        }
+    });
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   std::vector<int32_t> start(static_cast<size_t>(nv) + 1, 0), adj(2 * edges.size());
@@ -322,15 +327,15 @@ double SizingField::userSize(const double* p) const
 static Status checkOptions(const SizingOptions& o)
 {
   if (!std::isfinite(o.gradation) || !(o.maxEdgeLength >= 0) || !std::isfinite(o.maxEdgeLength) ||
-    !(o.minEdgeLength >= 0) || !std::isfinite(o.minEdgeLength) || !(o.scale > 0) || !std::isfinite(o.scale) ||
-    (o.maxEdgeLength > 0 && o.minEdgeLength > o.maxEdgeLength))
+      !(o.minEdgeLength >= 0) || !std::isfinite(o.minEdgeLength) || !(o.scale > 0) || !std::isfinite(o.scale) ||
+      (o.maxEdgeLength > 0 && o.minEdgeLength > o.maxEdgeLength))
     return Status::failure(ErrorKind::InvalidOption,
-      "Sizing options must be finite, with scale > 0, edge-length bounds >= 0 and min <= max.");
+                           "Sizing options must be finite, with scale > 0, edge-length bounds >= 0 and min <= max.");
   return Status::success();
 }
 
 Status SizingField::build(const double* points, int32_t numPoints, const int32_t* triangles, int32_t numTriangles,
-  const SizingOptions& options, Progress* progress)
+                          const SizingOptions& options, Progress* progress)
 {
   Status st = checkOptions(options);
   if (!st.ok())

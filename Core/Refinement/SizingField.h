@@ -78,7 +78,7 @@ private:
 // Paper eq. 3: per point, the mean length of the distinct triangle edges incident to it. Points used by no
 // triangle get 0.
 std::vector<double> pointDistributionFunction(const double* points, int32_t numPoints, const int32_t* triangles,
-  int32_t numTriangles);
+                                              int32_t numTriangles);
 
 class SizingField
 {
@@ -95,7 +95,7 @@ public:
   // Build from the boundary surface (points and triangles; points used by no triangle are ignored).
   // Errors: EmptyInput (no triangle and no sized point), InvalidOption (bad option values).
   Status build(const double* points, int32_t numPoints, const int32_t* triangles, int32_t numTriangles,
-    const SizingOptions& options, Progress* progress = nullptr);
+               const SizingOptions& options, Progress* progress = nullptr);
 
   // A uniform field (no surface): h = size everywhere, with the same caps and user inputs.
   Status buildUniform(double size, const SizingOptions& options);

@@ -15,7 +15,8 @@ Status checkCoordinateRange(const SurfaceMesh& surface, const std::string& what)
     const double largest = std::fmax(std::fabs(p[0]), std::fmax(std::fabs(p[1]), std::fabs(p[2])));
     if (largest > kMaxCoordinateMagnitude)
     {
-      std::snprintf(text, sizeof text,
+      std::snprintf(
+        text, sizeof text,
         ": point %d has a coordinate of magnitude %.3g; coordinates up to %.0e are supported (sizes and volumes "
         "would overflow): scale the model down",
         static_cast<int>(i), largest, kMaxCoordinateMagnitude);
@@ -26,7 +27,8 @@ Status checkCoordinateRange(const SurfaceMesh& surface, const std::string& what)
   const double extent = box.valid ? box.diagonal() : 0;
   if (box.valid && extent < kMinModelExtent)
   {
-    std::snprintf(text, sizeof text,
+    std::snprintf(
+      text, sizeof text,
       ": the model is only %.3g across; at least %.0e is needed (sizes and volumes would underflow): scale it up",
       extent, kMinModelExtent);
     return Status::failure(ErrorKind::InvalidOption, what + text);

@@ -15,10 +15,12 @@ const double kPi = 3.14159265358979323846;
 // Appends triangles joining two closed rings of point ids with uniform angular spacing (both starting
 // at angle 0, counter-clockwise about the local +z axis). With `lower` below (or outside) `upper`, the
 // triangles face away from the axis (or toward +z for rings in one plane with `lower` outside).
-void zipRings(SurfaceMesh& m, const std::vector<int32_t>& lower, const std::vector<int32_t>& upper, bool flip, int32_t patch)
+void zipRings(SurfaceMesh& m, const std::vector<int32_t>& lower, const std::vector<int32_t>& upper, bool flip,
+              int32_t patch)
 {
   const int64_t na = static_cast<int64_t>(lower.size()), nb = static_cast<int64_t>(upper.size());
-  auto add = [&](int32_t a, int32_t b, int32_t c) {
+  auto add = [&](int32_t a, int32_t b, int32_t c)
+  {
     if (flip)
     {
       m.addTriangle(a, c, b, patch);
@@ -87,7 +89,7 @@ std::vector<int32_t> ring(SurfaceMesh& m, const Frame& f, double radius, double 
 
 // A disk of concentric rings inside `outer` (radius R at height z); faces +z unless flip.
 void disk(SurfaceMesh& m, const Frame& f, const std::vector<int32_t>& outer, double radius, double z, double h,
-  bool flip, int32_t patch)
+          bool flip, int32_t patch)
 {
   const int64_t n = static_cast<int64_t>(outer.size());
   const int64_t rings = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(radius / h)));
@@ -105,11 +107,12 @@ void disk(SurfaceMesh& m, const Frame& f, const std::vector<int32_t>& outer, dou
 void icosphere(SurfaceMesh& m, int64_t freq, int32_t patch)
 {
   const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-  const double v[12][3] = { { -1, g, 0 }, { 1, g, 0 }, { -1, -g, 0 }, { 1, -g, 0 }, { 0, -1, g }, { 0, 1, g },
-    { 0, -1, -g }, { 0, 1, -g }, { g, 0, -1 }, { g, 0, 1 }, { -g, 0, -1 }, { -g, 0, 1 } };
-  const int f[20][3] = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 }, { 1, 5, 9 },
-    { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 },
-    { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  const double v[12][3] = { { -1, g, 0 },  { 1, g, 0 },  { -1, -g, 0 }, { 1, -g, 0 }, { 0, -1, g },  { 0, 1, g },
+                            { 0, -1, -g }, { 0, 1, -g }, { g, 0, -1 },  { g, 0, 1 },  { -g, 0, -1 }, { -g, 0, 1 } };
+  const int f[20][3] = { { 0, 11, 5 }, { 0, 5, 1 },  { 0, 1, 7 },   { 0, 7, 10 }, { 0, 10, 11 },
+                         { 1, 5, 9 },  { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 },
+                         { 3, 9, 4 },  { 3, 4, 2 },  { 3, 2, 6 },   { 3, 6, 8 },  { 3, 8, 9 },
+                         { 4, 9, 5 },  { 2, 4, 11 }, { 6, 2, 10 },  { 8, 6, 7 },  { 9, 8, 1 } };
   const double n = static_cast<double>(freq);
   for (const auto& face : f)
   {
@@ -213,11 +216,16 @@ double enclosureExactVolume(const EnclosureOptions& o)
   const double* d = o.dimensions;
   switch (o.shape)
   {
-    case EnclosureShape::Box: return d[0] * d[1] * d[2];
-    case EnclosureShape::Sphere: return 4.0 / 3.0 * kPi * d[0] * d[0] * d[0];
-    case EnclosureShape::Ellipsoid: return 4.0 / 3.0 * kPi * d[0] * d[1] * d[2];
-    case EnclosureShape::Cylinder: return kPi * d[0] * d[0] * d[1];
-    case EnclosureShape::Hemisphere: return 2.0 / 3.0 * kPi * d[0] * d[0] * d[0];
+    case EnclosureShape::Box:
+      return d[0] * d[1] * d[2];
+    case EnclosureShape::Sphere:
+      return 4.0 / 3.0 * kPi * d[0] * d[0] * d[0];
+    case EnclosureShape::Ellipsoid:
+      return 4.0 / 3.0 * kPi * d[0] * d[1] * d[2];
+    case EnclosureShape::Cylinder:
+      return kPi * d[0] * d[0] * d[1];
+    case EnclosureShape::Hemisphere:
+      return 2.0 / 3.0 * kPi * d[0] * d[0] * d[0];
   }
   return 0.0;
 }
@@ -233,9 +241,14 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
   switch (o.shape)
   {
     case EnclosureShape::Box:
-    case EnclosureShape::Ellipsoid: needed = 3; break;
-    case EnclosureShape::Cylinder: needed = 2; break;
-    default: break;
+    case EnclosureShape::Ellipsoid:
+      needed = 3;
+      break;
+    case EnclosureShape::Cylinder:
+      needed = 2;
+      break;
+    default:
+      break;
   }
   double size = 0;
   for (int k = 0; k < needed; ++k)
@@ -258,8 +271,8 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
   if (!std::isfinite(h) || (reference / h) > 3000.0)
   {
     return Status::failure(ErrorKind::InvalidOption,
-      "enclosure target edge length " + std::to_string(o.targetEdgeLength) + " is too small for size " +
-        std::to_string(reference) + " (more than ~20 M triangles)");
+                           "enclosure target edge length " + std::to_string(o.targetEdgeLength) +
+                             " is too small for size " + std::to_string(reference) + " (more than ~20 M triangles)");
   }
   const int32_t patch = o.patchId;
   if (patch >= 0)
@@ -277,8 +290,10 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
       {
         n[k] = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(d[k] / h)));
       }
-      auto coord = [&](int k, int64_t i) {
-        return i == n[k] ? c[k] + 0.5 * d[k] : c[k] - 0.5 * d[k] + d[k] * static_cast<double>(i) / static_cast<double>(n[k]);
+      auto coord = [&](int k, int64_t i)
+      {
+        return i == n[k] ? c[k] + 0.5 * d[k]
+                         : c[k] - 0.5 * d[k] + d[k] * static_cast<double>(i) / static_cast<double>(n[k]);
       };
       // Each face: fixed axis k at side s, grid over axes u = k+1, v = k+2 (cyclic).
       for (int k = 0; k < 3; ++k)
@@ -310,13 +325,29 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
               const bool alt = ((i + j) & 1) != 0;
               if (side)
               {
-                if (alt) { m.addTriangle(a, b, e, patch); m.addTriangle(a, e, f, patch); }
-                else { m.addTriangle(a, b, f, patch); m.addTriangle(b, e, f, patch); }
+                if (alt)
+                {
+                  m.addTriangle(a, b, e, patch);
+                  m.addTriangle(a, e, f, patch);
+                }
+                else
+                {
+                  m.addTriangle(a, b, f, patch);
+                  m.addTriangle(b, e, f, patch);
+                }
               }
               else
               {
-                if (alt) { m.addTriangle(a, e, b, patch); m.addTriangle(a, f, e, patch); }
-                else { m.addTriangle(a, f, b, patch); m.addTriangle(b, f, e, patch); }
+                if (alt)
+                {
+                  m.addTriangle(a, e, b, patch);
+                  m.addTriangle(a, f, e, patch);
+                }
+                else
+                {
+                  m.addTriangle(a, f, b, patch);
+                  m.addTriangle(b, f, e, patch);
+                }
               }
             }
           }
@@ -351,7 +382,8 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
       std::vector<std::vector<int32_t>> rings;
       for (int64_t k = 0; k <= nz; ++k)
       {
-        const double z = k == nz ? 0.5 * height : -0.5 * height + height * static_cast<double>(k) / static_cast<double>(nz);
+        const double z =
+          k == nz ? 0.5 * height : -0.5 * height + height * static_cast<double>(k) / static_cast<double>(nz);
         rings.push_back(ring(m, f, r, z, nt));
       }
       for (int64_t k = 0; k < nz; ++k)
@@ -374,7 +406,8 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
       for (int64_t k = 1; k <= nphi; ++k)
       {
         const double phi = 0.5 * kPi * static_cast<double>(k) / static_cast<double>(nphi);
-        const int64_t count = k == nphi ? 1 : std::max<int64_t>(6, std::llround(static_cast<double>(nt) * std::cos(phi)));
+        const int64_t count =
+          k == nphi ? 1 : std::max<int64_t>(6, std::llround(static_cast<double>(nt) * std::cos(phi)));
         std::vector<int32_t> cur = ring(m, f, k == nphi ? 0.0 : r * std::cos(phi), s * r * std::sin(phi), count);
         // Dome on -axis: mirrored, so the triangles flip.
         zipRings(m, prev, cur, o.domeNegative, patch);

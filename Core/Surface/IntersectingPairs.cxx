@@ -82,11 +82,12 @@ struct BVH
       }
       const int32_t mid = job.start + count / 2;
       std::nth_element(items.begin() + job.start, items.begin() + mid, items.begin() + job.end,
-        [&](int32_t a, int32_t b) {
-          const double* ba = triBoxes.data() + 6 * size_t(a);
-          const double* bb = triBoxes.data() + 6 * size_t(b);
-          return ba[axis] + ba[3 + axis] < bb[axis] + bb[3 + axis];
-        });
+                       [&](int32_t a, int32_t b)
+                       {
+                         const double* ba = triBoxes.data() + 6 * size_t(a);
+                         const double* bb = triBoxes.data() + 6 * size_t(b);
+                         return ba[axis] + ba[3 + axis] < bb[axis] + bb[3 + axis];
+                       });
       node.left = static_cast<int32_t>(nodes.size());
       node.right = node.left + 1;
       nodes[job.node] = node;
@@ -106,7 +107,7 @@ struct BVH
   // Calls f(i, j), i < j, once for every pair of distinct items whose closed boxes overlap, found below the
   // node pair (a, b) (a == b: pairs within one node). Traversing node pairs instead of querying the tree
   // once per item visits each overlapping pair of subtrees once rather than twice, from its top.
-  template <class F>
+  template<class F>
   void pairs(int32_t a0, int32_t b0, std::vector<std::pair<int32_t, int32_t>>& stack, F&& f) const
   {
     stack.clear();
@@ -152,7 +153,7 @@ struct BVH
     }
   }
 
-  template <class F>
+  template<class F>
   void leafPair(int32_t t, int32_t u, F&& f) const
   {
     const double* bt = boxes->data() + 6 * size_t(t);
@@ -165,7 +166,8 @@ struct BVH
 } // namespace
 
 std::vector<std::pair<int32_t, int32_t>> findIntersectingPairs(const SurfaceMesh& mesh,
-  const std::vector<int32_t>& candidates, const std::vector<int32_t>& canon, int threads)
+                                                               const std::vector<int32_t>& candidates,
+                                                               const std::vector<int32_t>& canon, int threads)
 {
   const int32_t nt = mesh.numberOfTriangles();
   std::vector<double> boxes(6 * size_t(nt), 0.0);
@@ -213,19 +215,22 @@ std::vector<std::pair<int32_t, int32_t>> findIntersectingPairs(const SurfaceMesh
           tasks.push_back({ x, y });
   }
   std::vector<std::vector<std::pair<int32_t, int32_t>>> found(nthreads);
-  auto work = [&](int w) {
+  auto work = [&](int w)
+  {
     std::vector<std::pair<int32_t, int32_t>> stack;
     for (size_t k = w; k < tasks.size(); k += nthreads)
-      bvh.pairs(tasks[k].first, tasks[k].second, stack, [&](int32_t t, int32_t u) {
-        const int32_t* tv = mesh.triangle(t);
-        const int32_t* uv = mesh.triangle(u);
-        const double* p[3] = { mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]) };
-        const double* q[3] = { mesh.point(uv[0]), mesh.point(uv[1]), mesh.point(uv[2]) };
-        const int32_t ip[3] = { canon[tv[0]], canon[tv[1]], canon[tv[2]] };
-        const int32_t iq[3] = { canon[uv[0]], canon[uv[1]], canon[uv[2]] };
-        if (trianglesIntersect(p, ip, q, iq))
-          found[w].emplace_back(t, u);
-      });
+      bvh.pairs(tasks[k].first, tasks[k].second, stack,
+                [&](int32_t t, int32_t u)
+                {
+                  const int32_t* tv = mesh.triangle(t);
+                  const int32_t* uv = mesh.triangle(u);
+                  const double* p[3] = { mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]) };
+                  const double* q[3] = { mesh.point(uv[0]), mesh.point(uv[1]), mesh.point(uv[2]) };
+                  const int32_t ip[3] = { canon[tv[0]], canon[tv[1]], canon[tv[2]] };
+                  const int32_t iq[3] = { canon[uv[0]], canon[uv[1]], canon[uv[2]] };
+                  if (trianglesIntersect(p, ip, q, iq))
+                    found[w].emplace_back(t, u);
+                });
   };
   parallelRun(nthreads, work);
   std::vector<std::pair<int32_t, int32_t>> pairs;

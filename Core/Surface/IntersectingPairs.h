@@ -17,6 +17,7 @@ namespace volgrid::detail
 // coordinates, so triangles that touch at a duplicated point share that corner. threads as in
 // SurfaceCheckOptions (0 = up to 2).
 std::vector<std::pair<int32_t, int32_t>> findIntersectingPairs(const SurfaceMesh& mesh,
-  const std::vector<int32_t>& candidates, const std::vector<int32_t>& canon, int threads);
+                                                               const std::vector<int32_t>& candidates,
+                                                               const std::vector<int32_t>& canon, int threads);
 
 } // namespace volgrid::detail

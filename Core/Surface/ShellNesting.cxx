@@ -155,7 +155,7 @@ int pointInClosedSurface(const SurfaceMesh& mesh, const std::vector<int32_t>& tr
 }
 
 void detail::nestShells(const SurfaceMesh& mesh, const std::vector<std::vector<int32_t>>& shellTris,
-  SurfaceCheckReport& r)
+                        SurfaceCheckReport& r)
 {
   const size_t ns = r.shells.size();
   std::vector<std::vector<int32_t>> containers(ns);

@@ -15,6 +15,6 @@ namespace volgrid::detail
 // shell of `report`; shellTriangles lists each shell's triangles. Open shells contain nothing and
 // are located in nothing.
 void nestShells(const SurfaceMesh& mesh, const std::vector<std::vector<int32_t>>& shellTriangles,
-  SurfaceCheckReport& report);
+                SurfaceCheckReport& report);
 
 } // namespace volgrid::detail

@@ -127,7 +127,7 @@ SurfaceCheckReport checkSurface(const SurfaceMesh& mesh, const SurfaceCheckOptio
     }
     const int32_t* v = mesh.triangle(t);
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2] ||
-      triangleIsDegenerate(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2])))
+        triangleIsDegenerate(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2])))
     {
       degenerate[t] = 1;
       r.triangleFlags[t] |= TriangleDegenerate;
@@ -154,9 +154,11 @@ SurfaceCheckReport checkSurface(const SurfaceMesh& mesh, const SurfaceCheckOptio
         keys.push_back(k);
       }
     }
-    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-      return std::lexicographical_compare(a.v, a.v + 3, b.v, b.v + 3) || (std::equal(a.v, a.v + 3, b.v) && a.t < b.t);
-    });
+    std::sort(keys.begin(), keys.end(),
+              [](const Key& a, const Key& b) {
+                return std::lexicographical_compare(a.v, a.v + 3, b.v, b.v + 3) ||
+                  (std::equal(a.v, a.v + 3, b.v) && a.t < b.t);
+              });
     for (size_t i = 1; i < keys.size(); ++i)
     {
       if (std::equal(keys[i].v, keys[i].v + 3, keys[i - 1].v))
@@ -282,58 +284,67 @@ static std::vector<Status> defectStatuses(const SurfaceCheckReport& r)
   }
   if (r.invalidTriangles > 0)
   {
-    found.push_back(Status::failure(ErrorKind::InvalidOption,
-      std::to_string(r.invalidTriangles) + " triangle(s) refer to point ids that do not exist; first triangles: " +
-        idList(r.firstInvalidTriangles) + ".",
+    found.push_back(Status::failure(
+      ErrorKind::InvalidOption,
+      std::to_string(r.invalidTriangles) +
+        " triangle(s) refer to point ids that do not exist; first triangles: " + idList(r.firstInvalidTriangles) + ".",
       toIds(r.firstInvalidTriangles)));
   }
   if (r.nonFinitePoints > 0)
   {
     found.push_back(Status::failure(ErrorKind::NonFinitePoint,
-      std::to_string(r.nonFinitePoints) + " point(s) have NaN or infinite coordinates."));
+                                    std::to_string(r.nonFinitePoints) + " point(s) have NaN or infinite coordinates."));
   }
   if (r.degenerateTriangles > 0)
   {
-    found.push_back(Status::failure(ErrorKind::DegenerateTriangle,
-      std::to_string(r.degenerateTriangles) + " degenerate (zero-area) triangle(s); first triangles: " +
-        idList(r.firstDegenerateTriangles) + ".",
+    found.push_back(Status::failure(
+      ErrorKind::DegenerateTriangle,
+      std::to_string(r.degenerateTriangles) +
+        " degenerate (zero-area) triangle(s); first triangles: " + idList(r.firstDegenerateTriangles) + ".",
       toIds(r.firstDegenerateTriangles)));
   }
   if (r.duplicateTriangles > 0)
   {
-    found.push_back(Status::failure(ErrorKind::DuplicateTriangle,
-      std::to_string(r.duplicateTriangles) + " duplicate triangle(s) (same three points as an earlier triangle); first triangles: " +
-        idList(r.firstDuplicateTriangles) + ".",
-      toIds(r.firstDuplicateTriangles)));
+    found.push_back(
+      Status::failure(ErrorKind::DuplicateTriangle,
+                      std::to_string(r.duplicateTriangles) +
+                        " duplicate triangle(s) (same three points as an earlier triangle); first triangles: " +
+                        idList(r.firstDuplicateTriangles) + ".",
+                      toIds(r.firstDuplicateTriangles)));
   }
   if (r.nonManifoldEdges > 0)
   {
-    found.push_back(Status::failure(ErrorKind::NonManifoldEdge,
-      std::to_string(r.nonManifoldEdges) + " non-manifold edge(s) (used by more than two triangles); first edges (points): " +
+    found.push_back(Status::failure(
+      ErrorKind::NonManifoldEdge,
+      std::to_string(r.nonManifoldEdges) +
+        " non-manifold edge(s) (used by more than two triangles); first edges (points): " +
         edgeList(r, r.firstNonManifoldEdges) + "; first triangles: " + idList(r.firstNonManifoldEdgeTriangles) + ".",
       toIds(r.firstNonManifoldEdgeTriangles)));
   }
   if (r.boundaryEdges > 0)
   {
     found.push_back(Status::failure(ErrorKind::OpenSurface,
-      "The surface is open: " + std::to_string(r.boundaryEdges) + " boundary edge(s) in " +
-        std::to_string(r.boundaryLoops) + " boundary loop(s); first edges (points): " + edgeList(r, r.firstBoundaryEdges) +
-        "; first triangles: " + idList(r.firstBoundaryEdgeTriangles) + ".",
-      toIds(r.firstBoundaryEdgeTriangles)));
+                                    "The surface is open: " + std::to_string(r.boundaryEdges) +
+                                      " boundary edge(s) in " + std::to_string(r.boundaryLoops) +
+                                      " boundary loop(s); first edges (points): " + edgeList(r, r.firstBoundaryEdges) +
+                                      "; first triangles: " + idList(r.firstBoundaryEdgeTriangles) + ".",
+                                    toIds(r.firstBoundaryEdgeTriangles)));
   }
   if (r.selfIntersectingPairs > 0)
   {
-    found.push_back(Status::failure(ErrorKind::SelfIntersection,
-      std::to_string(r.selfIntersectingPairs) + " pair(s) of triangles intersect or overlap; first pairs: " +
-        pairList(r.firstSelfIntersectingPairs) + ".",
+    found.push_back(Status::failure(
+      ErrorKind::SelfIntersection,
+      std::to_string(r.selfIntersectingPairs) +
+        " pair(s) of triangles intersect or overlap; first pairs: " + pairList(r.firstSelfIntersectingPairs) + ".",
       toIds(r.firstSelfIntersectingPairs)));
   }
   if (r.shellIntersectingPairs > 0)
   {
     found.push_back(Status::failure(ErrorKind::IntersectingShells,
-      std::to_string(r.shellIntersectingPairs) + " pair(s) of triangles from different shells intersect; first pairs: " +
-        pairList(r.firstShellIntersectingPairs) + ".",
-      toIds(r.firstShellIntersectingPairs)));
+                                    std::to_string(r.shellIntersectingPairs) +
+                                      " pair(s) of triangles from different shells intersect; first pairs: " +
+                                      pairList(r.firstShellIntersectingPairs) + ".",
+                                    toIds(r.firstShellIntersectingPairs)));
   }
   return found;
 }

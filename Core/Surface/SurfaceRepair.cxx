@@ -77,10 +77,22 @@ inline Vec P(const SurfaceMesh& m, int32_t i)
   const double* p = m.point(i);
   return { p[0], p[1], p[2] };
 }
-inline Vec sub(Vec a, Vec b) { return { a.x - b.x, a.y - b.y, a.z - b.z }; }
-inline Vec cross(Vec a, Vec b) { return { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x }; }
-inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline double norm(Vec a) { return std::sqrt(dot(a, a)); }
+inline Vec sub(Vec a, Vec b)
+{
+  return { a.x - b.x, a.y - b.y, a.z - b.z };
+}
+inline Vec cross(Vec a, Vec b)
+{
+  return { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
+}
+inline double dot(Vec a, Vec b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline double norm(Vec a)
+{
+  return std::sqrt(dot(a, a));
+}
 inline double angleAt(Vec apex, Vec a, Vec b)
 {
   const Vec u = sub(a, apex), v = sub(b, apex);
@@ -105,7 +117,8 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
   }
   std::vector<int32_t> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int32_t x) {
+  auto find = [&](int32_t x)
+  {
     while (parent[x] != x)
     {
       parent[x] = parent[parent[x]];
@@ -113,7 +126,8 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
     }
     return x;
   };
-  auto unite = [&](int32_t a, int32_t b) {
+  auto unite = [&](int32_t a, int32_t b)
+  {
     a = find(a);
     b = find(b);
     if (a != b)
@@ -145,9 +159,8 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
   else
   {
     auto cell = [&](double v) { return static_cast<int64_t>(std::floor(v / tol)); };
-    auto hash = [](int64_t a, int64_t b, int64_t c) {
-      return (uint64_t(a) * 73856093ull) ^ (uint64_t(b) * 19349663ull) ^ (uint64_t(c) * 83492791ull);
-    };
+    auto hash = [](int64_t a, int64_t b, int64_t c)
+    { return (uint64_t(a) * 73856093ull) ^ (uint64_t(b) * 19349663ull) ^ (uint64_t(c) * 83492791ull); };
     std::unordered_map<uint64_t, std::vector<int32_t>> grid;
     for (int32_t i = 0; i < n; ++i)
     {
@@ -182,7 +195,8 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
                 continue;
               }
               const double* q = mesh.point(j);
-              const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+              const double d2 =
+                (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
               if (d2 <= tol2)
               {
                 unite(i, j);
@@ -213,7 +227,7 @@ int64_t removeDegenerateTriangles(SurfaceMesh& mesh)
   {
     const int32_t* v = mesh.triangle(t);
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2] ||
-      triangleIsDegenerate(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2])))
+        triangleIsDegenerate(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2])))
     {
       keep[t] = 0;
       ++removed;
@@ -381,7 +395,7 @@ struct Patch
 };
 
 void fillLoop(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_set<uint64_t>& edgeSet, bool refine,
-  int fairing, int32_t patch, int64_t& pointsAdded, int64_t& trianglesAdded)
+              int fairing, int32_t patch, int64_t& pointsAdded, int64_t& trianglesAdded)
 {
   const size_t n = loop.size();
   Patch p;
@@ -395,7 +409,8 @@ void fillLoop(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_s
     nrm.z += (a.x - b.x) * (a.y + b.y);
   }
   std::vector<int32_t> poly = loop;
-  auto interior = [&](size_t i) {
+  auto interior = [&](size_t i)
+  {
     const size_t k = poly.size();
     const Vec c = P(m, poly[i]);
     const Vec e1 = sub(P(m, poly[(i + k - 1) % k]), c), e2 = sub(P(m, poly[(i + 1) % k]), c);
@@ -573,7 +588,7 @@ void fillLoop(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_s
 } // namespace
 
 int64_t fillHoles(SurfaceMesh& mesh, int maxEdges, bool refine, int fairingIterations, int64_t* loopsLeftOpen,
-  int64_t* pointsAdded, int64_t* trianglesAdded)
+                  int64_t* pointsAdded, int64_t* trianglesAdded)
 {
   int64_t filled = 0, open = 0, pts = 0, tris = 0;
   const auto valence = edgeValences(mesh);
@@ -671,7 +686,8 @@ Status repairSurface(SurfaceMesh& mesh, const SurfaceRepairOptions& o, SurfaceRe
   int32_t bad = -1;
   if (!allPointsFinite(mesh, &bad))
   {
-    return Status::failure(ErrorKind::NonFinitePoint, "Point " + std::to_string(bad) + " has a NaN or infinite coordinate.", { bad });
+    return Status::failure(ErrorKind::NonFinitePoint,
+                           "Point " + std::to_string(bad) + " has a NaN or infinite coordinate.", { bad });
   }
   for (int32_t v : mesh.triangles)
   {
@@ -680,7 +696,8 @@ Status repairSurface(SurfaceMesh& mesh, const SurfaceRepairOptions& o, SurfaceRe
       return Status::failure(ErrorKind::InvalidOption, "A triangle refers to a point id that does not exist.");
     }
   }
-  if (o.weldTolerance < 0 || o.stitchTolerance < 0 || !std::isfinite(o.weldTolerance) || !std::isfinite(o.stitchTolerance))
+  if (o.weldTolerance < 0 || o.stitchTolerance < 0 || !std::isfinite(o.weldTolerance) ||
+      !std::isfinite(o.stitchTolerance))
   {
     return Status::failure(ErrorKind::InvalidOption, "Weld and stitch tolerances must be finite and non-negative.");
   }
@@ -724,7 +741,7 @@ Status repairSurface(SurfaceMesh& mesh, const SurfaceRepairOptions& o, SurfaceRe
   if (o.maxHoleEdges > 0)
   {
     r.loopsFilled = fillHoles(mesh, o.maxHoleEdges, o.refineFilledHoles, o.fairingIterations, &r.loopsLeftOpen,
-      &r.pointsAdded, &r.trianglesAdded);
+                              &r.pointsAdded, &r.trianglesAdded);
   }
   else
   {
@@ -742,7 +759,8 @@ Status repairSurface(SurfaceMesh& mesh, const SurfaceRepairOptions& o, SurfaceRe
   r.unreferencedPointsRemoved = removeUnreferencedPoints(mesh);
   if (r.nonOrientableShells > 0)
   {
-    r.notes.push_back(std::to_string(r.nonOrientableShells) + " shell(s) cannot be oriented consistently (non-orientable or non-manifold)");
+    r.notes.push_back(std::to_string(r.nonOrientableShells) +
+                      " shell(s) cannot be oriented consistently (non-orientable or non-manifold)");
   }
   progress->report(1.0, "Repairing surface");
   return mesh.numberOfTriangles() > 0 ? Status::success()

@@ -16,11 +16,11 @@ struct SurfaceRepairOptions
 {
   // Points closer than weldTolerance * (bounding-box diagonal) are merged; 0 = exactly coincident only.
   double weldTolerance = 0.0;
-  bool removeDegenerate = true;   // repeated ids or exactly collinear corners
-  bool removeDuplicates = true;   // same point set as an earlier triangle
+  bool removeDegenerate = true; // repeated ids or exactly collinear corners
+  bool removeDuplicates = true; // same point set as an earlier triangle
   // Stitch: boundary points within stitchTolerance * diagonal are merged (parts sharing a seam).
   bool stitch = true;
-  double stitchTolerance = 0.0;   // 0: exact coincidence only
+  double stitchTolerance = 0.0; // 0: exact coincidence only
   // Fill boundary loops with at most this many edges (0: no filling).
   int maxHoleEdges = 0;
   bool refineFilledHoles = true;  // insert points so patch edges match the surrounding edge lengths
@@ -41,8 +41,8 @@ struct SurfaceRepairReport
   int64_t loopsLeftOpen = 0;
   int64_t trianglesAdded = 0;
   int64_t pointsAdded = 0;
-  int64_t trianglesFlipped = 0;   // by the consistency pass
-  int64_t shellsFlipped = 0;      // by the domain orientation pass
+  int64_t trianglesFlipped = 0; // by the consistency pass
+  int64_t shellsFlipped = 0;    // by the domain orientation pass
   int64_t nonOrientableShells = 0;
   std::vector<std::string> notes;
   std::string summary() const;
@@ -59,7 +59,7 @@ int64_t removeDegenerateTriangles(SurfaceMesh& mesh);
 int64_t removeDuplicateTriangles(SurfaceMesh& mesh);
 // Returns the number of loops filled; loopsLeftOpen receives loops larger than maxEdges (or unfillable).
 int64_t fillHoles(SurfaceMesh& mesh, int maxEdges, bool refine, int fairingIterations, int64_t* loopsLeftOpen = nullptr,
-  int64_t* pointsAdded = nullptr, int64_t* trianglesAdded = nullptr);
+                  int64_t* pointsAdded = nullptr, int64_t* trianglesAdded = nullptr);
 // Flips triangles so that every edge-connected shell is consistently oriented (BFS across manifold
 // edges). Returns the number of flipped triangles; nonOrientable counts shells that cannot be.
 int64_t orientShellsConsistently(SurfaceMesh& mesh, int64_t* nonOrientable = nullptr);

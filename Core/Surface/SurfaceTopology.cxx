@@ -15,9 +15,9 @@ using UnionFind = volgrid::UnionFind<int32_t>;
 
 struct HalfEdge
 {
-  uint64_t key;  // (min << 32) | max
+  uint64_t key; // (min << 32) | max
   int32_t tri;
-  int8_t local;  // edge k goes from corner k to corner k+1
+  int8_t local;   // edge k goes from corner k to corner k+1
   int8_t forward; // 1 when it runs min -> max
 };
 
@@ -41,7 +41,7 @@ void countBoundaryLoops(UnionFind& loopUF, int32_t np, SurfaceCheckReport& r)
 
 // Non-manifold vertices: corners of one point that are not all in one edge-connected fan.
 void markNonManifoldVertices(const SurfaceMesh& mesh, const std::vector<char>& valid, UnionFind& cornerUF,
-  const std::vector<char>& onNonManifoldEdge, int maxIds, SurfaceCheckReport& r)
+                             const std::vector<char>& onNonManifoldEdge, int maxIds, SurfaceCheckReport& r)
 {
   const int32_t np = mesh.numberOfPoints();
   const int32_t nt = mesh.numberOfTriangles();
@@ -93,7 +93,7 @@ void markNonManifoldVertices(const SurfaceMesh& mesh, const std::vector<char>& v
 
 // Shells, numbered in order of their first triangle.
 std::vector<std::vector<int32_t>> buildShells(const SurfaceMesh& mesh, const std::vector<char>& valid,
-  UnionFind& shellUF, SurfaceCheckReport& r)
+                                              UnionFind& shellUF, SurfaceCheckReport& r)
 {
   const int32_t nt = mesh.numberOfTriangles();
   std::vector<int32_t> rootShell(nt, -1);
@@ -157,8 +157,8 @@ std::vector<std::vector<int32_t>> buildShells(const SurfaceMesh& mesh, const std
 
 } // namespace
 
-std::vector<std::vector<int32_t>> checkEdgeTopology(const SurfaceMesh& mesh, const std::vector<char>& valid,
-  int maxIds, SurfaceCheckReport& r)
+std::vector<std::vector<int32_t>> checkEdgeTopology(const SurfaceMesh& mesh, const std::vector<char>& valid, int maxIds,
+                                                    SurfaceCheckReport& r)
 {
   const int32_t np = mesh.numberOfPoints();
   const int32_t nt = mesh.numberOfTriangles();
@@ -181,9 +181,8 @@ std::vector<std::vector<int32_t>> checkEdgeTopology(const SurfaceMesh& mesh, con
       half.push_back({ (uint64_t(lo) << 32) | hi, t, static_cast<int8_t>(k), static_cast<int8_t>(a < b) });
     }
   }
-  std::sort(half.begin(), half.end(), [](const HalfEdge& a, const HalfEdge& b) {
-    return a.key < b.key || (a.key == b.key && a.tri < b.tri);
-  });
+  std::sort(half.begin(), half.end(),
+            [](const HalfEdge& a, const HalfEdge& b) { return a.key < b.key || (a.key == b.key && a.tri < b.tri); });
   UnionFind shellUF(nt);
   UnionFind cornerUF(3 * size_t(nt));
   UnionFind loopUF(np);
@@ -240,7 +239,8 @@ std::vector<std::vector<int32_t>> checkEdgeTopology(const SurfaceMesh& mesh, con
         keepFirstId(r.firstInconsistentTriangles, h0.tri, maxIds);
       }
       // Join the corners at a and at b across this manifold edge.
-      auto corner = [&](const HalfEdge& h, int32_t v) {
+      auto corner = [&](const HalfEdge& h, int32_t v)
+      {
         const int32_t* tv = mesh.triangle(h.tri);
         const int k = tv[h.local] == v ? h.local : (h.local + 1) % 3;
         return 3 * h.tri + k;

@@ -25,7 +25,7 @@ inline void keepFirstId(std::vector<int32_t>& ids, int32_t id, int maxIds)
 // shells and triangleShell of `r`, with the matching triangle flags and first ids. Triangles with
 // valid[t] == 0 (point ids out of range) and triangles that repeat a point id have no edges and belong
 // to no shell. Returns the triangles of each shell, in increasing order.
-std::vector<std::vector<int32_t>> checkEdgeTopology(const SurfaceMesh& mesh, const std::vector<char>& valid,
-  int maxIds, SurfaceCheckReport& r);
+std::vector<std::vector<int32_t>> checkEdgeTopology(const SurfaceMesh& mesh, const std::vector<char>& valid, int maxIds,
+                                                    SurfaceCheckReport& r);
 
 } // namespace volgrid::detail

@@ -18,7 +18,10 @@ namespace
 class Rng
 {
 public:
-  explicit Rng(uint64_t seed) : state_(seed) {}
+  explicit Rng(uint64_t seed)
+    : state_(seed)
+  {
+  }
   uint64_t next()
   {
     uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
@@ -48,8 +51,7 @@ void sphere(Rng& rng, double radius, int64_t count, std::vector<double>& xyz)
 
 } // namespace
 
-bool generatePoints(const std::string& input, int64_t n, uint64_t seed, std::vector<double>& xyz,
-  std::string& error)
+bool generatePoints(const std::string& input, int64_t n, uint64_t seed, std::vector<double>& xyz, std::string& error)
 {
   xyz.clear();
   if (n < 4)
@@ -118,8 +120,7 @@ long readStatusKb(const char* field)
 
 static int64_t nowNs()
 {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-    std::chrono::steady_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
     .count();
 }
 

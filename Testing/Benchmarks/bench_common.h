@@ -17,8 +17,7 @@ namespace volgrid_bench
 //   jittered-grid  the same grid, every coordinate moved by uniform [-1e-6, 1e-6] * spacing
 //   spheres        n/2 points uniform on the sphere of radius 1 and n - n/2 on radius 10 (same centre)
 // Returns false and sets `error` for an unknown input or a bad n.
-bool generatePoints(const std::string& input, int64_t n, uint64_t seed, std::vector<double>& xyz,
-  std::string& error);
+bool generatePoints(const std::string& input, int64_t n, uint64_t seed, std::vector<double>& xyz, std::string& error);
 
 // ---- memory and time ----
 // Linux /proc/self/status fields in kB (-1 when unavailable).
@@ -49,7 +48,7 @@ private:
 struct EngineResult
 {
   bool ok = false;
-  int64_t tets = 0;   // finite tetrahedra
+  int64_t tets = 0;    // finite tetrahedra
   int64_t points = -1; // vertices the engine reports using (when it says), else -1
   int threads = 1;
   std::string error;
@@ -64,8 +63,7 @@ struct VolGridSettings
 };
 
 // Each returns false (with result.error) when the engine is not compiled in or fails.
-bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings, Meter& meter,
-  EngineResult& result);
+bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings, Meter& meter, EngineResult& result);
 bool runTetGen(const std::vector<double>& xyz, Meter& meter, EngineResult& result);
 bool runCGAL(const std::vector<double>& xyz, Meter& meter, EngineResult& result);
 bool runVtkDelaunay3D(const std::vector<double>& xyz, Meter& meter, EngineResult& result);

@@ -24,12 +24,12 @@ namespace
 void usage(FILE* out)
 {
   std::fprintf(out,
-    "usage: volgrid_bench_delaunay --engine volgrid|tetgen|cgal|vtk\n"
-    "         --input random|grid|jittered-grid|spheres --n N [--seed S] [--force]\n"
-    "         [--location walk|bucket-grid] [--no-sort]\n"
-    "  --force      run vtkDelaunay3D above 100000 points (it is very slow)\n"
-    "  --location   volgrid point location: visibility walk (default) or the bucket grid\n"
-    "  --no-sort    volgrid: insert in input order (no BRIO/Hilbert sort)\n");
+               "usage: volgrid_bench_delaunay --engine volgrid|tetgen|cgal|vtk\n"
+               "         --input random|grid|jittered-grid|spheres --n N [--seed S] [--force]\n"
+               "         [--location walk|bucket-grid] [--no-sort]\n"
+               "  --force      run vtkDelaunay3D above 100000 points (it is very slow)\n"
+               "  --location   volgrid point location: visibility walk (default) or the bucket grid\n"
+               "  --no-sort    volgrid: insert in input order (no BRIO/Hilbert sort)\n");
 }
 
 std::string jsonString(const std::string& s)
@@ -75,7 +75,8 @@ int main(int argc, char** argv)
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    auto value = [&](const char* name) -> const char* {
+    auto value = [&](const char* name) -> const char*
+    {
       if (i + 1 >= argc)
       {
         std::fprintf(stderr, "volgrid_bench_delaunay: %s needs a value\n", name);
@@ -147,8 +148,7 @@ int main(int argc, char** argv)
   }
 
   std::string line = "{\"engine\":" + jsonString(engine) + ",\"input\":" + jsonString(input) +
-    ",\"n\":" + std::to_string(n) + ",\"seed\":" + std::to_string(seed) +
-    ",\"ok\":" + (ok ? "true" : "false");
+    ",\"n\":" + std::to_string(n) + ",\"seed\":" + std::to_string(seed) + ",\"ok\":" + (ok ? "true" : "false");
   if (ok)
   {
     const double tets = static_cast<double>(result.tets);
@@ -157,8 +157,8 @@ int main(int argc, char** argv)
     line += ",\"tets_per_s\":" + jsonNumber(tets > 0 ? tets / meter.seconds() : NAN, "%.0f");
     line += ",\"peak_rss_mb\":" + jsonNumber(meter.peakMb(), "%.1f");
     line += ",\"baseline_rss_mb\":" + jsonNumber(meter.baselineMb(), "%.1f");
-    line += ",\"bytes_per_tet_beyond_input\":" +
-      jsonNumber(tets > 0 ? meter.peakBeyondBaselineBytes() / tets : NAN, "%.1f");
+    line +=
+      ",\"bytes_per_tet_beyond_input\":" + jsonNumber(tets > 0 ? meter.peakBeyondBaselineBytes() / tets : NAN, "%.1f");
     line += ",\"threads\":" + std::to_string(result.threads);
     if (result.points >= 0)
       line += ",\"mesh_points\":" + std::to_string(result.points);

@@ -53,7 +53,10 @@ struct Face
   int32_t tet;
   bool operator<(const Face& o) const
   {
-    return v[0] != o.v[0] ? v[0] < o.v[0] : v[1] != o.v[1] ? v[1] < o.v[1] : v[2] != o.v[2] ? v[2] < o.v[2] : tet < o.tet;
+    return v[0] != o.v[0] ? v[0] < o.v[0]
+      : v[1] != o.v[1]    ? v[1] < o.v[1]
+      : v[2] != o.v[2]    ? v[2] < o.v[2]
+                          : tet < o.tet;
   }
   bool sameFace(const Face& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
 };
@@ -99,7 +102,7 @@ int main(int argc, char** argv)
     {
       grid->GetCellPoints(c, ids);
       tets.push_back({ static_cast<int32_t>(ids->GetId(0)), static_cast<int32_t>(ids->GetId(1)),
-        static_cast<int32_t>(ids->GetId(2)), static_cast<int32_t>(ids->GetId(3)) });
+                       static_cast<int32_t>(ids->GetId(2)), static_cast<int32_t>(ids->GetId(3)) });
     }
   grid = nullptr;
   const int32_t nt = static_cast<int32_t>(tets.size());
@@ -155,9 +158,10 @@ int main(int argc, char** argv)
               "\"interior_tets\": %lld, \"interior_min_dihedral\": %.4f, \"interior_max_dihedral\": %.4f, "
               "\"interior_share_below_10\": %.6g, \"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, "
               "\"max_non_orthogonality\": %.4f, \"severe_non_orthogonal_faces\": %lld}\n",
-    static_cast<long long>(all.tets), all.minDihedral, all.maxDihedral,
-    all.tets ? double(all.below10) / all.tets : 0.0, static_cast<long long>(interior.tets), interior.minDihedral,
-    interior.maxDihedral, interior.tets ? double(interior.below10) / interior.tets : 0.0, ratio.p99, ratio.max,
-    cfd.maxNonOrthogonality, static_cast<long long>(cfd.severelyNonOrthogonalFaces));
+              static_cast<long long>(all.tets), all.minDihedral, all.maxDihedral,
+              all.tets ? double(all.below10) / all.tets : 0.0, static_cast<long long>(interior.tets),
+              interior.minDihedral, interior.maxDihedral,
+              interior.tets ? double(interior.below10) / interior.tets : 0.0, ratio.p99, ratio.max,
+              cfd.maxNonOrthogonality, static_cast<long long>(cfd.severelyNonOrthogonalFaces));
   return 0;
 }

@@ -102,10 +102,10 @@ int main(int argc, char** argv)
               "\"seconds_check\":%.4f,\"seconds_delaunay\":%.4f,\"seconds_recovery\":%.4f,"
               "\"seconds_exterior\":%.4f,\"seconds_steiner_removal\":%.4f,\"seconds_total\":%.4f,"
               "\"peak_rss_mb\":%.1f}\n",
-    spheres ? "sphere-in-sphere" : input.c_str(), status.ok() ? "true" : "false",
-    status.ok() ? "" : status.message.substr(0, 120).c_str(), surface.numberOfTriangles(),
-    static_cast<long long>(s.tets), static_cast<long long>(s.points),
-    static_cast<long long>(s.steinerInterior), s.secondsCheck, s.secondsDelaunay, s.secondsRecovery,
-    s.secondsExterior, s.secondsSteiner, s.secondsTotal, usage.ru_maxrss / 1024.0);
+              spheres ? "sphere-in-sphere" : input.c_str(), status.ok() ? "true" : "false",
+              status.ok() ? "" : status.message.substr(0, 120).c_str(), surface.numberOfTriangles(),
+              static_cast<long long>(s.tets), static_cast<long long>(s.points),
+              static_cast<long long>(s.steinerInterior), s.secondsCheck, s.secondsDelaunay, s.secondsRecovery,
+              s.secondsExterior, s.secondsSteiner, s.secondsTotal, usage.ru_maxrss / 1024.0);
   return status.ok() ? 0 : 1;
 }

@@ -60,7 +60,7 @@ vtkSmartPointer<vtkUnstructuredGrid> buildMesh(long long targetTets, unsigned se
 struct Timing
 {
   double seconds = std::numeric_limits<double>::infinity(); // best wall-clock time
-  double cpuSeconds = 0.0;                                   // process CPU time (all threads) of that run
+  double cpuSeconds = 0.0;                                  // process CPU time (all threads) of that run
 };
 
 // Best of `repeat` runs; the CPU time tells how much of the machine the run really had (shared machines).
@@ -69,19 +69,21 @@ Timing best(int repeat, int threads, const std::function<void()>& run)
   Timing t;
   for (int r = 0; r < repeat; ++r)
   {
-    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
-      const std::clock_t c0 = std::clock();
-      const auto t0 = std::chrono::steady_clock::now();
-      run();
-      const auto t1 = std::chrono::steady_clock::now();
-      const std::clock_t c1 = std::clock();
-      const double wall = std::chrono::duration<double>(t1 - t0).count();
-      if (wall < t.seconds)
-      {
-        t.seconds = wall;
-        t.cpuSeconds = static_cast<double>(c1 - c0) / CLOCKS_PER_SEC;
-      }
-    });
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false },
+                            [&]()
+                            {
+                              const std::clock_t c0 = std::clock();
+                              const auto t0 = std::chrono::steady_clock::now();
+                              run();
+                              const auto t1 = std::chrono::steady_clock::now();
+                              const std::clock_t c1 = std::clock();
+                              const double wall = std::chrono::duration<double>(t1 - t0).count();
+                              if (wall < t.seconds)
+                              {
+                                t.seconds = wall;
+                                t.cpuSeconds = static_cast<double>(c1 - c0) / CLOCKS_PER_SEC;
+                              }
+                            });
   }
   return t;
 }
@@ -90,7 +92,7 @@ void report(const char* engine, const char* metrics, int threads, vtkIdType tets
 {
   std::printf("{\"bench\":\"quality\",\"engine\":\"%s\",\"metrics\":\"%s\",\"threads\":%d,\"tets\":%lld,"
               "\"seconds\":%.4f,\"cpu_seconds\":%.4f,\"mtets_per_s\":%.3f}\n",
-    engine, metrics, threads, static_cast<long long>(tets), t.seconds, t.cpuSeconds, tets / t.seconds / 1e6);
+              engine, metrics, threads, static_cast<long long>(tets), t.seconds, t.cpuSeconds, tets / t.seconds / 1e6);
   std::fflush(stdout);
 }
 } // namespace
@@ -126,10 +128,12 @@ int main(int argc, char** argv)
   {
     vtkNew<vtkVolGridQuality> quality;
     quality->SetInputData(mesh);
-    const Timing t = best(repeat, threads, [&]() {
-      quality->Modified();
-      quality->Update();
-    });
+    const Timing t = best(repeat, threads,
+                          [&]()
+                          {
+                            quality->Modified();
+                            quality->Update();
+                          });
     report("vtkVolGridQuality", "all (8 per-tet arrays, statistics, histograms)", threads, tets, t);
   }
   for (int threads : { 1, 2 })
@@ -137,10 +141,12 @@ int main(int argc, char** argv)
     vtkNew<vtkMeshQuality> meshQuality;
     meshQuality->SetInputData(mesh);
     meshQuality->SetTetQualityMeasureToMinAngle();
-    const Timing t = best(repeat, threads, [&]() {
-      meshQuality->Modified();
-      meshQuality->Update();
-    });
+    const Timing t = best(repeat, threads,
+                          [&]()
+                          {
+                            meshQuality->Modified();
+                            meshQuality->Update();
+                          });
     report("vtkMeshQuality", "tet min dihedral angle", threads, tets, t);
   }
   return 0;

@@ -6,7 +6,8 @@ namespace volgrid_bench
 {
 bool runVolGrid(const std::vector<double>&, const VolGridSettings&, Meter&, EngineResult& result)
 {
-  result.error = "the volgrid engine is not built (no Core/Delaunay/Delaunay.h at configure time, or -DVOLGRID_BENCH_VOLGRID=OFF)";
+  result.error =
+    "the volgrid engine is not built (no Core/Delaunay/Delaunay.h at configure time, or -DVOLGRID_BENCH_VOLGRID=OFF)";
   return false;
 }
 } // namespace volgrid_bench
@@ -22,8 +23,7 @@ bool runVolGrid(const std::vector<double>&, const VolGridSettings&, Meter&, Engi
 namespace volgrid_bench
 {
 
-bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings, Meter& meter,
-  EngineResult& result)
+bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings, Meter& meter, EngineResult& result)
 {
   volgrid::DelaunayOptions options; // defaults (ghost tets kept, as CGAL keeps its infinite cells)
   options.spatialSort = settings.spatialSort;
@@ -57,8 +57,9 @@ bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings,
   }
   result.tets = mesh.numFiniteTets();
   result.points = static_cast<int64_t>(report.numVertices);
-  result.threads = options.threads > 0 ? std::min(options.threads, 2)
-                                       : std::max(1, std::min(2, static_cast<int>(std::thread::hardware_concurrency())));
+  result.threads = options.threads > 0
+    ? std::min(options.threads, 2)
+    : std::max(1, std::min(2, static_cast<int>(std::thread::hardware_concurrency())));
   result.note = "location=" + settings.location + (settings.spatialSort ? " sort=brio-hilbert" : " sort=none") +
     " walk_steps=" + std::to_string(report.walkSteps) + " cavity_tets=" + std::to_string(report.cavityTets) +
     " duplicates=" + std::to_string(report.numDuplicates);

@@ -43,7 +43,7 @@ inline std::vector<std::string> cleanClosedCorpusFiles(const std::string& dataDi
       std::string item;
       while (std::getline(defects, item, ';'))
         if (item.find("non-triangle faces") == std::string::npos &&
-          item.find("inconsistently oriented edges") == std::string::npos)
+            item.find("inconsistently oriented edges") == std::string::npos)
           clean = false;
     }
     if (clean)

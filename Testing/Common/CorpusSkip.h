@@ -23,10 +23,10 @@ inline bool corpusFilePresent(const std::string& path)
 } // namespace volgrid_testing
 
 // In a test body: skips the test when the corpus file `relPath` is missing.
-#define VOLGRID_SKIP_WITHOUT_CORPUS_FILE(relPath)                                                            \
-  do                                                                                                         \
-  {                                                                                                          \
-    const std::string volgridCorpusFile_ = volgrid_testing::corpusPath(relPath);                             \
-    if (!volgrid_testing::corpusFilePresent(volgridCorpusFile_))                                            \
-      GTEST_SKIP() << "corpus file missing: " << volgridCorpusFile_ << " (no ../shared/data/real beside the clone)"; \
+#define VOLGRID_SKIP_WITHOUT_CORPUS_FILE(relPath)                                                                      \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    const std::string volgridCorpusFile_ = volgrid_testing::corpusPath(relPath);                                       \
+    if (!volgrid_testing::corpusFilePresent(volgridCorpusFile_))                                                       \
+      GTEST_SKIP() << "corpus file missing: " << volgridCorpusFile_ << " (no ../shared/data/real beside the clone)";   \
   } while (false)

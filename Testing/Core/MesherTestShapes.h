@@ -13,26 +13,37 @@ namespace testshapes
 {
 
 // Axis-aligned box, 12 triangles, outward. flipDiagonals: use the other diagonal on faces with odd index.
-inline void addBox(SurfaceMesh& s, const double lo[3], const double hi[3], bool flipDiagonals = false, bool inward = false)
+inline void addBox(SurfaceMesh& s, const double lo[3], const double hi[3], bool flipDiagonals = false,
+                   bool inward = false)
 {
   const int32_t b = s.numberOfPoints();
   for (int c = 0; c < 8; ++c)
     s.addPoint((c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]);
   // quads, outward (counter-clockwise seen from outside)
-  const int q[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  const int q[6][4] = {
+    { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 }
+  };
   for (int f = 0; f < 6; ++f)
   {
     int a = q[f][0], bb = q[f][1], c = q[f][2], d = q[f][3];
     int t[2][3];
     if (flipDiagonals && (f % 2))
     {
-      t[0][0] = a; t[0][1] = bb; t[0][2] = d;
-      t[1][0] = bb; t[1][1] = c; t[1][2] = d;
+      t[0][0] = a;
+      t[0][1] = bb;
+      t[0][2] = d;
+      t[1][0] = bb;
+      t[1][1] = c;
+      t[1][2] = d;
     }
     else
     {
-      t[0][0] = a; t[0][1] = bb; t[0][2] = c;
-      t[1][0] = a; t[1][1] = c; t[1][2] = d;
+      t[0][0] = a;
+      t[0][1] = bb;
+      t[0][2] = c;
+      t[1][0] = a;
+      t[1][1] = c;
+      t[1][2] = d;
     }
     for (auto& tr : t)
       if (inward)
@@ -88,7 +99,8 @@ inline SurfaceMesh stripBox(int n, double lx, double ly, double lz, double shift
       }
   // Four long faces as strips between two edges: (e0 = edge A, e1 = edge B), outward orientation chosen
   // per face below.
-  auto strip = [&](int xa, int za, int xb, int zb, bool flip) {
+  auto strip = [&](int xa, int za, int xb, int zb, bool flip)
+  {
     for (int k = 0; k < n; ++k)
     {
       int a0 = id(xa, za, k), a1 = id(xa, za, k + 1), b0 = id(xb, zb, k), b1 = id(xb, zb, k + 1);
@@ -132,7 +144,8 @@ inline SurfaceMesh fanBox(int n, double l, double w, double h)
     b.push_back(s.addPoint(l * k / n, w, h));
   }
   // Each triangle turned to face away from the box's centre.
-  auto add = [&](int32_t p, int32_t q, int32_t r) {
+  auto add = [&](int32_t p, int32_t q, int32_t r)
+  {
     const double *P = &s.points[3 * p], *Q = &s.points[3 * q], *R = &s.points[3 * r];
     double u[3], v[3], m[3];
     for (int k = 0; k < 3; ++k)
@@ -166,15 +179,18 @@ inline SurfaceMesh fanBox(int n, double l, double w, double h)
 inline void addSphere(SurfaceMesh& s, const double c[3], double r, int levels, bool inward = false)
 {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<std::array<double, 3>> p = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 }, { 0, -1, t },
-    { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 }, { -t, 0, -1 }, { -t, 0, 1 } };
-  std::vector<std::array<int, 3>> f = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 },
-    { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 },
-    { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  std::vector<std::array<double, 3>> p = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 },
+                                           { 0, -1, t }, { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t },
+                                           { t, 0, -1 }, { t, 0, 1 }, { -t, 0, -1 }, { -t, 0, 1 } };
+  std::vector<std::array<int, 3>> f = { { 0, 11, 5 }, { 0, 5, 1 },  { 0, 1, 7 },   { 0, 7, 10 }, { 0, 10, 11 },
+                                        { 1, 5, 9 },  { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 },
+                                        { 3, 9, 4 },  { 3, 4, 2 },  { 3, 2, 6 },   { 3, 6, 8 },  { 3, 8, 9 },
+                                        { 4, 9, 5 },  { 2, 4, 11 }, { 6, 2, 10 },  { 8, 6, 7 },  { 9, 8, 1 } };
   for (int l = 0; l < levels; ++l)
   {
     std::map<std::pair<int, int>, int> mid;
-    auto m = [&](int a, int b) {
+    auto m = [&](int a, int b)
+    {
       auto key = std::make_pair(std::min(a, b), std::max(a, b));
       auto it = mid.find(key);
       if (it != mid.end())

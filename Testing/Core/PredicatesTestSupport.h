@@ -120,8 +120,8 @@ inline Pt nudge(Pt p, int axis, int ulps)
 
 inline const std::vector<Pt>& cube()
 {
-  static const std::vector<Pt> c = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 0, 0, 1 },
-    { 1, 0, 1 }, { 0, 1, 1 }, { 1, 1, 1 } };
+  static const std::vector<Pt> c = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 },
+                                     { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 }, { 1, 1, 1 } };
   return c;
 }
 

@@ -60,8 +60,8 @@ vtkUnstructuredGrid* corpusTetMesh()
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < 1500; ++i)
   {
-    points->InsertNextPoint(bounds[0] + u(rng) * (bounds[1] - bounds[0]),
-      bounds[2] + u(rng) * (bounds[3] - bounds[2]), bounds[4] + u(rng) * (bounds[5] - bounds[4]));
+    points->InsertNextPoint(bounds[0] + u(rng) * (bounds[1] - bounds[0]), bounds[2] + u(rng) * (bounds[3] - bounds[2]),
+                            bounds[4] + u(rng) * (bounds[5] - bounds[4]));
   }
   vtkNew<vtkPolyData> cloud;
   cloud->SetPoints(points);
@@ -83,7 +83,8 @@ vtkSmartPointer<vtkDataSet> runQuality(vtkDataObject* input, vtkSmartPointer<vtk
   return vtkDataSet::SafeDownCast(quality->GetOutputDataObject(0));
 }
 
-vtkDataArray* meshQuality(vtkUnstructuredGrid* mesh, void (vtkMeshQuality::*select)(), vtkSmartPointer<vtkDataSet>& keep)
+vtkDataArray* meshQuality(vtkUnstructuredGrid* mesh, void (vtkMeshQuality::*select)(),
+                          vtkSmartPointer<vtkDataSet>& keep)
 {
   vtkNew<vtkMeshQuality> mq;
   mq->SetInputData(mesh);
@@ -123,10 +124,11 @@ TEST(VolGridQuality, MatchesMeshQualityOnCorpusMesh)
   vtkSmartPointer<vtkDataSet> out = runQuality(mesh);
   vtkCellData* cd = out->GetCellData();
   vtkSmartPointer<vtkDataSet> k1, k2;
-  expectRelativelyEqual(
-    cd->GetArray("Volume"), meshQuality(mesh, &vtkMeshQuality::SetTetQualityMeasureToVolume, k1), 1e-12, "volume");
+  expectRelativelyEqual(cd->GetArray("Volume"), meshQuality(mesh, &vtkMeshQuality::SetTetQualityMeasureToVolume, k1),
+                        1e-12, "volume");
   expectRelativelyEqual(cd->GetArray("RadiusRatio"),
-    meshQuality(mesh, &vtkMeshQuality::SetTetQualityMeasureToRadiusRatio, k2), 1e-12, "radius ratio");
+                        meshQuality(mesh, &vtkMeshQuality::SetTetQualityMeasureToRadiusRatio, k2), 1e-12,
+                        "radius ratio");
 }
 
 // vtkMeshQuality's tet MIN_ANGLE (Verdict's tet_minimum_angle in ParaView 5.11's VTK) is documented as the
@@ -149,7 +151,8 @@ TEST(VolGridQuality, MinDihedralAngleMatchesMeshQualityWhereDefinitionsCoincide)
   vtkIdType coinciding = 0, illConditioned = 0;
   double worstMixture = 0.0, worstCoinciding = 0.0;
   // Relative error allowed at angle a (degrees): 1e-12, or acos's conditioning, 64 ulps / sin(a).
-  auto allowed = [](double a) {
+  auto allowed = [](double a)
+  {
     const double rad = a * M_PI / 180.0;
     return std::max(1e-12, 64 * 2.220446049250313e-16 / (std::sin(rad) * rad));
   };
@@ -187,8 +190,8 @@ TEST(VolGridQuality, ArraysTableAndHistogram)
   vtkSmartPointer<vtkTable> table;
   vtkSmartPointer<vtkDataSet> out = runQuality(mesh, &table, 17);
   const vtkIdType n = mesh->GetNumberOfCells();
-  const char* names[] = { "AspectRatio", "MinDihedralAngle", "MaxDihedralAngle", "MinSolidAngle", "Volume",
-    "VolumeGradient", "RadiusEdgeRatio", "RadiusRatio", "Quality" };
+  const char* names[] = { "AspectRatio",    "MinDihedralAngle", "MaxDihedralAngle", "MinSolidAngle", "Volume",
+                          "VolumeGradient", "RadiusEdgeRatio",  "RadiusRatio",      "Quality" };
   for (const char* name : names)
   {
     vtkDataArray* a = out->GetCellData()->GetArray(name);

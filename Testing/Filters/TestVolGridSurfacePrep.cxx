@@ -32,9 +32,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -60,7 +60,9 @@ double signedVolume(vtkPolyData* pd)
     pd->GetPoint(ids[0], a);
     pd->GetPoint(ids[1], b);
     pd->GetPoint(ids[2], c);
-    v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+    v +=
+      (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) /
+      6.0;
   }
   return v;
 }
@@ -391,7 +393,8 @@ TEST(VolGridSurfacePrep, BodyInsideASphereEnclosure)
   // Sphere radius: 10 half diagonals of the body's box.
   double b[6];
   reader->GetOutput()->GetBounds(b);
-  const double r = 5.0 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  const double r =
+    5.0 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
   double ob[6];
   out->GetBounds(ob);
   EXPECT_NEAR(ob[1] - ob[0], 2 * r, 0.01 * r);
@@ -476,7 +479,7 @@ TEST(VolGridSurfacePrep, OptionsAreClampedAndTheSummaryTableIsComplete)
   for (const char* column : { "Category", "Item", "Input", "Output", "FirstIds" })
     EXPECT_NE(table->GetColumnByName(column), nullptr) << column;
   for (const char* item : { "Open edges", "Non-manifold edges", "Self-intersecting pairs", "Intersecting shell pairs",
-         "Degenerate triangles", "Holes filled", "Shells flipped", "Welded points" })
+                            "Degenerate triangles", "Holes filled", "Shells flipped", "Welded points" })
     EXPECT_GE(tableRow(table, item), 0) << item;
   EXPECT_NE(table->GetFieldData()->GetArray("Meshable"), nullptr);
   EXPECT_NE(run->GetOutput()->GetFieldData()->GetAbstractArray("SurfacePrepReport"), nullptr);
@@ -504,9 +507,8 @@ TEST(VolGridSurfacePrep, QuadsAndStripsAreTriangulatedAndProgressIsReported)
   std::vector<double> progress;
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&progress);
-  observer->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-    static_cast<std::vector<double>*>(clientData)->push_back(*static_cast<double*>(callData));
-  });
+  observer->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData)
+                        { static_cast<std::vector<double>*>(clientData)->push_back(*static_cast<double*>(callData)); });
   prep->AddObserver(vtkCommand::ProgressEvent, observer);
   prep->Update();
   vtkPolyData* out = prep->GetOutput();
@@ -526,9 +528,8 @@ TEST(VolGridSurfacePrep, QuadsAndStripsAreTriangulatedAndProgressIsReported)
   abort->AddInputConnection(cube->GetOutputPort());
   abort->AddInputConnection(strips->GetOutputPort());
   vtkNew<vtkCallbackCommand> stopper;
-  stopper->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
-    static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
-  });
+  stopper->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
+                       { static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn(); });
   abort->AddObserver(vtkCommand::ProgressEvent, stopper);
   abort->Update();
   EXPECT_EQ(abort->GetOutput()->GetNumberOfCells(), 0);

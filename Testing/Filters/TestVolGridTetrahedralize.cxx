@@ -56,7 +56,7 @@ double tetVolume(vtkUnstructuredGrid* grid, vtkIdType cell)
     w[k] = p[3][k] - p[0][k];
   }
   return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-           u[2] * (v[0] * w[1] - v[1] * w[0])) /
+          u[2] * (v[0] * w[1] - v[1] * w[0])) /
     6.0;
 }
 
@@ -68,9 +68,8 @@ struct ErrorCatcher
   explicit ErrorCatcher(vtkObject* watched)
   {
     callback->SetClientData(this);
-    callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
-      static_cast<ErrorCatcher*>(self)->messages += static_cast<const char*>(text);
-    });
+    callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text)
+                          { static_cast<ErrorCatcher*>(self)->messages += static_cast<const char*>(text); });
     watched->AddObserver(vtkCommand::ErrorEvent, callback);
     watched->AddObserver(vtkCommand::WarningEvent, callback);
   }
@@ -124,7 +123,8 @@ TEST(VolGridTetrahedralize, TheMeshDoesNotDependOnTheInsertionOrder)
   unsorted->SpatialSortOff();
   sorted->Update();
   unsorted->Update();
-  auto canonical = [](vtkUnstructuredGrid* g) {
+  auto canonical = [](vtkUnstructuredGrid* g)
+  {
     std::vector<std::array<vtkIdType, 4>> tets;
     for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
     {
@@ -144,7 +144,7 @@ TEST(VolGridTetrahedralize, TheMeshDoesNotDependOnTheInsertionOrder)
 TEST(VolGridTetrahedralize, MergesDuplicatesAndMapsThemBack)
 {
   std::vector<std::array<double, 3>> xyz = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
-    { 1, 0, 0 }, { 1, 1, 1 }, { 0, 0, 0 } };
+                                             { 1, 0, 0 }, { 1, 1, 1 }, { 0, 0, 0 } };
   auto input = cloud(xyz);
   vtkNew<vtkVolGridTetrahedralize> filter;
   ErrorCatcher catcher(filter);
@@ -165,7 +165,7 @@ TEST(VolGridTetrahedralize, BadInputGivesAnErrorAndNoOutput)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<std::vector<std::array<double, 3>>> cases = {
     {},                                                                   // empty
-    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 2, 3, 0 } }, // coplanar
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 2, 3, 0 } },  // coplanar
     { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { nan, 0, 0 } } // NaN
   };
   const char* expectedWords[] = { "empty", "coplanar", "NaN" };
@@ -177,7 +177,6 @@ TEST(VolGridTetrahedralize, BadInputGivesAnErrorAndNoOutput)
     filter->SetInputData(input);
     filter->Update();
     EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0) << "case " << i;
-    EXPECT_NE(catcher.messages.find(expectedWords[i]), std::string::npos)
-      << "case " << i << ": " << catcher.messages;
+    EXPECT_NE(catcher.messages.find(expectedWords[i]), std::string::npos) << "case " << i << ": " << catcher.messages;
   }
 }

@@ -52,9 +52,18 @@ void expectSameAsTetGen(const std::vector<double>& xyz)
 }
 } // namespace
 
-TEST(DelaunayVsTetGen, UniformRandom10k) { expectSameAsTetGen(uniformPoints(10000, 1)); }
-TEST(DelaunayVsTetGen, UniformRandom100k) { expectSameAsTetGen(uniformPoints(100000, 2)); }
-TEST(DelaunayVsTetGen, ConcentricSpheres20k) { expectSameAsTetGen(sphericalShells(20000, 3)); }
+TEST(DelaunayVsTetGen, UniformRandom10k)
+{
+  expectSameAsTetGen(uniformPoints(10000, 1));
+}
+TEST(DelaunayVsTetGen, UniformRandom100k)
+{
+  expectSameAsTetGen(uniformPoints(100000, 2));
+}
+TEST(DelaunayVsTetGen, ConcentricSpheres20k)
+{
+  expectSameAsTetGen(sphericalShells(20000, 3));
+}
 TEST(DelaunayVsTetGen, Offset1e9Random10k)
 {
   std::vector<double> xyz = uniformPoints(10000, 4);

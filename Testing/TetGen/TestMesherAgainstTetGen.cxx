@@ -75,17 +75,16 @@ TEST(MesherVsTetGen, CleanCorpusSideBySide)
       const auto start = std::chrono::steady_clock::now();
       const volgrid::Status status = volgrid::meshSurface(surface, options, ours);
       const double ourSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const volgrid_tetgen::TetGenMesh theirs =
-        volgrid_tetgen::meshSurface(surface.points, surface.triangles, "pYQ");
+      const volgrid_tetgen::TetGenMesh theirs = volgrid_tetgen::meshSurface(surface.points, surface.triangles, "pYQ");
 
       std::string notes;
       if (status.ok() && theirs.ok)
       {
         ++compared;
-        const volgrid::BoundaryCheckReport a = volgrid::checkBoundaryConformity(ours.points,
-          ours.numInputPoints, ours.tets, surface.triangles, ours.stats.enclosedVolume);
-        const volgrid::BoundaryCheckReport b = volgrid::checkBoundaryConformity(theirs.points,
-          surface.numberOfPoints(), theirs.tets, surface.triangles, ours.stats.enclosedVolume);
+        const volgrid::BoundaryCheckReport a = volgrid::checkBoundaryConformity(
+          ours.points, ours.numInputPoints, ours.tets, surface.triangles, ours.stats.enclosedVolume);
+        const volgrid::BoundaryCheckReport b = volgrid::checkBoundaryConformity(
+          theirs.points, surface.numberOfPoints(), theirs.tets, surface.triangles, ours.stats.enclosedVolume);
         EXPECT_TRUE(a.ok()) << name << " VolGrid: " << a.summary();
         // Both meshes fill the same domain exactly: their volumes agree to rounding.
         EXPECT_NEAR(a.tetVolume, b.tetVolume, 1e-9 * std::abs(ours.stats.enclosedVolume)) << name;
@@ -109,14 +108,14 @@ TEST(MesherVsTetGen, CleanCorpusSideBySide)
         notes = "both failed";
       }
       std::printf("%-56s %10lld %10lld %9.3f %9.3f %s\n", name.c_str(),
-        static_cast<long long>(status.ok() ? ours.stats.tets : -1),
-        static_cast<long long>(theirs.ok ? static_cast<long long>(theirs.tets.size() / 4) : -1), ourSeconds,
-        theirs.seconds, notes.c_str());
+                  static_cast<long long>(status.ok() ? ours.stats.tets : -1),
+                  static_cast<long long>(theirs.ok ? static_cast<long long>(theirs.tets.size() / 4) : -1), ourSeconds,
+                  theirs.seconds, notes.c_str());
     }
   }
   std::printf("compared %d, only VolGrid meshed %d, only TetGen meshed %d, neither %d, files skipped %d "
               "(> %d triangles)\n",
-    compared, onlyVolGrid, onlyTetGen, neither, skipped, kMaxTriangles);
+              compared, onlyVolGrid, onlyTetGen, neither, skipped, kMaxTriangles);
   for (const std::string& f : tetgenFailures)
     std::printf("TetGen -pY failed on %s\n", f.c_str());
   EXPECT_GT(compared, 0);

@@ -32,8 +32,7 @@ TetGenResult delaunay(const std::vector<double>& xyz)
   result.points = out.numberofpoints;
   return result;
 }
-TetGenMesh meshSurface(
-  const std::vector<double>& points, const std::vector<int32_t>& triangles, const char* switches)
+TetGenMesh meshSurface(const std::vector<double>& points, const std::vector<int32_t>& triangles, const char* switches)
 {
   TetGenMesh result;
   tetgenio in, out;
@@ -74,8 +73,8 @@ TetGenMesh meshSurface(
   if (!result.tets.empty())
   {
     const int32_t* t = result.tets.data();
-    if (volgrid::predicates::orient3d(&result.points[3 * t[0]], &result.points[3 * t[1]],
-          &result.points[3 * t[2]], &result.points[3 * t[3]]) < 0)
+    if (volgrid::predicates::orient3d(&result.points[3 * t[0]], &result.points[3 * t[1]], &result.points[3 * t[2]],
+                                      &result.points[3 * t[3]]) < 0)
     {
       for (size_t k = 0; k < result.tets.size(); k += 4)
         std::swap(result.tets[k], result.tets[k + 1]);

@@ -23,12 +23,11 @@ struct TetGenMesh
   bool ok = false;
   std::string error;
   double seconds = 0;
-  std::vector<double> points;  // TetGen's output points: the input points first, in order
-  std::vector<int32_t> tets;   // 4 per tet, reoriented to VolGrid's positive convention
+  std::vector<double> points; // TetGen's output points: the input points first, in order
+  std::vector<int32_t> tets;  // 4 per tet, reoriented to VolGrid's positive convention
 };
 
 // Boundary-conforming mesh of a closed triangle surface with the given switches (e.g. "pYQ"): every
 // triangle is a facet. TetGen aborts are caught and reported in `error`.
-TetGenMesh meshSurface(const std::vector<double>& points, const std::vector<int32_t>& triangles,
-  const char* switches);
+TetGenMesh meshSurface(const std::vector<double>& points, const std::vector<int32_t>& triangles, const char* switches);
 } // namespace volgrid_tetgen

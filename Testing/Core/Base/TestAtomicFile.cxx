@@ -72,7 +72,9 @@ TEST(AtomicFile, RefusesDevicesAndDirectories)
   std::string error;
   EXPECT_FALSE(writeFileAtomically("/dev/full", "x", error));
   EXPECT_NE(error.find("not a regular file"), std::string::npos) << error;
-  struct stat st{};
+  struct stat st
+  {
+  };
   ASSERT_EQ(::stat("/dev/full", &st), 0);
   EXPECT_TRUE(S_ISCHR(st.st_mode));
   const std::string dir = scratchDir("isdir");

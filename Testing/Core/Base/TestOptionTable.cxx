@@ -100,13 +100,13 @@ TEST(OptionTable, PluginXmlAgreesWithTheTable)
 TEST(OptionTable, ADisagreeingPluginXmlIsCaught)
 {
   const std::string xml = readPluginXml();
-  const std::string defaultChanged = replaced(xml,
-    "name=\"Beta\" command=\"SetBeta\" number_of_elements=\"1\" default_values=\"0.4\"",
-    "name=\"Beta\" command=\"SetBeta\" number_of_elements=\"1\" default_values=\"0.55\"");
+  const std::string defaultChanged =
+    replaced(xml, "name=\"Beta\" command=\"SetBeta\" number_of_elements=\"1\" default_values=\"0.4\"",
+             "name=\"Beta\" command=\"SetBeta\" number_of_elements=\"1\" default_values=\"0.55\"");
   ASSERT_EQ(allDisagreements(defaultChanged).size(), 1u);
   EXPECT_EQ(allDisagreements(defaultChanged)[0], "Beta: default 0.55 in the XML, 0.4 in the table");
   const std::string rangeChanged = replaced(xml, "<DoubleRangeDomain name=\"range\" min=\"1\" max=\"60\"/>",
-    "<DoubleRangeDomain name=\"range\" min=\"1\" max=\"90\"/>");
+                                            "<DoubleRangeDomain name=\"range\" min=\"1\" max=\"90\"/>");
   ASSERT_EQ(allDisagreements(rangeChanged).size(), 1u);
   EXPECT_EQ(allDisagreements(rangeChanged)[0], "TargetMinDihedral: max '90' in the XML, 60 in the table");
 }

@@ -27,11 +27,13 @@ TEST(ParallelFor, RangesCoverEveryItemOnceForAnyThreadCount)
   {
     std::vector<int> hits(static_cast<size_t>(n), 0);
     std::vector<int64_t> begins(64, -1);
-    const int k = parallelFor(threads, n, 1000, [&](int range, int64_t begin, int64_t end) {
-      begins[static_cast<size_t>(range)] = begin;
-      for (int64_t i = begin; i < end; ++i)
-        ++hits[static_cast<size_t>(i)];
-    });
+    const int k = parallelFor(threads, n, 1000,
+                              [&](int range, int64_t begin, int64_t end)
+                              {
+                                begins[static_cast<size_t>(range)] = begin;
+                                for (int64_t i = begin; i < end; ++i)
+                                  ++hits[static_cast<size_t>(i)];
+                              });
     EXPECT_EQ(k, parallelRanges(threads, n, 1000));
     EXPECT_EQ(k, std::min<int64_t>(resolveThreads(threads), n / 1000));
     for (int64_t i = 0; i < n; ++i)
@@ -48,20 +50,20 @@ TEST(ParallelFor, NestedCallsRunAndRepeatedCallsReuseThePool)
 {
   std::atomic<int64_t> sum{ 0 };
   for (int repeat = 0; repeat < 50; ++repeat)
-    parallelRun(4, [&](int w) {
-      parallelRun(3, [&](int v) { sum += (w + 1) * 10 + v; });
-    });
+    parallelRun(4, [&](int w) { parallelRun(3, [&](int v) { sum += (w + 1) * 10 + v; }); });
   // Per outer call: sum over w of 3 * (w + 1) * 10 + (0 + 1 + 2) = 300 + 12 = 312.
   EXPECT_EQ(sum.load(), 50 * 312);
 }
 
 TEST(ParallelFor, AnExceptionReachesTheCaller)
 {
-  EXPECT_THROW(parallelRun(3, [](int w) {
-    if (w == 2)
-      throw std::runtime_error("worker 2");
-  }),
-    std::runtime_error);
+  EXPECT_THROW(parallelRun(3,
+                           [](int w)
+                           {
+                             if (w == 2)
+                               throw std::runtime_error("worker 2");
+                           }),
+               std::runtime_error);
   // The pool still works afterwards.
   std::atomic<int> n{ 0 };
   parallelRun(3, [&](int) { ++n; });

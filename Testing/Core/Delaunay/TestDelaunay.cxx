@@ -46,11 +46,13 @@ std::vector<double> gridPoints(int m, double jitter = 0.0, uint64_t seed = 1)
 std::vector<Tet> tetSet(const TetMesh& mesh)
 {
   std::vector<Tet> tets;
-  mesh.forEachFiniteTet([&](int32_t t) {
-    Tet a{ mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2), mesh.vertex(t, 3) };
-    std::sort(a.begin(), a.end());
-    tets.push_back(a);
-  });
+  mesh.forEachFiniteTet(
+    [&](int32_t t)
+    {
+      Tet a{ mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2), mesh.vertex(t, 3) };
+      std::sort(a.begin(), a.end());
+      tets.push_back(a);
+    });
   std::sort(tets.begin(), tets.end());
   return tets;
 }
@@ -87,16 +89,19 @@ std::vector<Tet> bruteForceDelaunay(const std::vector<double>& xyz)
 double totalVolume6(const TetMesh& mesh) // sum of 6 * volume of the finite tets
 {
   double sum = 0;
-  mesh.forEachFiniteTet([&](int32_t t) {
-    const double* a = mesh.point(mesh.vertex(t, 0));
-    const double* b = mesh.point(mesh.vertex(t, 1));
-    const double* c = mesh.point(mesh.vertex(t, 2));
-    const double* d = mesh.point(mesh.vertex(t, 3));
-    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-    const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-    sum += u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
-  });
+  mesh.forEachFiniteTet(
+    [&](int32_t t)
+    {
+      const double* a = mesh.point(mesh.vertex(t, 0));
+      const double* b = mesh.point(mesh.vertex(t, 1));
+      const double* c = mesh.point(mesh.vertex(t, 2));
+      const double* d = mesh.point(mesh.vertex(t, 3));
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+      sum +=
+        u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+    });
   return sum;
 }
 
@@ -345,7 +350,8 @@ TEST(Delaunay, ScalingByPowersOfTwoAndOffsetsKeepTheCombinatorics)
 {
   const auto xyz = randomPoints(2000, 31, 20);
   const auto ref = tetSet(build(xyz).mesh);
-  auto transformed = [&](double scale, double offset) {
+  auto transformed = [&](double scale, double offset)
+  {
     std::vector<double> t(xyz);
     for (double& x : t)
       x = x * scale + offset; // exact: 20-bit mantissas, power-of-two scale, 30-bit integer offset
@@ -467,7 +473,10 @@ struct CancelAfter : Progress
 {
   int calls = 0, cancelAt;
   double lastFraction = -1;
-  explicit CancelAfter(int n) : cancelAt(n) {}
+  explicit CancelAfter(int n)
+    : cancelAt(n)
+  {
+  }
   void report(double f, const char*) override
   {
     lastFraction = f;

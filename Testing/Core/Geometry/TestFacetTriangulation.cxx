@@ -138,7 +138,8 @@ TEST(FacetTriangulation, SeveralNonConvexHolesAndAnIsland)
 {
   // Outer 10x10 square; two L-shaped holes; inside the second hole an island square (its own region).
   std::vector<double> p = { 0, 0, 0, 10, 0, 0, 10, 10, 0, 0, 10, 0 };
-  auto add = [&](double x, double y) {
+  auto add = [&](double x, double y)
+  {
     p.insert(p.end(), { x, y, 0 });
     return static_cast<int32_t>(p.size() / 3 - 1);
   };
@@ -193,7 +194,8 @@ TEST(FacetTriangulation, AlignedGridOfHolesInATiltedPlane)
   {
     SCOPED_TRACE(tilted ? "tilted" : "z = 0");
     std::vector<double> p;
-    auto add = [&](double x, double y) {
+    auto add = [&](double x, double y)
+    {
       if (tilted)
       {
         // Rodrigues rotation of (x, y, 0) by 0.7 rad about the unit axis k = (1,1,1)/sqrt(3), then an

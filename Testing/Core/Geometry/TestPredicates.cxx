@@ -54,7 +54,8 @@ TEST(Predicates, ExpansionArithmeticIsExact)
   // Products and sums of random expansions built from exact sums of doubles.
   for (int t = 0; t < 300; ++t)
   {
-    auto randomExpansion = [&](double* h) {
+    auto randomExpansion = [&](double* h)
+    {
       double acc[64];
       int n = 1;
       acc[0] = std::ldexp(u(rng), ex(rng) / 10);
@@ -184,8 +185,8 @@ TEST(Predicates, InsphereBasicAndCospherical)
             {
               const int m = (i + j + k + l) % 8;
               EXPECT_EQ(insph(affine(C[i], sc, off), affine(C[j], sc, off), affine(C[k], sc, off),
-                          affine(C[l], sc, off), affine(C[m], sc, off)),
-                0);
+                              affine(C[l], sc, off), affine(C[m], sc, off)),
+                        0);
             }
   // Integer points on a sphere of radius 3, and 1-ulp nudges across it.
   const auto S = sphere9();
@@ -234,7 +235,8 @@ TEST(Predicates, InsphereRandomNearDegenerateAgainstRational)
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_int_distribution<int> ulp(-2, 2), axis(0, 2);
-  auto onSphere = [&](const Pt& c, double r) {
+  auto onSphere = [&](const Pt& c, double r)
+  {
     Pt v = { u(rng), u(rng), u(rng) };
     const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     return Pt{ c[0] + r * v[0] / n, c[1] + r * v[1] / n, c[2] + r * v[2] / n };
@@ -322,7 +324,8 @@ TEST(Predicates, WideExponentRangeAgainstRational)
   std::mt19937_64 rng(43);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_int_distribution<int> ex(-1074, 1000), axis(0, 2), ulp(-2, 2);
-  auto wide = [&]() {
+  auto wide = [&]()
+  {
     Pt p;
     for (auto& x : p)
       x = (rng() % 4 == 0) ? 0.0 : std::ldexp(u(rng), ex(rng) / static_cast<int>(rng() % 3 + 1));
@@ -348,7 +351,8 @@ TEST(Predicates, WideExponentRangeAgainstRational)
       zeros += rs == 0;
     }
     for (int k = 0; k < 3; ++k)
-      ASSERT_EQ(P::orient2dProjected(p[0].data(), p[1].data(), p[2].data(), k), refOrient2dProjected(p[0], p[1], p[2], k));
+      ASSERT_EQ(P::orient2dProjected(p[0].data(), p[1].data(), p[2].data(), k),
+                refOrient2dProjected(p[0], p[1], p[2], k));
     // Coplanar quadruple for incircle3d: all on the plane z = p0.z.
     Pt q[4] = { p[0], p[1], p[2], p[4] };
     for (auto& v : q)
@@ -413,7 +417,8 @@ TEST(Predicates, Incircle3dCoplanar)
     // so that the third coordinate is exact. The plane's axis order is permuted.
     const double al = coef(rng), be = coef(rng), ga = (t % 4 == 0) ? 1e6 : 0.5;
     const int perm = t % 3;
-    auto planePoint = [&](double pu, double pv) {
+    auto planePoint = [&](double pu, double pv)
+    {
       const double fu = std::ldexp(std::round(std::ldexp(pu, 20)), -20);
       const double fv = std::ldexp(std::round(std::ldexp(pv, 20)), -20);
       Pt p;
@@ -436,7 +441,7 @@ TEST(Predicates, Incircle3dCoplanar)
     }
     ASSERT_EQ(refOrient3d(p[0], p[1], p[2], p[3]), 0);
     if (refOrient2dProjected(p[0], p[1], p[2], 0) == 0 && refOrient2dProjected(p[0], p[1], p[2], 1) == 0 &&
-      refOrient2dProjected(p[0], p[1], p[2], 2) == 0)
+        refOrient2dProjected(p[0], p[1], p[2], 2) == 0)
       continue;
     const int ref = refIncircle3d(p[0], p[1], p[2], p[3]);
     ASSERT_EQ(incirc(p[0], p[1], p[2], p[3]), ref) << t;

@@ -22,7 +22,7 @@ namespace
 int sos(const std::vector<Pt>& pts, const std::vector<int64_t>& ids, const std::array<int, 5>& v)
 {
   return P::insphereSoS(pts[v[0]].data(), pts[v[1]].data(), pts[v[2]].data(), pts[v[3]].data(), pts[v[4]].data(),
-    ids[v[0]], ids[v[1]], ids[v[2]], ids[v[3]], ids[v[4]]);
+                        ids[v[0]], ids[v[1]], ids[v[2]], ids[v[3]], ids[v[4]]);
 }
 
 // Exact determinant of a 5x5 rational matrix (Gaussian elimination).
@@ -89,11 +89,11 @@ TEST(Predicates, InsphereSoSMatchesLiteralPerturbation)
       ids[i] = id(rng);
     }
     if (orient(p[0], p[1], p[2], p[3]) == 0 || std::set<int64_t>(ids.begin(), ids.end()).size() < 5 ||
-      std::set<Pt>(p.begin(), p.end()).size() < 5)
+        std::set<Pt>(p.begin(), p.end()).size() < 5)
       continue;
-    ASSERT_EQ(P::insphereSoS(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), ids[0], ids[1],
-                ids[2], ids[3], ids[4]),
-      refInsphereSoS(p, ids));
+    ASSERT_EQ(P::insphereSoS(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), ids[0], ids[1], ids[2],
+                             ids[3], ids[4]),
+              refInsphereSoS(p, ids));
     ++checked;
   }
 }
@@ -176,8 +176,8 @@ TEST(Predicates, InsphereSoSFlip23ExactlyOneDelaunay)
   const auto S = sphere9();
   std::mt19937_64 rng(37);
   std::uniform_int_distribution<size_t> pick(0, S.size() - 1);
-  auto outside = [&](Pt a, Pt b, Pt c, Pt d, const Pt& q, int64_t ia, int64_t ib, int64_t ic, int64_t id,
-                   int64_t iq) {
+  auto outside = [&](Pt a, Pt b, Pt c, Pt d, const Pt& q, int64_t ia, int64_t ib, int64_t ic, int64_t id, int64_t iq)
+  {
     if (orient(a, b, c, d) < 0)
     {
       std::swap(a, b);
@@ -232,12 +232,12 @@ TEST(Predicates, InsphereSoSOnNonDyadicGridBoxes)
       ids[i] = id(rng);
     }
     if (orient(p[0], p[1], p[2], p[3]) == 0 || std::set<int64_t>(ids.begin(), ids.end()).size() < 5 ||
-      std::set<Pt>(p.begin(), p.end()).size() < 5)
+        std::set<Pt>(p.begin(), p.end()).size() < 5)
       continue;
     ASSERT_EQ(insph(p[0], p[1], p[2], p[3], p[4]), 0);
-    ASSERT_EQ(P::insphereSoS(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), ids[0], ids[1],
-                ids[2], ids[3], ids[4]),
-      refInsphereSoS(p, ids));
+    ASSERT_EQ(P::insphereSoS(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), ids[0], ids[1], ids[2],
+                             ids[3], ids[4]),
+              refInsphereSoS(p, ids));
     ++checked;
   }
 }

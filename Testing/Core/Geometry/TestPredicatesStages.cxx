@@ -28,7 +28,7 @@ namespace
 int stagedInsphere(const std::array<Pt, 5>& p, bool extended, int& stage)
 {
   return P::detail::insphereExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), extended,
-    &stage);
+                                        &stage);
 }
 
 TEST(Predicates, InsphereAdaptiveStagesAgainstRational)
@@ -36,7 +36,8 @@ TEST(Predicates, InsphereAdaptiveStagesAgainstRational)
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_int_distribution<int> axis(0, 2), which(0, 4), sign(0, 1);
-  auto onSphere = [&](const Pt& c, double r, const Pt& around, double spread) {
+  auto onSphere = [&](const Pt& c, double r, const Pt& around, double spread)
+  {
     Pt v = { around[0] + spread * u(rng), around[1] + spread * u(rng), around[2] + spread * u(rng) };
     const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     return Pt{ c[0] + r * v[0] / n, c[1] + r * v[1] / n, c[2] + r * v[2] / n };
@@ -143,7 +144,7 @@ TEST(Predicates, Orient3dAdaptiveStagesAgainstRational)
     {
       int stage = 0;
       ASSERT_EQ(P::detail::orient3dExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), ext == 1, &stage),
-        ref)
+                ref)
         << "t=" << t << " extended=" << ext << " stage=" << stage;
       ++count[ext][stage];
     }
@@ -171,13 +172,12 @@ namespace
 {
 int stagedOrient(const std::array<Pt, 5>& p, bool fixedPoint, int& stage)
 {
-  return P::detail::orient3dExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), true, &stage,
-    fixedPoint);
+  return P::detail::orient3dExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), true, &stage, fixedPoint);
 }
 int stagedInsphereFixed(const std::array<Pt, 5>& p, bool fixedPoint, int& stage)
 {
-  return P::detail::insphereExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), true,
-    &stage, fixedPoint);
+  return P::detail::insphereExactStaged(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), true, &stage,
+                                        fixedPoint);
 }
 
 // Checks orient3d of p[0..3] and insphere of p (when not flat) through the public predicates and through
@@ -213,8 +213,9 @@ TEST(Predicates, FixedPointNonDyadicGridsAgainstRational)
     int n;
     bool divide; // coordinate i / (n - 1) instead of x0 + i h
   };
-  const Grid grids[] = { { 0, 0, 100, true }, { 0, 0, 40, true }, { 0.3, 0.01, 100, false },
-    { -1.7, 1.0 / 7.0, 30, false }, { 1234.5, 0.1, 50, false }, { -2e-3, 1e-4 / 3.0, 60, false } };
+  const Grid grids[] = { { 0, 0, 100, true },        { 0, 0, 40, true },
+                         { 0.3, 0.01, 100, false },  { -1.7, 1.0 / 7.0, 30, false },
+                         { 1234.5, 0.1, 50, false }, { -2e-3, 1e-4 / 3.0, 60, false } };
   std::uniform_int_distribution<int> axis(0, 2), ulp(-3, 3), off(0, 2);
   int fixedStage = 0, zeros = 0, checks = 0;
   for (const Grid& g : grids)
@@ -259,8 +260,8 @@ TEST(Predicates, FixedPointBitBoundsAndFallbackAgainstRational)
   // Extremes of the fixed-point window: coordinates whose integers (over the common lowest bit) reach
   // 2^61 - 2^8 in magnitude while 1 (the lowest bit) is present, so differences, minors, norms and the
   // final sums reach their bounds; then one step wider (2^62 - 2^9 with 1), which must fall back.
-  const double big61 = std::ldexp(double((uint64_t(1) << 53) - 1), 8);  // 2^61 - 2^8, top bit 2^60
-  const double big62 = std::ldexp(double((uint64_t(1) << 53) - 1), 9);  // top bit 2^61: span 62
+  const double big61 = std::ldexp(double((uint64_t(1) << 53) - 1), 8); // 2^61 - 2^8, top bit 2^60
+  const double big62 = std::ldexp(double((uint64_t(1) << 53) - 1), 9); // top bit 2^61: span 62
   std::uniform_int_distribution<int> axis(0, 2), ulp(-2, 2);
   int fixedStage = 0, zeros = 0;
   for (int wide = 0; wide < 2; ++wide)

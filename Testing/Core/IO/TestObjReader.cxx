@@ -25,7 +25,9 @@ TEST(ObjReader, TetrahedronWithTextureAndNormalReferences)
 {
   SurfaceMesh m;
   const Status s = readSurface(
-    writeObj("tet", std::string("# c\no tet\n") + kTet + "vt 0 0\nvn 0 0 1\nf 1/1 3/1/1 2//1\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"), m);
+    writeObj("tet",
+             std::string("# c\no tet\n") + kTet + "vt 0 0\nvn 0 0 1\nf 1/1 3/1/1 2//1\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"),
+    m);
   ASSERT_TRUE(s.ok()) << s.message;
   EXPECT_EQ(m.numberOfPoints(), 4);
   EXPECT_EQ(m.numberOfTriangles(), 4);
@@ -46,8 +48,8 @@ TEST(ObjReader, RefusesNonNumbersWithTheLine)
   for (const char* bad : { "nan", "inf", "abc", "1x", "-infinity" })
   {
     SurfaceMesh m;
-    const std::string path =
-      writeObj(std::string("bad_") + (bad[0] == '-' ? "minf" : bad), std::string("v 0 0 0\nv ") + bad + " 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string path = writeObj(std::string("bad_") + (bad[0] == '-' ? "minf" : bad),
+                                      std::string("v 0 0 0\nv ") + bad + " 0 0\nv 0 1 0\nf 1 2 3\n");
     const Status s = readSurface(path, m);
     ASSERT_FALSE(s.ok()) << bad;
     EXPECT_NE(s.message.find(path + ":2:"), std::string::npos) << s.message;

@@ -33,11 +33,11 @@ void expectClosedUnitCube(const volgrid::SurfaceMesh& mesh)
 
 TEST(PlyReader, AsciiQuadFacesAreTriangulated)
 {
-  const std::string path = writeFile("cube_quads.ply",
-    std::string("ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
-                "property float z\nelement face 6\nproperty list uchar int vertex_indices\nend_header\n") +
-      kCubePoints +
-      "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+  const std::string path =
+    writeFile("cube_quads.ply",
+              std::string("ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 6\nproperty list uchar int vertex_indices\nend_header\n") +
+                kCubePoints + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
   volgrid::SurfaceMesh mesh;
   volgrid::SurfaceReadInfo info;
   ASSERT_TRUE(volgrid::readSurface(path, mesh, &info).ok());
@@ -48,11 +48,11 @@ TEST(PlyReader, AsciiQuadFacesAreTriangulated)
 TEST(PlyReader, TriangleStripsKeepOneOrientation)
 {
   // The cube's six faces as strips of two triangles each, separated by -1 in one list.
-  const std::string path = writeFile("cube_strips.ply",
+  const std::string path = writeFile(
+    "cube_strips.ply",
     std::string("ply\nformat ascii 1.0\nelement vertex 8\nproperty double x\nproperty double y\n"
                 "property double z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n") +
-      kCubePoints +
-      "29 0 3 1 2 -1 4 5 7 6 -1 0 1 4 5 -1 1 2 5 6 -1 2 3 6 7 -1 3 0 7 4\n");
+      kCubePoints + "29 0 3 1 2 -1 4 5 7 6 -1 0 1 4 5 -1 1 2 5 6 -1 2 3 6 7 -1 3 0 7 4\n");
   volgrid::SurfaceMesh mesh;
   ASSERT_TRUE(volgrid::readSurface(path, mesh).ok());
   expectClosedUnitCube(mesh);
@@ -61,13 +61,15 @@ TEST(PlyReader, TriangleStripsKeepOneOrientation)
 TEST(PlyReader, BinaryBigEndianAndExtraProperties)
 {
   std::string body;
-  auto putBigFloat = [&](float f) {
+  auto putBigFloat = [&](float f)
+  {
     unsigned char b[4];
     std::memcpy(b, &f, 4);
     for (int i = 3; i >= 0; --i)
       body.push_back(static_cast<char>(b[i]));
   };
-  auto putBigInt = [&](int v) {
+  auto putBigInt = [&](int v)
+  {
     for (int i = 3; i >= 0; --i)
       body.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
   };
@@ -86,10 +88,12 @@ TEST(PlyReader, BinaryBigEndianAndExtraProperties)
     for (int v : f)
       putBigInt(v);
   }
-  const std::string path = writeFile("tet_big.ply",
-    "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-    "property float z\nproperty uchar red\nelement face 4\nproperty list uchar int vertex_indices\n"
-    "end_header\n" + body);
+  const std::string path =
+    writeFile("tet_big.ply",
+              "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+              "property float z\nproperty uchar red\nelement face 4\nproperty list uchar int vertex_indices\n"
+              "end_header\n" +
+                body);
   volgrid::SurfaceMesh mesh;
   ASSERT_TRUE(volgrid::readSurface(path, mesh).ok());
   EXPECT_EQ(mesh.numberOfTriangles(), 4);
@@ -99,15 +103,17 @@ TEST(PlyReader, BinaryBigEndianAndExtraProperties)
 TEST(PlyReader, MalformedFilesGiveClearErrors)
 {
   volgrid::SurfaceMesh mesh;
-  const std::string truncated = writeFile("truncated.ply",
-    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-    "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n");
+  const std::string truncated =
+    writeFile("truncated.ply",
+              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n");
   volgrid::Status s = volgrid::readSurface(truncated, mesh);
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message.find("ends inside element 'vertex'"), std::string::npos) << s.message;
-  const std::string badIndex = writeFile("bad_index.ply",
-    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-    "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  const std::string badIndex =
+    writeFile("bad_index.ply",
+              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
   s = volgrid::readSurface(badIndex, mesh);
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message.find("refers to vertex 7"), std::string::npos) << s.message;

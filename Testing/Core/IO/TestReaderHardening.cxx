@@ -67,7 +67,9 @@ TEST(ReaderHardening, PlyNumbersMustBeWholeTokens)
   s = readSurface(writeFile("nan.ply", plyHeader("4", "4") + "0 0 0\nnan 0 0\n0 1 0\n0 0 1\n" + faces), m);
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.kind, ErrorKind::NonFinitePoint);
-  s = readSurface(writeFile("idx.ply", plyHeader("4", "4") + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2.5\n3 0 3 1\n3 1 3 2\n3 2 3 0\n"), m);
+  s = readSurface(
+    writeFile("idx.ply", plyHeader("4", "4") + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2.5\n3 0 3 1\n3 1 3 2\n3 2 3 0\n"),
+    m);
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message.find("refers to vertex 2.5"), std::string::npos) << s.message;
 }

@@ -84,7 +84,8 @@ TEST(SurfaceReader, OffVariantsAndCountsOnNextLine)
   SurfaceMesh m;
   ASSERT_TRUE(readSurface(writeFile("c.off", coff), m).ok());
   EXPECT_EQ(m.numberOfTriangles(), 4);
-  const std::string split = "OFF\n\n# counts on their own line\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const std::string split =
+    "OFF\n\n# counts on their own line\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
   ASSERT_TRUE(readSurface(writeFile("split.off", split), m).ok());
   EXPECT_EQ(m.numberOfTriangles(), 4);
 }
@@ -148,7 +149,8 @@ TEST(SurfaceReader, GarbageNeverCrashes)
 TEST(SurfaceReader, StlAsciiSeveralSolidsAndTrailingText)
 {
   std::string stl;
-  auto facet = [&](const char* a, const char* b, const char* c) {
+  auto facet = [&](const char* a, const char* b, const char* c)
+  {
     stl += std::string("  facet normal 0 0 0\n    outer loop\n      vertex ") + a + "\n      vertex " + b +
       "\n      vertex " + c + "\n    endloop\n  endfacet\n";
   };
@@ -225,7 +227,8 @@ TEST(SurfaceReader, MeditTrianglesQuadsAndSkippedTets)
   EXPECT_EQ(m.patchIds[5], 3);
   EXPECT_NEAR(signedVolume(m), 1.0 / 3.0, 1e-12);
   EXPECT_TRUE(checkSurface(m).meshable());
-  const Status bad = readSurface(writeFile("bad.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0 0 0\nBogus 3\n"), m);
+  const Status bad =
+    readSurface(writeFile("bad.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0 0 0\nBogus 3\n"), m);
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.message.find("Bogus"), std::string::npos);
   EXPECT_NE(bad.message.find(":6:"), std::string::npos) << bad.message;
@@ -247,8 +250,9 @@ TEST(SurfaceReader, TetGenSmeshAndPoly)
   EXPECT_NEAR(signedVolume(m), 1.0, 1e-12);
   EXPECT_TRUE(checkSurface(m).meshable());
 
-  const std::string poly = nodes + "6 1\n1 0 10\n4 1 4 3 2\n1 0 11\n4 5 6 7 8\n1 0 12\n4 1 2 6 5\n"
-                                   "1 0 13\n4 2 3 7 6\n1 0 14\n4 3 4 8 7\n1\n4 4 1 5 8\n0\n0\n";
+  const std::string poly = nodes +
+    "6 1\n1 0 10\n4 1 4 3 2\n1 0 11\n4 5 6 7 8\n1 0 12\n4 1 2 6 5\n"
+    "1 0 13\n4 2 3 7 6\n1 0 14\n4 3 4 8 7\n1\n4 4 1 5 8\n0\n0\n";
   s = readSurface(writeFile("cube.poly", poly), m, &info);
   ASSERT_TRUE(s.ok()) << s.message;
   EXPECT_EQ(m.numberOfTriangles(), 12);
@@ -267,9 +271,10 @@ TEST(SurfaceReader, TetGenSmeshAndPoly)
 
 TEST(SurfaceReader, GmshV2AndV4)
 {
-  const std::string v2 = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n10 0 0 0\n20 1 0 0\n30 0 1 0\n40 0 0 1\n$EndNodes\n"
-                         "$Elements\n6\n1 15 2 0 1 10\n2 1 2 0 1 10 20\n3 2 2 5 1 10 30 20\n4 2 2 5 1 10 20 40\n"
-                         "5 2 2 0 2 10 40 30\n6 2 2 0 3 20 30 40\n$EndElements\n";
+  const std::string v2 =
+    "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n10 0 0 0\n20 1 0 0\n30 0 1 0\n40 0 0 1\n$EndNodes\n"
+    "$Elements\n6\n1 15 2 0 1 10\n2 1 2 0 1 10 20\n3 2 2 5 1 10 30 20\n4 2 2 5 1 10 20 40\n"
+    "5 2 2 0 2 10 40 30\n6 2 2 0 3 20 30 40\n$EndElements\n";
   SurfaceMesh m;
   SurfaceReadInfo info;
   Status s = readSurface(writeFile("tet2.msh", v2), m, &info);
@@ -280,9 +285,10 @@ TEST(SurfaceReader, GmshV2AndV4)
   EXPECT_EQ(m.patchIds[2], 2); // elementary tag when no physical group
   EXPECT_NEAR(signedVolume(m), 1.0 / 6.0, 1e-15);
 
-  const std::string v4 = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 1 0\n1 0 0 0 1 1 1 0 0\n$EndEntities\n"
-                         "$Nodes\n2 4 1 4\n0 1 0 1\n1\n0 0 0\n2 1 0 3\n2\n3\n4\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
-                         "$Elements\n2 5 1 5\n0 1 15 1\n1 1\n2 1 2 4\n2 1 3 2\n3 1 2 4\n4 1 4 3\n5 2 3 4\n$EndElements\n";
+  const std::string v4 =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 1 0\n1 0 0 0 1 1 1 0 0\n$EndEntities\n"
+    "$Nodes\n2 4 1 4\n0 1 0 1\n1\n0 0 0\n2 1 0 3\n2\n3\n4\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
+    "$Elements\n2 5 1 5\n0 1 15 1\n1 1\n2 1 2 4\n2 1 3 2\n3 1 2 4\n4 1 4 3\n5 2 3 4\n$EndElements\n";
   s = readSurface(writeFile("tet4.msh", v4), m, &info);
   ASSERT_TRUE(s.ok()) << s.message;
   EXPECT_EQ(m.numberOfTriangles(), 4);
@@ -293,8 +299,11 @@ TEST(SurfaceReader, GmshV2AndV4)
   const Status bin = readSurface(writeFile("bin.msh", "$MeshFormat\n4.1 1 8\n"), m);
   ASSERT_FALSE(bin.ok());
   EXPECT_NE(bin.message.find("binary"), std::string::npos);
-  const Status unknownNode = readSurface(writeFile("un.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n"
-                                                         "$Elements\n1\n1 2 0 1 2 3\n$EndElements\n"), m);
+  const Status unknownNode =
+    readSurface(writeFile("un.msh",
+                          "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n"
+                          "$Elements\n1\n1 2 0 1 2 3\n$EndElements\n"),
+                m);
   ASSERT_FALSE(unknownNode.ok());
   EXPECT_NE(unknownNode.message.find("unknown node"), std::string::npos) << unknownNode.message;
 }
@@ -306,7 +315,7 @@ TEST(SurfaceReader, MergeKeepsFirstOccurrenceOrder)
   m.addPoint(1, 0, 0);
   m.addPoint(-0.0, 0, 0); // equal to point 0
   m.addPoint(0, 1, 0);
-  m.addPoint(1, 0, 0);    // equal to point 1
+  m.addPoint(1, 0, 0); // equal to point 1
   m.addTriangle(2, 4, 3);
   const MergeResult r = mergeCoincidentPoints(m);
   EXPECT_EQ(r.mergedPoints, 2);

@@ -72,15 +72,14 @@ MesherResult meshChecked(const SurfaceMesh& s, const MesherOptions& o, const cha
   co.delaunay = false;
   co.euler = false;
   const MeshCheckReport check = checkMesh(m, co);
-  EXPECT_EQ(check.badVertices + check.invertedTets + check.badNeighbors + check.asymmetricNeighbors +
-      check.faceMismatches,
-    0)
+  EXPECT_EQ(
+    check.badVertices + check.invertedTets + check.badNeighbors + check.asymmetricNeighbors + check.faceMismatches, 0)
     << what << ": " << check.summary();
   return r;
 }
 
 // Mean length of the distinct edges whose two ends satisfy `in`.
-template <class F>
+template<class F>
 double meanEdge(const MesherResult& r, F&& in, int64_t* count = nullptr)
 {
   std::set<std::pair<int32_t, int32_t>> edges;
@@ -103,21 +102,24 @@ double meanEdge(const MesherResult& r, F&& in, int64_t* count = nullptr)
 std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
 {
   std::set<std::array<int32_t, 3>> faces;
-  m.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      if (m.neighbor(t, i) < 0)
-      {
-        int32_t f[3];
-        m.faceVertices(t, i, f);
-        std::rotate(f, std::min_element(f, f + 3), f + 3);
-        faces.insert({ f[0], f[1], f[2] });
-      }
-  });
+  m.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        if (m.neighbor(t, i) < 0)
+        {
+          int32_t f[3];
+          m.faceVertices(t, i, f);
+          std::rotate(f, std::min_element(f, f + 3), f + 3);
+          faces.insert({ f[0], f[1], f[2] });
+        }
+    });
   return faces;
 }
 // Meshes s with `options`, checks what every mesh must hold (valid, boundary == input, exact volume, no
 // inverted tet) and returns its dihedral angles; `what` names the case in failure messages.
-DihedralSummary meshAndCheck(const SurfaceMesh& s, const MesherOptions& options, MesherResult& r, const std::string& what)
+DihedralSummary meshAndCheck(const SurfaceMesh& s, const MesherOptions& options, MesherResult& r,
+                             const std::string& what)
 {
   const Status st = meshSurface(s, options, r);
   EXPECT_TRUE(st.ok()) << what << ": " << st.message;
@@ -214,8 +216,8 @@ TEST(MeshImprovement, ClusterPointsAppearAndDensifyTheirNeighbourhood)
   {
     bool found = false;
     for (size_t v = 0; v < r.points.size(); v += 3)
-      found |= r.points[v] == cluster[3 * c] && r.points[v + 1] == cluster[3 * c + 1] &&
-        r.points[v + 2] == cluster[3 * c + 2];
+      found |=
+        r.points[v] == cluster[3 * c] && r.points[v + 1] == cluster[3 * c + 1] && r.points[v + 2] == cluster[3 * c + 2];
     EXPECT_TRUE(found) << "cluster point " << c;
     auto near = [&](const double* p) { return dist(p, &cluster[3 * c]) < 0.12; };
     int64_t n0 = 0, n1 = 0;
@@ -242,7 +244,8 @@ TEST(MeshImprovement, GradationBoundsTheSizeGrowthBetweenNeighbouringTets)
     const MesherResult r = meshChecked(box, o, "graded box");
     TetMesh m;
     ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok());
-    auto meanEdgeOf = [&](int32_t t) {
+    auto meanEdgeOf = [&](int32_t t)
+    {
       const int32_t* v = m.vertices(t);
       double sum = 0;
       for (int i = 0; i < 4; ++i)
@@ -251,17 +254,19 @@ TEST(MeshImprovement, GradationBoundsTheSizeGrowthBetweenNeighbouringTets)
       return sum / 6;
     };
     std::vector<double> ratios;
-    m.forEachTet([&](int32_t t) {
-      for (int i = 0; i < 4; ++i)
+    m.forEachTet(
+      [&](int32_t t)
       {
-        const int32_t u = m.neighbor(t, i);
-        if (u > t)
+        for (int i = 0; i < 4; ++i)
         {
-          const double a = meanEdgeOf(t), b = meanEdgeOf(u);
-          ratios.push_back(std::max(a, b) / std::min(a, b));
+          const int32_t u = m.neighbor(t, i);
+          if (u > t)
+          {
+            const double a = meanEdgeOf(t), b = meanEdgeOf(u);
+            ratios.push_back(std::max(a, b) / std::min(a, b));
+          }
         }
-      }
-    });
+      });
     std::sort(ratios.begin(), ratios.end());
     ASSERT_FALSE(ratios.empty());
     EXPECT_LE(ratios.back(), 2.5) << "G " << g;
@@ -281,12 +286,14 @@ TEST(MeshImprovement, AdaptivityHalvesTheSizeInABoxAndKeepsTheBoundary)
   // Current spacing per vertex (mean incident edge length), halved in the octant x, y, z > 0.
   std::vector<double> sum(static_cast<size_t>(m.numVertices()), 0), cnt(sum.size(), 0);
   std::set<std::pair<int32_t, int32_t>> edges;
-  m.forEachTet([&](int32_t t) {
-    const int32_t* v = m.vertices(t);
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        edges.insert({ std::min(v[i], v[j]), std::max(v[i], v[j]) });
-  });
+  m.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = m.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          edges.insert({ std::min(v[i], v[j]), std::max(v[i], v[j]) });
+    });
   for (const auto& e : edges)
   {
     const double l = dist(m.point(e.first), m.point(e.second));
@@ -296,7 +303,8 @@ TEST(MeshImprovement, AdaptivityHalvesTheSizeInABoxAndKeepsTheBoundary)
   std::vector<double> target(sum.size());
   for (size_t v = 0; v < sum.size(); ++v)
     target[v] = cnt[v] > 0 ? sum[v] / cnt[v] * (inBox(m.point(int32_t(v))) ? 0.5 : 1.0) : 0;
-  auto count = [&](bool deepInside) {
+  auto count = [&](bool deepInside)
+  {
     int64_t n = 0;
     for (int32_t v = 0; v < m.numVertices(); ++v)
     {
@@ -329,8 +337,8 @@ TEST(MeshImprovement, AdaptivityHalvesTheSizeInABoxAndKeepsTheBoundary)
 TEST(MeshImprovement, SphereInSphereDefaultsReach15DegreesWithTheExactBoundary)
 {
   // The benchmark's domain at a smaller scale (body r = 1 with 1,280 triangles, far field r = 10).
-  const SurfaceMesh s = combine(enclosure(EnclosureShape::Sphere, 10.0, 1.25),
-    enclosure(EnclosureShape::Sphere, 1.0, 1.0515 / 7.9));
+  const SurfaceMesh s =
+    combine(enclosure(EnclosureShape::Sphere, 10.0, 1.25), enclosure(EnclosureShape::Sphere, 1.0, 1.0515 / 7.9));
   const MesherResult r = meshChecked(s, MesherOptions(), "sphere in sphere");
   TetMesh m;
   ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok());
@@ -406,9 +414,9 @@ TEST(MeshImprovement, BadOptionsAndTetListsAreReported)
   EXPECT_EQ(m.numTets(), 1);
   EXPECT_EQ(tetMeshFromTets(pts, { 0, 1, 2, 7 }, m).kind, ErrorKind::InvalidOption);
   EXPECT_EQ(tetMeshFromTets({ 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 1 }, { 0, 1, 2, 3 }, m).kind,
-    ErrorKind::InvalidOption); // flat
+            ErrorKind::InvalidOption); // flat
   EXPECT_EQ(tetMeshFromTets(pts, { 0, 1, 2, 3, 1, 2, 3, 4, 0, 1, 2, 4, 1, 2, 3, 0 }, m).kind,
-    ErrorKind::InvalidOption); // face 1-2-3 in three tets
+            ErrorKind::InvalidOption); // face 1-2-3 in three tets
 }
 
 TEST(MeshImprovement, BoundaryCapsOfCorpusModelsAreSplitBeyondTetGen)
@@ -442,7 +450,7 @@ TEST(MeshImprovement, SteinerPointsSqueezedAgainstTheBoundaryAreCollapsed)
   // 2 degrees (spool) and 0.15 (hand), with the exact boundary.
   const std::string dir = VOLGRID_SHARED_DATA_DIR;
   for (const auto& [file, floor] : { std::pair<const char*, double>{ "tetgen-tests/cgal/spool.off", 2.0 },
-         std::pair<const char*, double>{ "tetgen-tests/cgal/hand.off", 0.15 } })
+                                     std::pair<const char*, double>{ "tetgen-tests/cgal/hand.off", 0.15 } })
   {
     SurfaceMesh s;
     if (!readSurface(dir + "/" + file, s).ok())
@@ -499,12 +507,13 @@ TEST(MeshImprovement, WorstTetsGetAnInsertedPointAndBeatTetGenTies)
     double tie, floor;
   };
   for (const Case& c : { Case{ "tetgen-tests/testingdrafts/slit-7.smesh", 17.27, 20.0 },
-         Case{ "tetgen-tests/cgal/hand.off", 0.1636, 0.3 }, Case{ "common-3d-test-models/cheburashka.obj", 0.0638, 0.07 } })
+                         Case{ "tetgen-tests/cgal/hand.off", 0.1636, 0.3 },
+                         Case{ "common-3d-test-models/cheburashka.obj", 0.0638, 0.07 } })
   {
     SurfaceMesh s;
     const std::string path = dir + "/" + c.file;
     if (!(path.size() > 4 && path.compare(path.size() - 4, 4, ".obj") == 0 ? readPlainObj(path, s)
-                                                                            : readSurface(path, s).ok()))
+                                                                           : readSurface(path, s).ok()))
       GTEST_SKIP() << "no corpus at " << dir;
     for (const bool insertion : { false, true })
     {

@@ -35,23 +35,26 @@ void fieldMesh(EnclosureShape shape, double edge, TetMesh& mesh)
   opt.keepGhosts = false;
   ASSERT_TRUE(buildDelaunay(s.points.data(), s.numberOfPoints(), opt, mesh, map).ok());
   SizingField f;
-  ASSERT_TRUE(f.build(s.points.data(), s.numberOfPoints(), s.triangles.data(), s.numberOfTriangles(), SizingOptions()).ok());
+  ASSERT_TRUE(
+    f.build(s.points.data(), s.numberOfPoints(), s.triangles.data(), s.numberOfTriangles(), SizingOptions()).ok());
   ASSERT_TRUE(insertFieldPoints(mesh, f, FieldPointOptions()).ok());
 }
 
 std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
 {
   std::set<std::array<int32_t, 3>> faces;
-  m.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      if (m.neighbor(t, i) < 0)
-      {
-        int32_t f[3];
-        m.faceVertices(t, i, f);
-        std::rotate(f, std::min_element(f, f + 3), f + 3);
-        faces.insert({ f[0], f[1], f[2] });
-      }
-  });
+  m.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        if (m.neighbor(t, i) < 0)
+        {
+          int32_t f[3];
+          m.faceVertices(t, i, f);
+          std::rotate(f, std::min_element(f, f + 3), f + 3);
+          faces.insert({ f[0], f[1], f[2] });
+        }
+    });
   return faces;
 }
 
@@ -112,7 +115,8 @@ TEST(MeshOptimization, SmoothingOnlyMovesInteriorVerticesAndNeverWorsens)
   const std::vector<double> pinnedXYZ(mesh.point(pinned), mesh.point(pinned) + 3);
   // Star minimum of every vertex before.
   TetEditor editor(mesh);
-  auto starMin = [&](int32_t v) {
+  auto starMin = [&](int32_t v)
+  {
     std::vector<int32_t> star;
     editor.star(v, star);
     double q = 2;
@@ -148,17 +152,19 @@ TEST(MeshOptimization, ConstrainedInteriorFacesSurviveAndTheirVerticesStay)
   fieldMesh(EnclosureShape::Box, 0.2, mesh);
   FaceConstraints fc;
   std::vector<std::array<int32_t, 3>> frozen;
-  mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      if (mesh.neighbor(t, i) > t && t % 11 == 0)
-      {
-        int32_t f[3];
-        mesh.faceVertices(t, i, f);
-        fc.add(f[0], f[1], f[2]);
-        std::sort(f, f + 3);
-        frozen.push_back({ f[0], f[1], f[2] });
-      }
-  });
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        if (mesh.neighbor(t, i) > t && t % 11 == 0)
+        {
+          int32_t f[3];
+          mesh.faceVertices(t, i, f);
+          fc.add(f[0], f[1], f[2]);
+          std::sort(f, f + 3);
+          frozen.push_back({ f[0], f[1], f[2] });
+        }
+    });
   std::vector<double> xyz0;
   for (const auto& f : frozen)
     for (int32_t v : f)
@@ -168,16 +174,18 @@ TEST(MeshOptimization, ConstrainedInteriorFacesSurviveAndTheirVerticesStay)
   ASSERT_TRUE(optimizeMesh(mesh, &fc, nullptr, &labels, OptimizationOptions(), nullptr, &rep).ok());
   EXPECT_GT(rep.after.minDihedral, rep.before.minDihedral);
   std::set<std::array<int32_t, 3>> faces;
-  mesh.forEachTet([&](int32_t t) {
-    EXPECT_EQ(labels[t], 7);
-    for (int i = 0; i < 4; ++i)
+  mesh.forEachTet(
+    [&](int32_t t)
     {
-      int32_t f[3];
-      mesh.faceVertices(t, i, f);
-      std::sort(f, f + 3);
-      faces.insert({ f[0], f[1], f[2] });
-    }
-  });
+      EXPECT_EQ(labels[t], 7);
+      for (int i = 0; i < 4; ++i)
+      {
+        int32_t f[3];
+        mesh.faceVertices(t, i, f);
+        std::sort(f, f + 3);
+        faces.insert({ f[0], f[1], f[2] });
+      }
+    });
   for (const auto& f : frozen)
     EXPECT_TRUE(faces.count(f));
   std::vector<double> xyz1;
@@ -285,15 +293,17 @@ TEST(MeshOptimization, VertexCollapseRemovesAnInteriorPointSqueezedAgainstAFace)
 
   // A constrained face through the point forbids the collapse.
   FaceConstraints fc;
-  m.forEachTet([&](int32_t t) {
-    if (fc.empty() && m.localIndex(t, p) >= 0)
+  m.forEachTet(
+    [&](int32_t t)
     {
-      const int32_t* v = m.vertices(t);
-      const int ip = m.localIndex(t, p);
-      const int32_t f[3] = { v[(ip + 1) % 4], v[(ip + 2) % 4], p };
-      fc.add(f[0], f[1], f[2]);
-    }
-  });
+      if (fc.empty() && m.localIndex(t, p) >= 0)
+      {
+        const int32_t* v = m.vertices(t);
+        const int ip = m.localIndex(t, p);
+        const int32_t f[3] = { v[(ip + 1) % 4], v[(ip + 2) % 4], p };
+        fc.add(f[0], f[1], f[2]);
+      }
+    });
   {
     TetEditor constrained(m, &fc);
     constrained.rebuildVertexMap();
@@ -311,5 +321,5 @@ TEST(MeshOptimization, VertexCollapseRemovesAnInteriorPointSqueezedAgainstAFace)
   EXPECT_TRUE(checkMesh(m, noDelaunay()).valid) << checkMesh(m, noDelaunay()).summary();
   EXPECT_EQ(hullFaces(m), hull);
   EXPECT_NEAR(summarizeDihedrals(m).minDihedral, 70.5288, 1e-3); // the regular tet
-  EXPECT_FALSE(tryVertexCollapse(editor, p, nullptr)); // in no tet any more
+  EXPECT_FALSE(tryVertexCollapse(editor, p, nullptr));           // in no tet any more
 }

@@ -36,17 +36,19 @@ std::vector<double> randomPoints(size_t n, uint64_t seed)
 int32_t someInteriorTet(const TetMesh& mesh)
 {
   int32_t found = -1;
-  mesh.forEachFiniteTet([&](int32_t t) {
-    if (found >= 0)
-      return;
-    for (int i = 0; i < 4; ++i)
+  mesh.forEachFiniteTet(
+    [&](int32_t t)
     {
-      const int32_t u = mesh.neighbor(t, i);
-      if (u < 0 || mesh.isGhost(u))
+      if (found >= 0)
         return;
-    }
-    found = t;
-  });
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = mesh.neighbor(t, i);
+        if (u < 0 || mesh.isGhost(u))
+          return;
+      }
+      found = t;
+    });
   return found;
 }
 
@@ -54,7 +56,9 @@ int32_t someInteriorTet(const TetMesh& mesh)
 TetMesh twoTets(double apexHeight)
 {
   TetMesh mesh;
-  const double pts[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0.3, 0.3, apexHeight }, { 0.3, 0.3, -apexHeight } };
+  const double pts[5][3] = {
+    { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0.3, 0.3, apexHeight }, { 0.3, 0.3, -apexHeight }
+  };
   for (const auto& p : pts)
     mesh.addPoint(p);
   const int32_t t = mesh.newTet(0, 1, 2, 3); // positive: 3 above the ccw triangle 012
@@ -167,28 +171,30 @@ TEST(MeshChecker, DetectsANonConvexHull)
   int32_t moved = -1;
   int axis = -1;
   double value = 0;
-  mesh.forEachTet([&](int32_t g) {
-    const int k = mesh.ghostIndex(g);
-    if (moved >= 0 || k < 0)
-      return;
-    int32_t f[3];
-    mesh.faceVertices(g, k, f);
-    for (int a = 0; a < 3 && axis < 0; ++a)
-      if (mesh.point(f[0])[a] == mesh.point(f[1])[a] && mesh.point(f[1])[a] == mesh.point(f[2])[a])
-      {
-        axis = a;
-        value = mesh.point(f[0])[a];
-      }
-    for (int i = 0; i < 4 && moved < 0; ++i)
+  mesh.forEachTet(
+    [&](int32_t g)
     {
-      if (i == k)
-        continue;
-      const int32_t h = mesh.neighbor(g, i);
-      const int32_t x = mesh.vertex(h, mesh.mirrorFace(g, i));
-      if (mesh.point(x)[axis] == value)
-        moved = x; // coplanar neighbour hull face
-    }
-  });
+      const int k = mesh.ghostIndex(g);
+      if (moved >= 0 || k < 0)
+        return;
+      int32_t f[3];
+      mesh.faceVertices(g, k, f);
+      for (int a = 0; a < 3 && axis < 0; ++a)
+        if (mesh.point(f[0])[a] == mesh.point(f[1])[a] && mesh.point(f[1])[a] == mesh.point(f[2])[a])
+        {
+          axis = a;
+          value = mesh.point(f[0])[a];
+        }
+      for (int i = 0; i < 4 && moved < 0; ++i)
+      {
+        if (i == k)
+          continue;
+        const int32_t h = mesh.neighbor(g, i);
+        const int32_t x = mesh.vertex(h, mesh.mirrorFace(g, i));
+        if (mesh.point(x)[axis] == value)
+          moved = x; // coplanar neighbour hull face
+      }
+    });
   ASSERT_GE(moved, 0);
   mesh.points[3 * moved + axis] += value == 0 ? -0.01 : 0.01;
   const MeshCheckReport r = checkMesh(mesh);
@@ -201,7 +207,8 @@ TEST(MeshChecker, DetectsBadEulerCharacteristic)
 {
   // Two disjoint tets: each is valid locally but the complex is not a ball (V-E+F-T = 2).
   TetMesh mesh;
-  const double pts[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 }, { 5, 0, 1 } };
+  const double pts[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+                             { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 }, { 5, 0, 1 } };
   for (const auto& p : pts)
     mesh.addPoint(p);
   mesh.newTet(0, 1, 2, 3);

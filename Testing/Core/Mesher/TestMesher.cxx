@@ -20,7 +20,8 @@ MesherResult meshAndCheck(const SurfaceMesh& s, MesherOptions opt = MesherOption
   EXPECT_TRUE(st.ok()) << st.message;
   if (!st.ok())
     return r;
-  BoundaryCheckReport br = checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
+  BoundaryCheckReport br =
+    checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
   EXPECT_TRUE(br.meshValid()) << br.summary();
   if (opt.regionRule != RegionRule::KeepAll)
   {
@@ -189,10 +190,11 @@ TEST(Mesher, ForcedTetsAreMarked)
   for (size_t t = 0; t < r.tetForced.size(); ++t)
   {
     const int32_t* v = &r.tets[4 * t];
-    const bool boundary = v[0] < r.numInputPoints && v[1] < r.numInputPoints && v[2] < r.numInputPoints &&
-      v[3] < r.numInputPoints;
-    const bool bad = tetSineQuality(&r.points[3 * static_cast<size_t>(v[0])], &r.points[3 * static_cast<size_t>(v[1])],
-                       &r.points[3 * static_cast<size_t>(v[2])], &r.points[3 * static_cast<size_t>(v[3])]) < q10;
+    const bool boundary =
+      v[0] < r.numInputPoints && v[1] < r.numInputPoints && v[2] < r.numInputPoints && v[3] < r.numInputPoints;
+    const bool bad =
+      tetSineQuality(&r.points[3 * static_cast<size_t>(v[0])], &r.points[3 * static_cast<size_t>(v[1])],
+                     &r.points[3 * static_cast<size_t>(v[2])], &r.points[3 * static_cast<size_t>(v[3])]) < q10;
     EXPECT_EQ(r.tetForced[t] != 0, boundary && bad) << t;
     marked += r.tetForced[t];
   }

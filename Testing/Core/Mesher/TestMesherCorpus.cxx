@@ -17,12 +17,12 @@
 
 #include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
-#include <thread>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace volgrid;
@@ -32,9 +32,15 @@ namespace
 
 constexpr int64_t kMaxTriangles = 300000;
 // Cases (models and enclosure variants) meshed and checked by this implementation when it was written.
-constexpr int kBaselineChecked = 176; // planar flips, ring chords, retry with presplit segments, crossing-face edge removal, slab facets, piecewise facets, Steiner points past the flip budget, vertex cones, no edge along split segments, star flips, cavity carving, segment cones, no size limit below 300k triangles
+constexpr int kBaselineChecked =
+  176; // planar flips, ring chords, retry with presplit segments, crossing-face edge removal, slab facets, piecewise
+       // facets, Steiner points past the flip budget, vertex cones, no edge along split segments, star flips, cavity
+       // carving, segment cones, no size limit below 300k triangles
 
-std::string dataDir() { return VOLGRID_SHARED_DATA_DIR; }
+std::string dataDir()
+{
+  return VOLGRID_SHARED_DATA_DIR;
+}
 
 // Rows of SOURCES.md marked watertight YES whose defects are only polygon faces / orientation.
 std::vector<std::string> cleanClosedFiles()
@@ -66,7 +72,7 @@ std::vector<std::string> cleanClosedFiles()
       std::string item;
       while (std::getline(ds, item, ';'))
         if (item.find("non-triangle faces") == std::string::npos &&
-          item.find("inconsistently oriented edges") == std::string::npos)
+            item.find("inconsistently oriented edges") == std::string::npos)
           clean = false;
     }
     if (clean)
@@ -89,13 +95,13 @@ struct CaseResult
 
 // This test is about boundary recovery, exterior removal and Steiner point removal: the grid control and
 // quality stage (MesherOptions::improvement, when present) is switched off to keep the corpus fast.
-template <class T>
+template<class T>
 auto noImprovement(T& o, int) -> decltype(o.improvement.fieldPoints = false, o.improvement.optimize = false, void())
 {
   o.improvement.fieldPoints = false;
   o.improvement.optimize = false;
 }
-template <class T>
+template<class T>
 void noImprovement(T&, long)
 {
 }
@@ -118,14 +124,16 @@ CaseResult runCase(const std::string& name, const SurfaceMesh& s)
     return cr;
   }
   cr.meshed = true;
-  BoundaryCheckReport br = checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
+  BoundaryCheckReport br =
+    checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
   EXPECT_TRUE(br.ok()) << name << ": " << br.summary();
   EXPECT_EQ(r.stats.steinerBoundary, 0) << name;
   cr.checked = br.ok() && r.stats.steinerBoundary == 0;
-  std::snprintf(buf, sizeof buf, "%-52s %s tris %7lld tets %8lld missE %5lld missF %4lld steiner(int) %5lld volErr %.1e %6.2fs",
-    name.c_str(), cr.checked ? "ok    " : "BAD   ", (long long)r.stats.inputTriangles, (long long)r.stats.tets,
-    (long long)r.stats.missingEdges, (long long)r.stats.missingFacets, (long long)r.stats.steinerInterior,
-    br.relativeVolumeError, sec);
+  std::snprintf(buf, sizeof buf,
+                "%-52s %s tris %7lld tets %8lld missE %5lld missF %4lld steiner(int) %5lld volErr %.1e %6.2fs",
+                name.c_str(), cr.checked ? "ok    " : "BAD   ", (long long)r.stats.inputTriangles,
+                (long long)r.stats.tets, (long long)r.stats.missingEdges, (long long)r.stats.missingFacets,
+                (long long)r.stats.steinerInterior, br.relativeVolumeError, sec);
   cr.line = buf;
   return cr;
 }
@@ -189,11 +197,12 @@ TEST(MesherCorpus, CleanClosedModels)
   std::vector<size_t> order(cases.size());
   for (size_t i = 0; i < order.size(); ++i)
     order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return cases[a].surface.numberOfTriangles() > cases[b].surface.numberOfTriangles();
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b)
+                   { return cases[a].surface.numberOfTriangles() > cases[b].surface.numberOfTriangles(); });
   std::atomic<size_t> next{ 0 };
-  auto worker = [&]() {
+  auto worker = [&]()
+  {
     for (size_t k = next++; k < order.size(); k = next++)
     {
       Case& c = cases[order[k]];
@@ -217,7 +226,7 @@ TEST(MesherCorpus, CleanClosedModels)
   for (auto& l : lines)
     std::printf("%s\n", l.c_str());
   std::printf("corpus: %d cases, %d meshed, %d checked (boundary == input, volume exact), %d files skipped\n", total,
-    meshed, checked, skipped);
+              meshed, checked, skipped);
   std::printf("not meshed (%zu):", failedNames.size());
   for (auto& n : failedNames)
     std::printf(" [%s]", n.c_str());
@@ -246,6 +255,7 @@ TEST(MesherCorpus, FlatSteinerStarsRemovedByVertexCone)
   Status st = meshSurface(s, options, r);
   ASSERT_TRUE(st.ok()) << st.message;
   EXPECT_EQ(r.stats.steinerBoundary, 0);
-  BoundaryCheckReport br = checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
+  BoundaryCheckReport br =
+    checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
   EXPECT_TRUE(br.ok()) << br.summary();
 }

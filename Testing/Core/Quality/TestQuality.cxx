@@ -1,4 +1,5 @@
-// Analytic values of the quality metrics (Core/Quality/Quality.h) and their statistics (Core/Quality/QualityStatistics.h).
+// Analytic values of the quality metrics (Core/Quality/Quality.h) and their statistics
+// (Core/Quality/QualityStatistics.h).
 #include "Quality.h"
 #include "QualityStatistics.h"
 
@@ -47,7 +48,7 @@ struct Surface
   SurfaceSummary summary() const
   {
     return surfaceSummary(points.data(), static_cast<int64_t>(points.size() / 3), tris.data(),
-      static_cast<int64_t>(tris.size() / 3));
+                          static_cast<int64_t>(tris.size() / 3));
   }
 };
 
@@ -58,8 +59,8 @@ Surface cube(bool open)
   for (int i = 0; i < 8; ++i)
     s.addPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
   // quads as outward (counter-clockwise seen from outside) vertex loops
-  const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
-    { 1, 3, 7, 5 } };
+  const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
+                            { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
   for (int q = 0; q < 6; ++q)
   {
     if (open && q == 1)
@@ -164,7 +165,7 @@ TEST(Quality, Cap)
   const P apex = { 0, 0, h };
   const TetMetrics m = measure(a, b, c, apex);
   EXPECT_NEAR(m.minDihedralAngle, std::atan(2.0 * h) * kDeg, 1e-10); // at the base edges
-  EXPECT_GT(m.maxDihedralAngle, 175.0); // side faces nearly coplanar around the apex edges
+  EXPECT_GT(m.maxDihedralAngle, 175.0);                              // side faces nearly coplanar around the apex edges
   double omega[4];
   tetSolidAngles(a.data(), b.data(), c.data(), apex.data(), omega);
   EXPECT_GT(omega[3], 0.95 * 2 * kPi); // the apex sees almost a hemisphere
@@ -322,8 +323,8 @@ TEST(Quality, NonManifoldEdge)
 TEST(Quality, VolumeGradient)
 {
   // Tets 0 and 1 share face (0,1,2); tet 2 shares only an edge with tet 0; tet 3 is apart.
-  const std::vector<double> pts = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -2, 1, 1, 1, 5, 5, 5, 6, 5, 5, 5,
-    6, 5, 5, 5, 6 };
+  const std::vector<double> pts = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -2,
+                                    1, 1, 1, 5, 5, 5, 6, 5, 5, 5, 6, 5, 5, 5, 6 };
   const std::vector<long long> tets = { 0, 1, 2, 3, 0, 2, 1, 4, 0, 1, 5, 3, 6, 7, 8, 9 };
   std::vector<double> volume(4), gradient(4);
   TetMetricArrays out;

@@ -21,8 +21,8 @@ namespace
 
 struct Counts
 {
-  int64_t inverted = 0, badIds = 0, overShared = 0, sameOrientation = 0, boundary = 0, notInput = 0,
-          missing = 0, interior = 0, added = 0;
+  int64_t inverted = 0, badIds = 0, overShared = 0, sameOrientation = 0, boundary = 0, notInput = 0, missing = 0,
+          interior = 0, added = 0;
   bool operator==(const Counts& o) const
   {
     return inverted == o.inverted && badIds == o.badIds && overShared == o.overShared &&
@@ -40,7 +40,7 @@ bool sameCyclic(const int32_t* f, const int32_t* s)
 }
 
 Counts reference(const std::vector<double>& points, int32_t numInputPoints, const std::vector<int32_t>& tets,
-  const std::vector<int32_t>& triangles)
+                 const std::vector<int32_t>& triangles)
 {
   Counts c;
   const int64_t np = static_cast<int64_t>(points.size() / 3), nt = static_cast<int64_t>(tets.size() / 4);
@@ -129,8 +129,8 @@ TEST(BoundaryCheck, SameCountsAsAHashTableOnGoodAndBrokenMeshes)
   ASSERT_TRUE(makeEnclosure(eo, s).ok());
   MesherResult m;
   ASSERT_TRUE(meshSurface(s, MesherOptions(), m).ok());
-  const BoundaryCheckReport good = checkBoundaryConformity(m.points, m.numInputPoints, m.tets, s.triangles,
-    m.stats.enclosedVolume);
+  const BoundaryCheckReport good =
+    checkBoundaryConformity(m.points, m.numInputPoints, m.tets, s.triangles, m.stats.enclosedVolume);
   EXPECT_TRUE(good.ok()) << good.summary();
   EXPECT_TRUE(good.firstProblems.empty());
   EXPECT_TRUE(counts(good) == reference(m.points, m.numInputPoints, m.tets, s.triangles));
@@ -168,8 +168,10 @@ TEST(BoundaryCheck, SameCountsAsAHashTableOnGoodAndBrokenMeshes)
           break;
       }
     }
-    const BoundaryCheckReport r = checkBoundaryConformity(m.points, m.numInputPoints, tets, tris, m.stats.enclosedVolume);
-    EXPECT_TRUE(counts(r) == reference(m.points, m.numInputPoints, tets, tris)) << "trial " << trial << ": " << r.summary();
+    const BoundaryCheckReport r =
+      checkBoundaryConformity(m.points, m.numInputPoints, tets, tris, m.stats.enclosedVolume);
+    EXPECT_TRUE(counts(r) == reference(m.points, m.numInputPoints, tets, tris))
+      << "trial " << trial << ": " << r.summary();
     EXPECT_FALSE(r.ok()) << "trial " << trial;
     EXPECT_FALSE(r.firstProblems.empty()) << "trial " << trial;
   }

@@ -4,9 +4,9 @@
 #include "Delaunay.h"
 #include "FacetPieces.h"
 #include "FacetRecovery.h"
-#include "PlanarFlip.h"
 #include "MeshChecker.h"
 #include "MesherTestShapes.h"
+#include "PlanarFlip.h"
 #include "Predicates.h"
 #include "Quality.h"
 #include "SurfaceReader.h"
@@ -194,7 +194,9 @@ TEST(BoundaryRecovery, DelaunayCavityFill)
     EXPECT_GT(predicates::orient3d(a, b, c, d), 0);
     const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] },
                  w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-    vol += (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+    vol +=
+      (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) /
+      6;
   }
   EXPECT_NEAR(vol, 1.0, 1e-12);
   // Flip the diagonal of one square: that cavity boundary is not in the Delaunay tetrahedralization.
@@ -245,14 +247,25 @@ TEST(BoundaryRecovery, DelaunayCavityFill)
 // is already a face (the two bipyramids are joined along MC by tets PMCR and QMCS).
 TEST(BoundaryRecovery, NonCoplanarPiecesRecovered)
 {
-  const double pts[8][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 1, 2, 0 }, { 1, 0, 1e-17 }, { 0.7, 0.5, 1 }, { 0.7, 0.5, -1 },
-    { 1.4, 0.6, 1 }, { 1.4, 0.6, -1 } };
-  enum { A, B, C, M, P, Q, R, S };
-  auto build = [&](TetMesh& m) {
+  const double pts[8][3] = { { 0, 0, 0 },     { 2, 0, 0 },      { 1, 2, 0 },     { 1, 0, 1e-17 },
+                             { 0.7, 0.5, 1 }, { 0.7, 0.5, -1 }, { 1.4, 0.6, 1 }, { 1.4, 0.6, -1 } };
+  enum
+  {
+    A,
+    B,
+    C,
+    M,
+    P,
+    Q,
+    R,
+    S
+  };
+  auto build = [&](TetMesh& m)
+  {
     for (auto& p : pts)
       m.addPoint(p);
     std::vector<std::array<int32_t, 4>> tets = { { P, Q, A, M }, { P, Q, M, C }, { P, Q, C, A }, { M, B, C, R },
-      { M, B, C, S }, { P, M, C, R }, { Q, M, C, S } };
+                                                 { M, B, C, S }, { P, M, C, R }, { Q, M, C, S } };
     for (auto& t : tets)
       if (predicates::orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) < 0)
         std::swap(t[0], t[1]);
@@ -260,7 +273,8 @@ TEST(BoundaryRecovery, NonCoplanarPiecesRecovered)
     EXPECT_TRUE(ed.replace({}, tets, nullptr, true));
   };
   ASSERT_NE(predicates::orient3d(pts[A], pts[B], pts[C], pts[M]), 0);
-  auto constraints = [](BoundaryConstraints& bc, std::vector<int32_t>& subs) {
+  auto constraints = [](BoundaryConstraints& bc, std::vector<int32_t>& subs)
+  {
     const int32_t tri[3] = { A, B, C };
     bc.init(tri, 1);
     bc.removeSubface(0);
@@ -295,10 +309,20 @@ TEST(BoundaryRecovery, NonCoplanarPiecesRecovered)
 TEST(BoundaryRecovery, NoEdgeAlongSplitSegment)
 {
   // Face xyz with apexes A above and B below: the 2-3 flip of xyz creates edge AB.
-  const double pts[7][3] = { { 0, 0, 1 }, { 0, 0, -1 }, { 1, 0, 0 }, { -1, 1, 0 }, { -1, -1, 0 }, { 0, 1e-17, 0 },
-    { 3, 3, 3 } };
-  enum { A, B, X, Y, Z, M, W };
-  auto run = [&](bool split) {
+  const double pts[7][3] = { { 0, 0, 1 },   { 0, 0, -1 },    { 1, 0, 0 }, { -1, 1, 0 },
+                             { -1, -1, 0 }, { 0, 1e-17, 0 }, { 3, 3, 3 } };
+  enum
+  {
+    A,
+    B,
+    X,
+    Y,
+    Z,
+    M,
+    W
+  };
+  auto run = [&](bool split)
+  {
     TetMesh m;
     for (auto& p : pts)
       m.addPoint(p);
@@ -337,12 +361,23 @@ TEST(BoundaryRecovery, NoEdgeAlongSplitSegment)
 // pieces become mesh faces with the rest of the mesh valid.
 TEST(BoundaryRecovery, NonPlanarSplitTriangleBySlab)
 {
-  const double pts[6][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 1, 2, 0 }, { 1, 0, 1e-17 }, { 1, 0.6, 0.1 }, { 1, 0.6, -0.1 } };
-  enum { A, B, C, M, P, Q };
+  const double pts[6][3] = {
+    { 0, 0, 0 }, { 2, 0, 0 }, { 1, 2, 0 }, { 1, 0, 1e-17 }, { 1, 0.6, 0.1 }, { 1, 0.6, -0.1 }
+  };
+  enum
+  {
+    A,
+    B,
+    C,
+    M,
+    P,
+    Q
+  };
   SurfaceMesh s;
   for (auto& p : pts)
     s.points.insert(s.points.end(), p, p + 3);
-  auto setup = [&](RecoverySetup& r, std::vector<int32_t>& subs) {
+  auto setup = [&](RecoverySetup& r, std::vector<int32_t>& subs)
+  {
     const int32_t tri[3] = { A, B, C };
     r.bc.init(tri, 1);
     r.bc.removeSubface(0);
@@ -378,7 +413,8 @@ TEST(BoundaryRecovery, NonPlanarSplitTriangleBySlab)
 // A needle-thin CAD part (part.off) needs more points than the stage allows: it says so instead.
 TEST(BoundaryRecovery, PresplitSegmentsArePresentBeforeAnyFlip)
 {
-  auto allSegments = [](const SurfaceMesh& s) {
+  auto allSegments = [](const SurfaceMesh& s)
+  {
     std::unordered_set<uint64_t> all;
     for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
       for (int i = 0; i < 3; ++i)
@@ -425,10 +461,20 @@ TEST(BoundaryRecovery, PresplitSegmentsArePresentBeforeAnyFlip)
 // convex the flip is refused and the mesh left as it was (the two floor triangles would overlap).
 TEST(BoundaryRecovery, PlanarFlipReplacesTheDiagonalOfAFlatQuad)
 {
-  auto run = [](double px, bool twoAbove) {
-    const double pts[7][3] = { { -1, 0, 0 }, { 1, 0, 0 }, { px, -1, 0 }, { px, 1, 0 }, { 0.3, -0.5, 1 },
-      { -0.3, 0.5, 1 }, { 0, 0, -1 } };
-    enum { X, Y, P, Q, U1, U2, W };
+  auto run = [](double px, bool twoAbove)
+  {
+    const double pts[7][3] = { { -1, 0, 0 },     { 1, 0, 0 },      { px, -1, 0 }, { px, 1, 0 },
+                               { 0.3, -0.5, 1 }, { -0.3, 0.5, 1 }, { 0, 0, -1 } };
+    enum
+    {
+      X,
+      Y,
+      P,
+      Q,
+      U1,
+      U2,
+      W
+    };
     TetMesh m;
     for (auto& p : pts)
       m.addPoint(p);
@@ -445,10 +491,15 @@ TEST(BoundaryRecovery, PlanarFlipReplacesTheDiagonalOfAFlatQuad)
     }
     MeshEditor ed(m);
     EXPECT_TRUE(ed.replace({}, tets, nullptr, true));
-    auto volume = [&]() {
+    auto volume = [&]()
+    {
       double v = 0;
-      m.forEachTet([&](int32_t t) { v += quality::tetVolume(m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)),
-                                      m.point(m.vertex(t, 2)), m.point(m.vertex(t, 3))); });
+      m.forEachTet(
+        [&](int32_t t)
+        {
+          v += quality::tetVolume(m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)), m.point(m.vertex(t, 2)),
+                                  m.point(m.vertex(t, 3)));
+        });
       return v;
     };
     const double v0 = volume();

@@ -21,8 +21,8 @@ void cube(TetMesh& m, std::vector<std::array<int32_t, 3>>& faces)
     const double p[3] = { double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1) };
     m.addPoint(p);
   }
-  const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
-    { 1, 3, 7, 5 } };
+  const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
+                            { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
   faces.clear();
   for (auto& q : quads)
   {
@@ -47,7 +47,8 @@ double volume(const TetMesh& m, const std::array<int32_t, 4>& t)
     w[k] = d[k] - a[k];
   }
   return std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-           u[2] * (v[0] * w[1] - v[1] * w[0])) / 6.0;
+                   u[2] * (v[0] * w[1] - v[1] * w[0])) /
+    6.0;
 }
 
 } // namespace
@@ -58,7 +59,8 @@ TEST(CavityCarving, CubeFilledExactly)
   std::vector<std::array<int32_t, 3>> faces;
   cube(m, faces);
   std::vector<std::array<int32_t, 4>> tets;
-  ASSERT_TRUE(carveCavity(m, faces, [](int32_t, int32_t) { return true; }, 1000, tets));
+  ASSERT_TRUE(carveCavity(
+    m, faces, [](int32_t, int32_t) { return true; }, 1000, tets));
   double vol = 0;
   std::map<TriKey, int> count;
   for (auto& t : tets)
@@ -89,8 +91,10 @@ TEST(CavityCarving, InsideOutOrNoBudgetFails)
   cube(m, faces);
   std::vector<std::array<int32_t, 4>> tets;
   // No step allowed: no fill.
-  EXPECT_FALSE(carveCavity(m, faces, [](int32_t, int32_t) { return true; }, 0, tets));
+  EXPECT_FALSE(carveCavity(
+    m, faces, [](int32_t, int32_t) { return true; }, 0, tets));
   for (auto& f : faces)
     std::swap(f[1], f[2]); // the outside of the cube: not a bounded cavity
-  EXPECT_FALSE(carveCavity(m, faces, [](int32_t, int32_t) { return true; }, 1000, tets));
+  EXPECT_FALSE(carveCavity(
+    m, faces, [](int32_t, int32_t) { return true; }, 1000, tets));
 }

@@ -22,10 +22,12 @@ namespace
 double meshVolume(const TetMesh& m)
 {
   double v = 0;
-  m.forEachTet([&](int32_t t) {
-    v += quality::tetVolume(m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)), m.point(m.vertex(t, 2)),
-      m.point(m.vertex(t, 3)));
-  });
+  m.forEachTet(
+    [&](int32_t t)
+    {
+      v += quality::tetVolume(m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)), m.point(m.vertex(t, 2)),
+                              m.point(m.vertex(t, 3)));
+    });
   return v;
 }
 
@@ -78,7 +80,8 @@ TEST(SegmentConeSplit, PiecesAreEdgesAndTheMeshStaysValid)
     if (std::hypot(A[0] - B[0], A[1] - B[1], A[2] - B[2]) < 0.5 || ed.findEdge(a, b) >= 0)
       continue;
     std::vector<int32_t> added;
-    auto onLine = [&](int32_t w) { return w == a || w == b || std::find(added.begin(), added.end(), w) != added.end(); };
+    auto onLine = [&](int32_t w)
+    { return w == a || w == b || std::find(added.begin(), added.end(), w) != added.end(); };
     int32_t from = a;
     ConeStep step = ConeStep::Advanced;
     for (int n = 0; n < 200 && step == ConeStep::Advanced; ++n)

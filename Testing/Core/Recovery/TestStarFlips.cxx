@@ -69,9 +69,9 @@ TEST(StarFlips, CandidatesAreInteriorEdges)
   EXPECT_TRUE(edges.front().first == 4 || edges.front().second == 4);
   for (auto& e : edges)
     EXPECT_FALSE(bc.isEdge(e.first, e.second)) << e.first << "-" << e.second;
-  EXPECT_TRUE(std::any_of(edges.begin(), edges.end(), [](const std::pair<int32_t, int32_t>& e) {
-    return edgeKey(e.first, e.second) == edgeKey(1, 2);
-  }));
+  EXPECT_TRUE(std::any_of(edges.begin(), edges.end(),
+                          [](const std::pair<int32_t, int32_t>& e)
+                          { return edgeKey(e.first, e.second) == edgeKey(1, 2); }));
 }
 
 // triceratops.off leaves two segment Steiner points in flat stars on its planar parts that only go

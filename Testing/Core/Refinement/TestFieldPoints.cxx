@@ -42,23 +42,25 @@ void makeDomain(Domain& d, EnclosureShape shape, double edge, const SizingOption
   ASSERT_TRUE(buildDelaunay(d.surface.points.data(), d.surface.numberOfPoints(), opt, d.mesh, map).ok());
   ASSERT_TRUE(d.sizing
                 .build(d.surface.points.data(), d.surface.numberOfPoints(), d.surface.triangles.data(),
-                  d.surface.numberOfTriangles(), so)
+                       d.surface.numberOfTriangles(), so)
                 .ok());
 }
 
 std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
 {
   std::set<std::array<int32_t, 3>> faces;
-  m.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
-      if (m.neighbor(t, i) < 0)
-      {
-        int32_t f[3];
-        m.faceVertices(t, i, f);
-        std::rotate(f, std::min_element(f, f + 3), f + 3); // keep the orientation
-        faces.insert({ f[0], f[1], f[2] });
-      }
-  });
+  m.forEachTet(
+    [&](int32_t t)
+    {
+      for (int i = 0; i < 4; ++i)
+        if (m.neighbor(t, i) < 0)
+        {
+          int32_t f[3];
+          m.faceVertices(t, i, f);
+          std::rotate(f, std::min_element(f, f + 3), f + 3); // keep the orientation
+          faces.insert({ f[0], f[1], f[2] });
+        }
+    });
   return faces;
 }
 
@@ -66,13 +68,15 @@ std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
 double meanEdgeNear(const TetMesh& m, const double* c, double r)
 {
   std::set<std::pair<int32_t, int32_t>> edges;
-  m.forEachTet([&](int32_t t) {
-    const int32_t* v = m.vertices(t);
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (dist(m.point(v[i]), c) < r && dist(m.point(v[j]), c) < r)
-          edges.insert({ std::min(v[i], v[j]), std::max(v[i], v[j]) });
-  });
+  m.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = m.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          if (dist(m.point(v[i]), c) < r && dist(m.point(v[j]), c) < r)
+            edges.insert({ std::min(v[i], v[j]), std::max(v[i], v[j]) });
+    });
   double s = 0;
   for (const auto& e : edges)
     s += dist(m.point(e.first), m.point(e.second));
@@ -154,7 +158,7 @@ TEST(FieldPoints, MeanEdgeLengthFollowsTheSizingField)
       d.sizing.setUserFunction([](const double* p) { return p[0] < 0 ? 0.05 : 1e9; });
       ASSERT_TRUE(d.sizing
                     .build(d.surface.points.data(), d.surface.numberOfPoints(), d.surface.triangles.data(),
-                      d.surface.numberOfTriangles(), so)
+                           d.surface.numberOfTriangles(), so)
                     .ok());
     }
     ASSERT_TRUE(insertFieldPoints(d.mesh, d.sizing, FieldPointOptions()).ok());
@@ -198,7 +202,7 @@ TEST(FieldPoints, ClusterPointsAppearAndDensifyTheirNeighbourhood)
       d.sizing.addSizedPoints(cluster.data(), sizes.data(), nc);
       ASSERT_TRUE(d.sizing
                     .build(d.surface.points.data(), d.surface.numberOfPoints(), d.surface.triangles.data(),
-                      d.surface.numberOfTriangles(), SizingOptions())
+                           d.surface.numberOfTriangles(), SizingOptions())
                     .ok());
       std::vector<int32_t> ids;
       FieldPointReport rep;
@@ -236,35 +240,39 @@ TEST(FieldPoints, ConstrainedFacesStopTheCavity)
   makeDomain(d, EnclosureShape::Box, 0.2);
   FaceConstraints fc;
   std::vector<std::array<int32_t, 3>> frozen;
-  d.mesh.forEachTet([&](int32_t t) {
-    for (int i = 0; i < 4; ++i)
+  d.mesh.forEachTet(
+    [&](int32_t t)
     {
-      const int32_t u = d.mesh.neighbor(t, i);
-      if (u > t && (t % 7) == 0)
+      for (int i = 0; i < 4; ++i)
       {
-        int32_t f[3];
-        d.mesh.faceVertices(t, i, f);
-        fc.add(f[0], f[1], f[2]);
-        frozen.push_back({ f[0], f[1], f[2] });
+        const int32_t u = d.mesh.neighbor(t, i);
+        if (u > t && (t % 7) == 0)
+        {
+          int32_t f[3];
+          d.mesh.faceVertices(t, i, f);
+          fc.add(f[0], f[1], f[2]);
+          frozen.push_back({ f[0], f[1], f[2] });
+        }
       }
-    }
-  });
+    });
   ASSERT_GT(frozen.size(), 20u);
   std::vector<int32_t> labels(static_cast<size_t>(d.mesh.tetCapacity()), 3);
   FieldPointReport rep;
   ASSERT_TRUE(insertFieldPoints(d.mesh, d.sizing, FieldPointOptions(), &fc, &labels, nullptr, nullptr, &rep).ok());
   EXPECT_GT(rep.inserted, 50);
   std::set<std::array<int32_t, 3>> faces;
-  d.mesh.forEachTet([&](int32_t t) {
-    EXPECT_EQ(labels[t], 3);
-    for (int i = 0; i < 4; ++i)
+  d.mesh.forEachTet(
+    [&](int32_t t)
     {
-      int32_t f[3];
-      d.mesh.faceVertices(t, i, f);
-      std::sort(f, f + 3);
-      faces.insert({ f[0], f[1], f[2] });
-    }
-  });
+      EXPECT_EQ(labels[t], 3);
+      for (int i = 0; i < 4; ++i)
+      {
+        int32_t f[3];
+        d.mesh.faceVertices(t, i, f);
+        std::sort(f, f + 3);
+        faces.insert({ f[0], f[1], f[2] });
+      }
+    });
   for (auto f : frozen)
   {
     std::sort(f.begin(), f.end());
@@ -307,7 +315,8 @@ TEST(FieldPoints, AdaptivityRefinesWhereTheTargetIsSmaller)
   std::vector<double> target(static_cast<size_t>(d.mesh.numVertices()));
   for (int32_t v = 0; v < d.mesh.numVertices(); ++v)
     target[v] = d.sizing.evaluate(d.mesh.point(v)) * (inBox(d.mesh.point(v)) ? 0.5 : 1.0);
-  auto countIn = [&](bool inside) {
+  auto countIn = [&](bool inside)
+  {
     int64_t n = 0;
     for (int32_t v = 0; v < d.mesh.numVertices(); ++v)
     {

@@ -34,16 +34,18 @@ double worstGradation(const LinearInterpolant& f, double slope)
 {
   const TetMesh& m = f.mesh();
   double worst = -1e300;
-  m.forEachFiniteTet([&](int32_t t) {
-    const int32_t* v = m.vertices(t);
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j)
-        if (i != j)
-        {
-          const double excess = f.values()[v[j]] - f.values()[v[i]] - slope * dist(m.point(v[i]), m.point(v[j]));
-          worst = std::max(worst, excess / f.values()[v[i]]);
-        }
-  });
+  m.forEachFiniteTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = m.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          if (i != j)
+          {
+            const double excess = f.values()[v[j]] - f.values()[v[i]] - slope * dist(m.point(v[i]), m.point(v[j]));
+            worst = std::max(worst, excess / f.values()[v[i]]);
+          }
+    });
   return worst;
 }
 } // namespace
@@ -127,7 +129,7 @@ TEST(SizingField, CapsAndUserFunction)
   EXPECT_NEAR(f.evaluate(b), 0.1, 1e-15);
   o.minEdgeLength = 1;
   EXPECT_EQ(f.build(s.points.data(), s.numberOfPoints(), s.triangles.data(), s.numberOfTriangles(), o).kind,
-    ErrorKind::InvalidOption);
+            ErrorKind::InvalidOption);
 }
 
 TEST(SizingField, BackgroundCloudIsInterpolatedLinearly)

@@ -22,7 +22,7 @@ TEST(IntersectingPairs, EqualsBruteForceOnATriangleSoup)
     int32_t v[3];
     for (int k = 0; k < 3; ++k)
       v[k] = (k == 0 && i > 0 && i % 5 == 0) ? s.triangle(i - 1)[1]
-                                            : s.addPoint(c[0] + off(rng), c[1] + off(rng), c[2] + off(rng));
+                                             : s.addPoint(c[0] + off(rng), c[1] + off(rng), c[2] + off(rng));
     s.addTriangle(v[0], v[1], v[2]);
   }
   std::vector<int32_t> canon(static_cast<size_t>(s.numberOfPoints()));
@@ -31,7 +31,7 @@ TEST(IntersectingPairs, EqualsBruteForceOnATriangleSoup)
   std::vector<int32_t> candidates;
   for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
     if (t % 17 != 3 &&
-      !triangleIsDegenerate(s.point(s.triangle(t)[0]), s.point(s.triangle(t)[1]), s.point(s.triangle(t)[2])))
+        !triangleIsDegenerate(s.point(s.triangle(t)[0]), s.point(s.triangle(t)[1]), s.point(s.triangle(t)[2])))
       candidates.push_back(t);
   std::vector<std::pair<int32_t, int32_t>> expected;
   for (size_t i = 0; i < candidates.size(); ++i)

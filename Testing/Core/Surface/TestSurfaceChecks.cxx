@@ -30,7 +30,9 @@ void addBox(SurfaceMesh& m, double x0, double y0, double z0, double x1, double y
   {
     m.addPoint(i & 1 ? x1 : x0, i & 2 ? y1 : y0, i & 4 ? z1 : z0);
   }
-  const int q[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  const int q[6][4] = {
+    { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 }
+  };
   for (const auto& f : q)
   {
     if (inward)
@@ -46,8 +48,8 @@ void addBox(SurfaceMesh& m, double x0, double y0, double z0, double x1, double y
   }
 }
 
-bool intersect(const double* a, const double* b, const double* c, const int32_t ia[3], const double* d,
-  const double* e, const double* f, const int32_t ib[3])
+bool intersect(const double* a, const double* b, const double* c, const int32_t ia[3], const double* d, const double* e,
+               const double* f, const int32_t ib[3])
 {
   const double* p[3] = { a, b, c };
   const double* q[3] = { d, e, f };
@@ -135,9 +137,9 @@ TEST(SurfaceChecks, DegenerateAndDuplicateTriangles)
   addTet(m);
   const int32_t a = m.addPoint(0, 0, 0.25);
   const int32_t b = m.addPoint(0, 0, 0.75);
-  m.addTriangle(0, a, b);         // collinear: zero area
-  m.addTriangle(1, 1, 2);         // repeated point id
-  m.addTriangle(3, 1, 0);         // same point set as triangle 1, opposite order
+  m.addTriangle(0, a, b); // collinear: zero area
+  m.addTriangle(1, 1, 2); // repeated point id
+  m.addTriangle(3, 1, 0); // same point set as triangle 1, opposite order
   SurfaceCheckReport r = checkSurface(m);
   EXPECT_EQ(r.degenerateTriangles, 2);
   EXPECT_EQ(r.firstDegenerateTriangles, (std::vector<int32_t>{ 4, 5 }));

@@ -31,7 +31,7 @@ double minQuality(const SurfaceMesh& m, double& maxEdge)
       maxEdge = std::max(maxEdge, std::sqrt(s));
     }
     const double n[3] = { e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
-      e[0][0] * e[1][1] - e[0][1] * e[1][0] };
+                          e[0][0] * e[1][1] - e[0][1] * e[1][0] };
     q = std::min(q, 2.0 * std::sqrt(3.0) * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / l2);
   }
   return q;
@@ -129,7 +129,7 @@ TEST(SurfaceEnclosures, AroundABodyNestsIt)
   ASSERT_TRUE(makeEnclosure(bodyOptions, body).ok());
   const BoundingBox box = boundingBox(body);
   for (EnclosureShape shape : { EnclosureShape::Box, EnclosureShape::Sphere, EnclosureShape::Cylinder,
-         EnclosureShape::Hemisphere, EnclosureShape::Ellipsoid })
+                                EnclosureShape::Hemisphere, EnclosureShape::Ellipsoid })
   {
     SCOPED_TRACE(static_cast<int>(shape));
     EnclosureOptions o = enclosureAround(box, shape, 3.0, 0);

@@ -81,7 +81,7 @@ TEST(SurfaceRepair, RemoveDegenerateAndDuplicate)
   const int32_t n = m.numberOfTriangles();
   const int32_t a = m.addPoint(0.25, 0, 0), b = m.addPoint(0.75, 0, 0);
   const int32_t corner = 0;
-  m.addTriangle(corner, a, b);                                 // collinear on the box edge
+  m.addTriangle(corner, a, b);                                         // collinear on the box edge
   m.addTriangle(m.triangle(3)[2], m.triangle(3)[0], m.triangle(3)[1]); // duplicate of triangle 3
   SurfaceRepairReport r;
   ASSERT_TRUE(repairSurface(m, SurfaceRepairOptions(), &r).ok());
@@ -171,7 +171,9 @@ TEST(SurfaceRepair, FillHolesWithRefinedPatch)
     {
       const double* p = m.point(m.triangle(t)[k]);
       const double* q = m.point(m.triangle(t)[(k + 1) % 3]);
-      maxEdge = std::max(maxEdge, std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2])));
+      maxEdge = std::max(
+        maxEdge,
+        std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2])));
     }
   }
   EXPECT_LT(maxEdge, 0.4);
@@ -219,7 +221,8 @@ TEST(SurfaceRepair, CorpusCastingAndFalcon)
   SurfaceMesh falcon;
   SurfaceReadOptions keep;
   keep.mergeCoincidentPoints = false;
-  ASSERT_TRUE(readSurface(std::string(VOLGRID_SHARED_DATA_DIR) + "/aero-gmsh/InitialMeshFalcon.msh", falcon, nullptr, keep).ok());
+  ASSERT_TRUE(
+    readSurface(std::string(VOLGRID_SHARED_DATA_DIR) + "/aero-gmsh/InitialMeshFalcon.msh", falcon, nullptr, keep).ok());
   const SurfaceCheckReport before = checkSurface(falcon);
   EXPECT_EQ(before.boundaryEdges, 1781);
   EXPECT_EQ(before.shells.size(), 8u);
