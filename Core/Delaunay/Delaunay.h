@@ -78,6 +78,7 @@ struct DelaunayReport
   // Work counters (for tuning/benchmarks).
   uint64_t walkSteps = 0;
   uint64_t cavityTets = 0;
+  uint64_t deferred = 0; // parallel construction: insertions that met another worker, redone after their round
 };
 
 // Build the Delaunay tetrahedralization of n points (xyz: 3 doubles per point).

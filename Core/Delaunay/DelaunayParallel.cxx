@@ -99,6 +99,7 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
     parallelRun(k, work);
     for (int i = 0; i < k; ++i)
     {
+      rep.deferred += deferred[i].size();
       for (int32_t q : deferred[i])
       {
         if (full)

@@ -60,7 +60,7 @@ bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings,
   result.threads = std::min(volgrid::resolveThreads(options.threads), 255); // Delaunay.h: at most 255
   result.note = "location=" + settings.location + (settings.spatialSort ? " sort=brio-hilbert" : " sort=none") +
     " walk_steps=" + std::to_string(report.walkSteps) + " cavity_tets=" + std::to_string(report.cavityTets) +
-    " duplicates=" + std::to_string(report.numDuplicates);
+    " deferred=" + std::to_string(report.deferred) + " duplicates=" + std::to_string(report.numDuplicates);
   result.ok = true;
   return true;
 }
