@@ -65,7 +65,7 @@ struct DelaunayOptions
   // each tet by an even rotation, tets grouped by their last inserted vertex, then by vertex list, no
   // free slots); smaller ones are always built sequentially and keep the construction's numbering.
   // true: canonical numbering for every input. Cost of the renumbering: ~5-10% of the construction,
-  // and the peak stays within 60 bytes per tet (1M random points: ~56 one thread, ~58 two threads).
+  // and the peak stays within 60 bytes per tet (1M random points: ~56 one thread, ~58 two or eight threads).
   bool canonicalNumbering = false;
 };
 
