@@ -26,10 +26,10 @@ namespace
 const char* kUsage =
   "usage: volgrid delaunay INPUT.node | --random N [--seed S]\n"
   "                        [--check] [--json] [--out FILE.vtu] [--no-sort] [--location walk|grid]\n"
-  "                        [--threads 0|1|2]\n"
+  "                        [--threads N]\n"
   "  Tetrahedralizes the points exactly (Delaunay, symbolic tie-breaking). Exactly coincident points\n"
   "  are merged. --check verifies orientation, adjacency, empty spheres and the hull (exit 1 if not).\n"
-  "  --threads: 0 (default) = all cores, at most 2; the output is the same for any value.\n"
+  "  --threads: 0 (default) = all cores, N = N threads; the output is the same for any value.\n"
   "  --max-tets N: refuse before any work when about N tets would be exceeded (default: what the available\n"
   "  memory holds); at most 67108864 points are supported. --out FILE.vtu is replaced atomically.\n";
 
@@ -110,9 +110,9 @@ bool parseArguments(int argc, char** argv, Arguments& args)
       long long t = 0;
       if (!v || !volgrid::cli::parseLong("delaunay", "--threads", v, t))
         return false;
-      if (t < 0 || t > 2)
+      if (t < 0 || t > 1024)
       {
-        std::fprintf(stderr, "volgrid delaunay: --threads is 0 (all cores, at most 2), 1 or 2, not %lld\n", t);
+        std::fprintf(stderr, "volgrid delaunay: --threads is 0 (all cores) or 1..1024, not %lld\n", t);
         return false;
       }
       args.options.threads = static_cast<int>(t);

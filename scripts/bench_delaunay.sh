@@ -12,7 +12,7 @@
 #                       vtkDelaunay3D is left out unless --vtk is given
 #   --vtk / --no-vtk    force vtkDelaunay3D (random 100k) in or out
 #   --engines LIST      comma-separated subset of volgrid,volgrid1,tetgen,cgal,vtk (volgrid1: VolGrid
-#                       on one thread; volgrid: its defaults, two threads on two cores or more)
+#                       on one thread; volgrid: its defaults, all cores)
 #   --inputs LIST       comma-separated subset of random,grid,jittered-grid,spheres
 #   --sizes LIST        comma-separated n values to keep (e.g. 100000)
 #   --repeat R          run each case R times and report the fastest (default 1)
@@ -93,7 +93,7 @@ while i < len(args):
 binary = os.environ["VOLGRID_BENCH_BIN"]
 build_dir = os.environ["VOLGRID_BENCH_BUILD_DIR"]
 out_path = opt["out"] or os.path.join(build_dir, "bench", "delaunay.jsonl")
-# volgrid: the default options (two threads on a machine with two cores or more, canonical numbering
+# volgrid: the default options (all cores, canonical numbering
 # for large inputs); volgrid1: the same forced to one thread (VOLGRID_THREADS=1), for the sequential
 # comparison. TetGen, CGAL (Delaunay_triangulation_3, sequential) and vtkDelaunay3D are sequential.
 ENGINES = ["volgrid", "volgrid1", "tetgen", "cgal", "vtk"]

@@ -260,12 +260,12 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     return true;
   };
 
-  const int threads = std::min(resolveThreads(options.threads), 2); // the kernel splits rounds in two
-  int32_t done = 0;                                                 // order[0..done) handled
-  std::vector<int32_t> rest;                                        // points left over by the parallel stage
+  const int threads = std::min(resolveThreads(options.threads), kMaxParallelWorkers);
+  int32_t done = 0;          // order[0..done) handled
+  std::vector<int32_t> rest; // points left over by the parallel stage
   if (threads > 1 && options.location == PointLocation::Walk && roundStarts.size() > 2 && m >= kParallelMinPoints)
   {
-    // Rounds with enough points run on two threads (halves of the Hilbert order of the round).
+    // Rounds with enough points run on `threads` workers (chunks of the Hilbert order of the round).
     size_t r0 = 0;
     while (r0 + 1 < roundStarts.size() && roundStarts[r0 + 1] - roundStarts[r0] < kParallelMinRound)
       ++r0;
@@ -275,7 +275,7 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
         return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
       done = static_cast<int32_t>(roundStarts[r0]);
       const Status st = insertParallel(mesh, inserter, order, roundStarts, r0, firstTet, inputToVertex, rest, rep,
-                                       progress, options.seed);
+                                       progress, options.seed, threads);
       if (!st.ok())
       {
         mesh.clear();
@@ -302,7 +302,7 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   {
     // The inserter's per-vertex buffers are not needed any more: free them before the canonical pass
     // (it sets the peak memory).
-    std::vector<int32_t>().swap(inserter.impl_->vlocal);
+    std::vector<int8_t>().swap(inserter.impl_->vlocal);
     std::vector<int32_t>().swap(inserter.impl_->vertexNext);
     std::vector<int32_t>().swap(inserter.impl_->vertexTet);
 #ifdef __GLIBC__

@@ -24,8 +24,8 @@
 // location is a visibility walk from the new tet closest to the next point; the cavity is found
 // breadth-first with prefetching, marked in the neighbour words, and the new tets reuse its slots and
 // are glued by a small matrix of boundary edges. The hot predicates are inline filters falling back to
-// Core/Geometry/Predicates.h; lattice inputs (grids) evaluate exactly in doubles. Large inputs use two threads
-// when the machine has them (the result does not depend on it).
+// Core/Geometry/Predicates.h; lattice inputs (grids) evaluate exactly in doubles. Large inputs use all
+// threads asked for (DelaunayParallel.cxx; the result does not depend on their number).
 //
 // Duplicates: points with exactly equal coordinates are merged into the first occurrence (lowest
 // input index) and reported. Mesh vertex i is input point i; merged duplicates stay in mesh.points but
@@ -56,8 +56,8 @@ struct DelaunayOptions
   PointLocation location = PointLocation::Walk;
   uint64_t seed = 0x766f6c67726964ull; // BRIO rounds and walk randomization
   bool keepGhosts = true;              // false: removeGhostTets() at the end (hull faces -> no neighbour)
-  // Threads for large inputs (>= 200k distinct points, spatialSort, Walk): 1 = sequential, 2 = two
-  // threads, 0 = hardware concurrency (at most 2).
+  // Threads for large inputs (>= 200k distinct points, spatialSort, Walk): 1 = sequential, n = n
+  // threads (more than the cores is allowed; at most 255 are used), 0 = all cores (ParallelFor.h).
   int threads = 0;
   // Tet numbering. The same input and options give the same mesh arrays, whatever the thread count and
   // from run to run: inputs large enough for the parallel construction (the conditions above, whatever
@@ -65,7 +65,7 @@ struct DelaunayOptions
   // each tet by an even rotation, tets grouped by their last inserted vertex, then by vertex list, no
   // free slots); smaller ones are always built sequentially and keep the construction's numbering.
   // true: canonical numbering for every input. Cost of the renumbering: ~5-10% of the construction,
-  // and the peak stays within 60 bytes per tet (1M random points: ~56 one thread, ~58 two threads).
+  // and the peak stays within 60 bytes per tet (1M random points: ~56 one thread, ~58 two or eight threads).
   bool canonicalNumbering = false;
 };
 
@@ -78,6 +78,7 @@ struct DelaunayReport
   // Work counters (for tuning/benchmarks).
   uint64_t walkSteps = 0;
   uint64_t cavityTets = 0;
+  uint64_t deferred = 0; // parallel construction: insertions that met another worker, redone after their round
 };
 
 // Build the Delaunay tetrahedralization of n points (xyz: 3 doubles per point).
@@ -135,7 +136,7 @@ private:
                               DelaunayReport*);
   friend Status insertParallel(TetMesh&, DelaunayInserter&, const std::vector<int32_t>&, const std::vector<size_t>&,
                                size_t, const int32_t*, std::vector<int32_t>&, std::vector<int32_t>&, DelaunayReport&,
-                               Progress*, uint64_t);
+                               Progress*, uint64_t, int);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -61,10 +61,13 @@ constexpr EdgePair kDirected[4][4] = {
   { { 2, 1 }, { 0, 2 }, { 1, 0 }, { -1, -1 } },
 };
 
-// Rounds at least this large run on two threads (buildDelaunay with threads > 1), for inputs at least
-// kParallelMinPoints large.
+// Rounds at least this large run on several threads (buildDelaunay with threads > 1), for inputs at
+// least kParallelMinPoints large, cut into chunks of at least kParallelMinChunk points (one per worker).
+// Workers are told apart by a one-byte owner id per tet (1..255; 0 = free): at most 255 workers.
 constexpr size_t kParallelMinPoints = 200000;
 constexpr size_t kParallelMinRound = 50000;
+constexpr int32_t kParallelMinChunk = 8192;
+constexpr int kMaxParallelWorkers = 255;
 } // namespace delaunay_detail
 
 using namespace delaunay_detail;
@@ -167,11 +170,13 @@ struct DelaunayInserter::Impl
   // Matching of the new tets around the cavity boundary edges: the boundary vertices get local numbers
   // (vlocal[v+1], reset after each insertion from the list localVert), and directed edge (x,y) is stored
   // at edgeMat[x*kMaxLocal+y]. Cavities with more boundary vertices use the edge hash instead.
-  // vlocal is -1 between insertions; edgeMat has a fixed stride of kMaxLocal.
+  // vlocal is -1 between insertions (one byte per vertex: every inserter of the parallel construction
+  // has one); edgeMat has a fixed stride of kMaxLocal.
   static constexpr int kLocalShift = 7;
   static constexpr int32_t kMaxLocal = 1 << kLocalShift;
-  std::vector<int32_t> vlocal, localVert = std::vector<int32_t>(kMaxLocal),
-                               edgeMat = std::vector<int32_t>(kMaxLocal * kMaxLocal);
+  std::vector<int8_t> vlocal;
+  std::vector<int32_t> localVert = std::vector<int32_t>(kMaxLocal),
+                       edgeMat = std::vector<int32_t>(kMaxLocal * kMaxLocal);
   std::vector<int32_t> cavity, outside;
   std::vector<BoundaryFace> boundary;
   struct HashSlot
@@ -448,7 +453,7 @@ struct DelaunayInserter::Impl
     const size_t needV = static_cast<size_t>(mesh.numVertices()) + 1;
     if (vlocal.size() < needV)
       vlocal.resize(needV + needV / 4, -1);
-    int32_t* VL = vlocal.data();
+    int8_t* VL = vlocal.data();
     int32_t* LV = localVert.data();
     int32_t nloc = 0;
     bool overflow = false;
@@ -509,7 +514,7 @@ struct DelaunayInserter::Impl
         {
           if (k == f)
             continue;
-          int32_t& li = VL[wc[k] + 1];
+          int8_t& li = VL[wc[k] + 1];
           if (li < 0)
           {
             if (nloc == kMaxLocal)
@@ -517,10 +522,10 @@ struct DelaunayInserter::Impl
               overflow = true;
               continue;
             }
-            li = nloc;
+            li = static_cast<int8_t>(nloc);
             LV[nloc++] = wc[k];
           }
-          bf.local[k] = static_cast<int8_t>(li);
+          bf.local[k] = li;
         }
       }
     }
@@ -712,16 +717,16 @@ struct DelaunayInserter::Impl
   }
 };
 
-// Two threads insert the two halves (along the Hilbert curve) of each BRIO round from `round0` on
+// `workers` threads insert the chunks (along the Hilbert curve) of each BRIO round from `round0` on
 // (DelaunayParallel.cxx). firstTet: the four insertion positions of the first tet (already inserted).
 Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<int32_t>& order,
                       const std::vector<size_t>& roundStarts, size_t round0, const int32_t* firstTet,
                       std::vector<int32_t>& inputToVertex, std::vector<int32_t>& rest, DelaunayReport& rep,
-                      Progress* progress, uint64_t seed);
+                      Progress* progress, uint64_t seed, int workers);
 
 // Canonical tet numbering (DelaunayCanonical.cxx): see the file. Vertices are numbered in insertion
 // order on entry; toInput (optional) maps them to the output numbering as the tets are written.
-// threads > 1: the passes over all tets run on two threads (same result). The mesh's points are
+// threads > 1: the passes over all tets run on that many threads (same result). The mesh's points are
 // released (the caller sets the output points).
 void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads);
 

@@ -1,4 +1,4 @@
-// Two-thread Delaunay construction (buildDelaunay with threads > 1).
+// Multi-threaded Delaunay construction (buildDelaunay with threads > 1).
 #include "DelaunayInserterImpl.h"
 #include "ParallelFor.h"
 
@@ -7,17 +7,31 @@
 namespace volgrid
 {
 
-// Two threads insert the two halves (along the Hilbert curve) of each BRIO round from `round0` on.
-// Every tet is acquired before it is read (see DelaunayInserter::Impl::acquire); an insertion that
-// meets the other thread's tets is undone and retried by `main` after the round. New slots come from a
-// pool appended to the mesh up front; when it runs out, the remaining points go to `rest`.
+namespace
+{
+// The number of chunks a round of `size` points is cut into: one per worker, but never below
+// kParallelMinChunk points per chunk (a small chunk is mostly border, where insertions conflict).
+int chunksOf(int32_t size, int workers)
+{
+  return static_cast<int>(std::max<int64_t>(1, std::min<int64_t>(workers, size / kParallelMinChunk)));
+}
+} // namespace
+
+// `workers` threads insert the contiguous chunks (along the Hilbert curve) of each BRIO round from
+// `round0` on. Every tet is acquired before it is read (see DelaunayInserter::Impl::acquire); an
+// insertion that meets another worker's tets is undone, kept in its worker's deferred list, and retried
+// by `main` alone after the round (deferred lists in worker order). New slots come from a pool appended
+// to the mesh up front (one atomic counter); when it runs out, the remaining points go to `rest`. The
+// tets built are the unique Delaunay ones whatever the interleaving; only their slots differ, which
+// canonicalizeTets removes.
 Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<int32_t>& order,
                       const std::vector<size_t>& roundStarts, size_t round0, const int32_t* firstTet,
                       std::vector<int32_t>& inputToVertex, std::vector<int32_t>& rest, DelaunayReport& rep,
-                      Progress* progress, uint64_t seed)
+                      Progress* progress, uint64_t seed, int workers)
 {
   auto isFirstTet = [firstTet](int32_t k)
   { return k == firstTet[0] || k == firstTet[1] || k == firstTet[2] || k == firstTet[3]; };
+  workers = std::max(1, std::min(workers, kMaxParallelWorkers));
   const int32_t m = static_cast<int32_t>(order.size());
   DelaunayInserter::Impl& mi = *main.impl_;
   const int32_t used = mesh.tetCapacity();
@@ -25,88 +39,100 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
   mesh.appendTets(pool - used);
   std::unique_ptr<std::atomic<uint8_t>[]> owner(new std::atomic<uint8_t>[static_cast<size_t>(pool)]());
   std::atomic<int32_t> nextSlot(used);
-  DelaunayInserter w0(mesh, seed + 1), w1(mesh, seed + 2);
-  DelaunayInserter::Impl* workers[2] = { w0.impl_.get(), w1.impl_.get() };
-  for (int i = 0; i < 2; ++i)
+  std::vector<std::unique_ptr<DelaunayInserter>> inserters;
+  std::vector<DelaunayInserter::Impl*> ws;
+  for (int i = 0; i < workers; ++i)
   {
-    DelaunayInserter::Impl& w = *workers[i];
+    inserters.emplace_back(new DelaunayInserter(mesh, seed + 1 + static_cast<uint64_t>(i)));
+    DelaunayInserter::Impl& w = *inserters.back()->impl_;
     w.sosId = mi.sosId;
     w.latticeOrientLimit = mi.latticeOrientLimit;
     w.latticeInsphereLimit2 = mi.latticeInsphereLimit2;
-    w.owner = owner.get();
     w.me = static_cast<uint8_t>(i + 1);
     w.nextSlot = &nextSlot;
     w.slotLimit = pool;
     w.last = mi.last;
+    ws.push_back(&w);
   }
   mi.nextSlot = &nextSlot;
   mi.slotLimit = pool;
-  std::vector<int32_t> deferred[2];
+  std::vector<std::vector<int32_t>> deferred(static_cast<size_t>(workers));
+  std::vector<int32_t> cut(static_cast<size_t>(workers) + 1);
   bool full = false;
   size_t r = round0;
   for (; r + 1 < roundStarts.size() && !full; ++r)
   {
     const int32_t a = static_cast<int32_t>(roundStarts[r]), b = static_cast<int32_t>(roundStarts[r + 1]);
-    const int32_t mid = a + (b - a) / 2;
-    // Start each thread's walks near its first point (located before the threads start).
-    workers[0]->owner = workers[1]->owner = nullptr;
-    workers[0]->last = workers[0]->walk(mesh.point(a), mi.liveTet(workers[0]->last));
-    workers[1]->last = workers[1]->walk(mesh.point(mid), workers[0]->last);
-    workers[0]->owner = workers[1]->owner = owner.get();
-    auto work = [&](int i, int32_t from, int32_t to)
+    const int k = chunksOf(b - a, workers);
+    for (int i = 0; i <= k; ++i)
+      cut[i] = a + static_cast<int32_t>(static_cast<int64_t>(b - a) * i / k);
+    // Start each worker's walks near its first point (located before the workers start, without owners).
+    int32_t from = mi.liveTet(ws[0]->last);
+    for (int i = 0; i < k; ++i)
     {
-      DelaunayInserter::Impl& w = *workers[i];
-      deferred[i].clear();
-      for (int32_t k = from; k < to; ++k)
+      ws[i]->owner = nullptr;
+      ws[i]->last = from = ws[i]->walk(mesh.point(cut[i]), from);
+      ws[i]->owner = owner.get();
+    }
+    auto work = [&](int i)
+    {
+      DelaunayInserter::Impl& w = *ws[i];
+      std::vector<int32_t>& def = deferred[i];
+      def.clear();
+      const int32_t to = cut[i + 1];
+      for (int32_t q = cut[i]; q < to; ++q)
       {
-        if (isFirstTet(k))
+        if (isFirstTet(q))
           continue;
         if (w.poolFull)
         {
-          deferred[i].push_back(k);
+          def.push_back(q);
           continue;
         }
-        const DelaunayInserter::Result res = w.insert(k, -1, k + 1 < to ? mesh.point(k + 1) : nullptr);
+        const DelaunayInserter::Result res = w.insert(q, -1, q + 1 < to ? mesh.point(q + 1) : nullptr);
         if (res.aborted)
-          deferred[i].push_back(k);
+          def.push_back(q);
         else if (res.duplicateOf >= 0)
-          inputToVertex[order[k]] = order[res.duplicateOf];
+          inputToVertex[order[q]] = order[res.duplicateOf];
       }
     };
-    parallelRun(2, [&](int w) { w == 0 ? work(0, a, mid) : work(1, mid, b); });
-    for (int i = 0; i < 2; ++i)
-      for (int32_t k : deferred[i])
+    parallelRun(k, work);
+    for (int i = 0; i < k; ++i)
+    {
+      rep.deferred += deferred[i].size();
+      for (int32_t q : deferred[i])
       {
         if (full)
         {
-          rest.push_back(k);
+          rest.push_back(q);
           continue;
         }
-        const DelaunayInserter::Result res = mi.insert(k, -1, nullptr);
+        const DelaunayInserter::Result res = mi.insert(q, -1, nullptr);
         if (res.aborted)
         {
           full = true; // the pool is exhausted
-          rest.push_back(k);
+          rest.push_back(q);
         }
         else if (res.duplicateOf >= 0)
-          inputToVertex[order[k]] = order[res.duplicateOf];
+          inputToVertex[order[q]] = order[res.duplicateOf];
       }
-    full = full || workers[0]->poolFull || workers[1]->poolFull;
+      full = full || ws[i]->poolFull;
+    }
     progress->report(static_cast<double>(b) / static_cast<double>(m), "Inserting points");
     if (progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
   }
   for (; r + 1 < roundStarts.size(); ++r)
-    for (int32_t k = static_cast<int32_t>(roundStarts[r]); k < static_cast<int32_t>(roundStarts[r + 1]); ++k)
-      if (!isFirstTet(k))
-        rest.push_back(k);
+    for (int32_t q = static_cast<int32_t>(roundStarts[r]); q < static_cast<int32_t>(roundStarts[r + 1]); ++q)
+      if (!isFirstTet(q))
+        rest.push_back(q);
   // Close the pool: drop its unused tail, free the recycled slots, report the ghost counts.
-  DelaunayInserter::Impl* all[3] = { workers[0], workers[1], &mi };
+  ws.push_back(&mi);
   int32_t end = std::min(nextSlot.load(), pool);
-  for (DelaunayInserter::Impl* w : all)
+  for (DelaunayInserter::Impl* w : ws)
     end = std::min(end, w->poolEnd);
   mesh.truncate(end);
-  for (DelaunayInserter::Impl* w : all)
+  for (DelaunayInserter::Impl* w : ws)
   {
     for (int32_t t : w->spare)
       if (t < mesh.tetCapacity())
@@ -120,9 +146,13 @@ Status insertParallel(TetMesh& mesh, DelaunayInserter& main, const std::vector<i
     w->nextSlot = nullptr;
     w->owner = nullptr;
   }
-  mi.last = workers[0]->last < mesh.tetCapacity() ? workers[0]->last : -1;
-  rep.walkSteps += workers[0]->walkSteps + workers[1]->walkSteps;
-  rep.cavityTets += workers[0]->cavityTets + workers[1]->cavityTets;
+  ws.pop_back();
+  mi.last = ws[0]->last < mesh.tetCapacity() ? ws[0]->last : -1;
+  for (DelaunayInserter::Impl* w : ws)
+  {
+    rep.walkSteps += w->walkSteps;
+    rep.cavityTets += w->cavityTets;
+  }
   return Status::success();
 }
 

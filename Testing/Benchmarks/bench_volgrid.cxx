@@ -14,11 +14,11 @@ bool runVolGrid(const std::vector<double>&, const VolGridSettings&, Meter&, Engi
 #else
 
 #include "Delaunay.h"
+#include "ParallelFor.h"
 #include "TetMesh.h"
 
 #include <algorithm>
 #include <cstdlib>
-#include <thread>
 
 namespace volgrid_bench
 {
@@ -27,8 +27,8 @@ bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings,
 {
   volgrid::DelaunayOptions options; // defaults (ghost tets kept, as CGAL keeps its infinite cells)
   options.spatialSort = settings.spatialSort;
-  // Threads: the default, or VOLGRID_THREADS=0|1|2 (0 = automatic, at most 2); VOLGRID_CANONICAL=1
-  // turns on canonical tet numbering (deterministic arrays with two threads).
+  // Threads: the default (all cores), or VOLGRID_THREADS=N (0 = all cores); VOLGRID_CANONICAL=1
+  // turns on canonical tet numbering for every input (large ones always have it).
   if (const char* env = std::getenv("VOLGRID_THREADS"))
     options.threads = std::atoi(env);
   if (const char* env = std::getenv("VOLGRID_CANONICAL"))
@@ -57,12 +57,10 @@ bool runVolGrid(const std::vector<double>& xyz, const VolGridSettings& settings,
   }
   result.tets = mesh.numFiniteTets();
   result.points = static_cast<int64_t>(report.numVertices);
-  result.threads = options.threads > 0
-    ? std::min(options.threads, 2)
-    : std::max(1, std::min(2, static_cast<int>(std::thread::hardware_concurrency())));
+  result.threads = std::min(volgrid::resolveThreads(options.threads), 255); // Delaunay.h: at most 255
   result.note = "location=" + settings.location + (settings.spatialSort ? " sort=brio-hilbert" : " sort=none") +
     " walk_steps=" + std::to_string(report.walkSteps) + " cavity_tets=" + std::to_string(report.cavityTets) +
-    " duplicates=" + std::to_string(report.numDuplicates);
+    " deferred=" + std::to_string(report.deferred) + " duplicates=" + std::to_string(report.numDuplicates);
   result.ok = true;
   return true;
 }

@@ -560,6 +560,47 @@ TEST(Delaunay, TwoThreadsGiveTheSameMesh)
   EXPECT_TRUE(r.valid) << r.summary();
 }
 
+// The parallel construction with more workers than this machine has cores (workers then share cores
+// and interleave arbitrarily): 1, 2, 3 and 8 threads give the same arrays, and that mesh is valid and
+// locally Delaunay on every face (with the symbolic rule on ties). Inputs: random points with
+// duplicates, and a pure lattice, where every cell's eight corners are cospherical and only the symbolic
+// rule decides.
+TEST(Delaunay, AnyThreadCountGivesTheSameMesh)
+{
+  auto mixed = randomPoints(230000, 82, 30);
+  mixed.insert(mixed.end(), mixed.begin(), mixed.begin() + 3 * 500);
+  const std::vector<double> lattice = gridPoints(61); // 226,981 points
+  const std::vector<double>* inputs[] = { &mixed, &lattice };
+  for (const std::vector<double>* xyz : inputs)
+  {
+    DelaunayOptions options;
+    options.threads = 1;
+    const Built ref = build(*xyz, options);
+    ASSERT_TRUE(ref.status.ok()) << ref.status.message;
+    const MeshCheckReport r = checkMesh(ref.mesh, MeshCheckOptions{ true, false, 10 });
+    EXPECT_TRUE(r.valid) << r.summary();
+    EXPECT_EQ(r.nonDelaunayFaces, 0);
+    EXPECT_EQ(ref.mesh.numFreeTets(), 0);
+    for (int threads : { 2, 3, 8 })
+    {
+      SCOPED_TRACE(threads);
+      options.threads = threads;
+      const Built b = build(*xyz, options);
+      ASSERT_TRUE(b.status.ok()) << b.status.message;
+      EXPECT_EQ(ref.mesh.tetVertices, b.mesh.tetVertices);
+      EXPECT_EQ(ref.mesh.tetNeighbors, b.mesh.tetNeighbors);
+      EXPECT_EQ(ref.mesh.tetFlags, b.mesh.tetFlags);
+      EXPECT_EQ(ref.mesh.numGhostTets(), b.mesh.numGhostTets());
+      EXPECT_EQ(ref.map, b.map);
+      EXPECT_EQ(ref.report.numDuplicates, b.report.numDuplicates);
+      if (threads == 8) // the arrays are equal; the check is the independent witness of validity
+      {
+        EXPECT_TRUE(checkMesh(b.mesh, MeshCheckOptions{ true, false, 10 }).valid);
+      }
+    }
+  }
+}
+
 TEST(Delaunay, CanonicalTetNumbering)
 {
   // Canonical form of the output (canonicalNumbering): within each tet the earliest inserted vertex comes
