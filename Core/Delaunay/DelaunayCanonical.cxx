@@ -1,7 +1,7 @@
 // Canonical tet numbering of a Delaunay mesh.
 //
 // The tets of the (SoS-)Delaunay triangulation are unique, but the slots they end up in depend on the
-// history of the construction, and with two threads on the interleaving of the threads. The product's
+// history of the construction, and with several threads on their interleaving. The product's
 // rule is that the same input and options give the same mesh arrays whatever the thread count, so
 // buildDelaunay renumbers the tets canonically, from their vertices and the insertion order only (both
 // fixed by the input and the options: the spatial sort and its seed):

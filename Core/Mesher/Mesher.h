@@ -51,8 +51,8 @@ struct MesherOptions
   bool removeBoundarySteiner = true;
   // Check the result (exact orientation, adjacency, boundary = input, volume) and fail on a violation.
   bool verify = false;
-  // Threads (the rule of ParallelFor.h: 0 = all cores): the surface checks, the Delaunay kernel (which
-  // uses at most two) and the quality stage's mesh summaries, all on Core's one thread pool. The mesh does
+  // Threads (the rule of ParallelFor.h: 0 = all cores): the surface checks, the Delaunay kernel (one
+  // Hilbert chunk per thread) and the quality stage's mesh summaries, all on Core's one thread pool. The mesh does
   // not depend on this value: every threaded step merges its partial results in a fixed order.
   int threads = 0;
   // Grid control and quality after step 5 (MeshImprovement.h): field points, sizing, clustering,
