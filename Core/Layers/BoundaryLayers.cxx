@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <set>
 
 namespace volgrid
@@ -77,8 +78,56 @@ Status choosePatches(const SurfaceMesh& s, const SurfaceCheckReport& report, con
   return Status::success();
 }
 
+// Layered points shared with non-layered patches march in those patches' planes: each such patch must be
+// flat across one coordinate axis (its extent there at most 1e-9 of its size: a symmetry plane), and each
+// shared point on one patch only. Else a Status naming the patch and the first point.
+Status slipPlanes(const SurfaceMesh& s, const SurfaceCheckReport& report, layers_detail::Walls& walls,
+                  const std::vector<int32_t>& otherIds)
+{
+  walls.slipAxis.assign(walls.layeredPoints.size(), -1);
+  std::map<int32_t, int> axisOf; // touched patch -> its flat axis (-1: not flat)
+  std::vector<int32_t> patchAt(walls.layeredPoints.size(), -1);
+  for (size_t k = 0; k < otherIds.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+    {
+      const int32_t v = walls.otherTriangles[3 * k + i], c = walls.column[v];
+      if (c < 0)
+        continue;
+      const int32_t patch = trianglePatch(s, report, otherIds[k]);
+      const auto refuse = [&](const std::string& why)
+      {
+        return Status::failure(ErrorKind::InvalidOption,
+                               "boundary layers touch the non-layered patch '" + patchName(s, patch) + "' at point " +
+                                 std::to_string(v) + " " + pointText(s.point(v)) + ": " + why +
+                                 "; layer whole closed bodies, or add that patch to the layer patches",
+                               { v });
+      };
+      if (patchAt[c] >= 0 && patchAt[c] != patch)
+        return refuse("the point is also on patch '" + patchName(s, patchAt[c]) +
+                      "' (layers along two non-layered patches are not supported yet)");
+      patchAt[c] = patch;
+      if (!axisOf.count(patch))
+      {
+        BoundingBox box;
+        for (size_t j = 0; j < otherIds.size(); ++j)
+          if (trianglePatch(s, report, otherIds[j]) == patch)
+            for (int q = 0; q < 3; ++q)
+              box.add(s.point(walls.otherTriangles[3 * j + q]));
+        int axis = 0;
+        for (int d = 1; d < 3; ++d)
+          if (box.max[d] - box.min[d] < box.max[axis] - box.min[axis])
+            axis = d;
+        axisOf[patch] = box.max[axis] - box.min[axis] <= 1e-9 * box.diagonal() ? axis : -1;
+      }
+      if (axisOf[patch] < 0)
+        return refuse("layers march only along a flat patch normal to a coordinate axis (a symmetry plane)");
+      walls.slipAxis[c] = static_cast<int8_t>(axisOf[patch]);
+    }
+  return Status::success();
+}
+
 // Splits the triangles into layered walls (oriented into the domain) and the others; refuses walls that
-// share a point with a non-layered patch (marching along a symmetry plane is not supported yet).
+// share a point with a non-layered patch that is not a flat symmetry plane (slipPlanes).
 Status buildWalls(const SurfaceMesh& s, const SurfaceCheckReport& report, const std::set<int32_t>& chosen,
                   layers_detail::Walls& walls, std::vector<int32_t>& wallIds, std::vector<int32_t>& otherIds)
 {
@@ -105,21 +154,7 @@ Status buildWalls(const SurfaceMesh& s, const SurfaceCheckReport& report, const 
         walls.layeredPoints.push_back(v[i]);
       }
   }
-  int64_t shared = 0;
-  int32_t first = -1, firstTriangle = -1;
-  for (size_t k = 0; k < walls.otherTriangles.size(); ++k)
-    if (walls.column[walls.otherTriangles[k]] >= 0 && ++shared == 1)
-      first = walls.otherTriangles[k], firstTriangle = static_cast<int32_t>(k / 3);
-  if (shared == 0)
-    return Status::success();
-  const int32_t t = otherIds[firstTriangle];
-  return Status::failure(ErrorKind::InvalidOption,
-                         "boundary layers touch the non-layered patch '" + patchName(s, trianglePatch(s, report, t)) +
-                           "' (" + std::to_string(shared) + " shared triangle corners, the first at point " +
-                           std::to_string(first) + " " + pointText(s.point(first)) +
-                           "): layers marching along a symmetry plane or another patch are not supported yet; "
-                           "layer whole closed bodies, or add that patch to the layer patches",
-                         { first });
+  return slipPlanes(s, report, walls, otherIds);
 }
 
 // Halves the failing columns, then limits every column to 1.5 times its thinnest neighbour.
@@ -248,11 +283,36 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
       scale[walls.column[v[0]]] == 1 && scale[walls.column[v[1]]] == 1 && scale[walls.column[v[2]]] == 1;
     r.stats.fullTriangles += full ? 1 : 0;
   }
-  for (const int32_t t : otherIds)
+  // The other patches, their layered corners moved to the last layer (symmetry planes), and the prisms'
+  // side faces on those planes.
+  const std::vector<int32_t> moved = layers_detail::movedOtherTriangles(walls, layers);
+  std::map<std::pair<int32_t, int32_t>, int32_t> planeEdges;
+  for (size_t k = 0; k < otherIds.size(); ++k)
   {
-    const int32_t* v = s.triangle(t);
-    b.addTriangle(localPoint(v[0]), localPoint(v[1]), localPoint(v[2]), trianglePatch(s, report, t));
+    const int32_t* v = moved.data() + 3 * k;
+    const int32_t patch = trianglePatch(s, report, otherIds[k]);
+    b.addTriangle(localPoint(v[0]), localPoint(v[1]), localPoint(v[2]), patch);
+    for (int i = 0; i < 3; ++i)
+    {
+      const int32_t p = walls.otherTriangles[3 * k + i], q = walls.otherTriangles[3 * k + (i + 1) % 3];
+      if (walls.column[p] >= 0 && walls.column[q] >= 0)
+        planeEdges[{ std::min(p, q), std::max(p, q) }] = patch;
+    }
   }
+  for (size_t t = 0; t < walls.triangles.size(); t += 3)
+    for (int i = 0; i < 3; ++i)
+    {
+      const int32_t p = walls.triangles[t + i], q = walls.triangles[t + (i + 1) % 3];
+      const auto edge = planeEdges.find({ std::min(p, q), std::max(p, q) });
+      if (edge == planeEdges.end())
+        continue;
+      for (int k = 0; k < layers; ++k)
+      {
+        r.sideQuads.insert(r.sideQuads.end(),
+                           { layerPoint(p, k - 1), layerPoint(q, k - 1), layerPoint(q, k), layerPoint(p, k) });
+        r.sidePatch.push_back(edge->second);
+      }
+    }
   r.stats.layeredTriangles = static_cast<int64_t>(wallIds.size());
   r.stats.layeredPoints = static_cast<int64_t>(walls.layeredPoints.size());
   r.stats.prisms = static_cast<int64_t>(r.prismLayer.size());

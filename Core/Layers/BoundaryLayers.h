@@ -8,9 +8,11 @@
 // The last layer's surface plus the untouched patches is `tetBoundary`: the closed boundary of the tet
 // region, handed to the conforming mesher (Mesher/LayeredMesher.h), which keeps it exactly.
 //
-// Limits of this first version: layered patches must form whole closed shells (no layer may touch a
-// symmetry plane or another non-layered patch; such input gets a Status naming the patches and a point);
-// one marching direction per vertex (no fans at sharp convex edges).
+// Where a wall meets a flat non-layered patch (a symmetry plane normal to a coordinate axis), its points
+// march in that plane and the plane's triangles are moved with them to the last layer (kept only when
+// none flips: exact orient2d; else the column is thinned). Limits of this first version: any other
+// non-layered patch a wall touches gets a Status naming it and the point; one marching direction per
+// vertex (no fans at sharp convex edges); every column has all the layers (thinning scales heights).
 #pragma once
 
 #include "Progress.h"
@@ -75,6 +77,8 @@ struct LayerResult
   std::vector<uint8_t> pointReason;      // per surface point: ThinnedReason
   std::vector<int32_t> wallTriangles;    // layered triangles, 3 each, as in the input (orientation kept)
   std::vector<int32_t> wallPatch;        // their patch ids
+  std::vector<int32_t> sideQuads;        // 4 per prism side face on a symmetry plane (boundary faces)
+  std::vector<int32_t> sidePatch;        // their patch ids
   SurfaceMesh tetBoundary;               // last layer's surface (patch interfacePatch) + the other triangles
   std::vector<int32_t> tetBoundaryPoint; // tetBoundary point -> index into points
   int32_t interfacePatch = -1;

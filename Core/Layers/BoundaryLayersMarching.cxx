@@ -1,6 +1,7 @@
 // Marching directions, layer points and the exact validity checks of the columns.
 #include "BoundaryLayersMarching.h"
 
+#include "Predicates.h"
 #include "SurfaceChecks.h"
 
 #include <algorithm>
@@ -130,22 +131,48 @@ std::vector<double> marchingDirections(const Walls& walls, int passes)
     }
     dir.swap(next);
   }
-  // Smoothing may leave a direction oblique to a face at a sharp edge: tilt it towards that face.
+  // Smoothing may leave a direction oblique to a face at a sharp edge (a trailing edge): raise the smallest
+  // dot product with the incident faces by subgradient steps, keeping the best direction seen.
   for (size_t c = 0; c < nc; ++c)
-    for (int round = 0; round < 20; ++round)
+  {
+    const auto worstOf = [&](const double* d, int32_t& face)
     {
       double worst = 2;
-      int32_t worstFace = -1;
       for (int32_t k = faceStart[c]; k < faceStart[c + 1]; ++k)
       {
-        const double d = dot(dir.data() + 3 * c, normals.data() + 3 * size_t(faces[k]));
-        if (d < worst)
-          worst = d, worstFace = faces[k];
+        double v[3] = { d[0], d[1], d[2] };
+        if (walls.slipAxis[c] >= 0)
+          v[walls.slipAxis[c]] = 0;
+        normalize(v);
+        const double x = dot(v, normals.data() + 3 * size_t(faces[k]));
+        if (x < worst)
+          worst = x, face = faces[k];
       }
-      if (worstFace < 0 || worst >= 0.3)
-        break;
-      for (int d = 0; d < 3; ++d)
-        dir[3 * c + d] += (0.4 - worst) * normals[3 * size_t(worstFace) + d];
+      return worst;
+    };
+    int32_t face = -1;
+    double best[3] = { dir[3 * c], dir[3 * c + 1], dir[3 * c + 2] }, d[3] = { best[0], best[1], best[2] };
+    double bestWorst = worstOf(best, face);
+    for (int round = 0; round < 200 && bestWorst < 0.3 && face >= 0; ++round)
+    {
+      const double step = 0.5 / (1 + round);
+      for (int k = 0; k < 3; ++k)
+        d[k] += step * normals[3 * size_t(face) + k];
+      normalize(d);
+      const double worst = worstOf(d, face);
+      if (worst > bestWorst)
+      {
+        bestWorst = worst;
+        std::copy(d, d + 3, best);
+      }
+    }
+    std::copy(best, best + 3, dir.begin() + 3 * c);
+  }
+  // On a symmetry plane: exactly in the plane (a zero component keeps the coordinate bit for bit).
+  for (size_t c = 0; c < nc; ++c)
+    if (walls.slipAxis[c] >= 0)
+    {
+      dir[3 * c + walls.slipAxis[c]] = 0;
       normalize(dir.data() + 3 * c);
     }
   return dir;
@@ -221,12 +248,46 @@ std::vector<int32_t> invertedColumns(const Walls& walls, const std::vector<doubl
   return out;
 }
 
+std::vector<int32_t> movedOtherTriangles(const Walls& walls, int layers)
+{
+  std::vector<int32_t> moved = walls.otherTriangles;
+  for (int32_t& v : moved)
+    if (walls.column[v] >= 0)
+      v = layerPoint(walls, v, layers - 1, layers);
+  return moved;
+}
+
 std::vector<int32_t> collidingColumns(const Walls& walls, const std::vector<double>& points, int layers, int threads)
 {
+  std::vector<char> bad(walls.layeredPoints.size(), 0);
+  const std::vector<int32_t> moved = movedOtherTriangles(walls, layers);
+  const auto markMoved = [&](size_t k)
+  {
+    for (int i = 0; i < 3; ++i)
+      if (walls.column[walls.otherTriangles[k + i]] >= 0)
+        bad[walls.column[walls.otherTriangles[k + i]]] = 1;
+  };
+  // A plane triangle whose layered corners moved must keep its orientation in the plane (exact).
+  for (size_t k = 0; k < moved.size(); k += 3)
+    if (moved[k] != walls.otherTriangles[k] || moved[k + 1] != walls.otherTriangles[k + 1] ||
+        moved[k + 2] != walls.otherTriangles[k + 2])
+    {
+      int axis = -1;
+      for (int i = 0; i < 3 && axis < 0; ++i)
+        if (walls.column[walls.otherTriangles[k + i]] >= 0)
+          axis = walls.slipAxis[walls.column[walls.otherTriangles[k + i]]];
+      const auto at = [&](int32_t id) { return points.data() + 3 * size_t(id); };
+      const int before = predicates::orient2dProjected(at(walls.otherTriangles[k]), at(walls.otherTriangles[k + 1]),
+                                                       at(walls.otherTriangles[k + 2]), axis);
+      const int after = predicates::orient2dProjected(at(moved[k]), at(moved[k + 1]), at(moved[k + 2]), axis);
+      if (after == 0 || after != before)
+        markMoved(k);
+    }
   SurfaceMesh check;
   check.points = points;
   check.triangles = walls.triangles;
-  check.triangles.insert(check.triangles.end(), walls.otherTriangles.begin(), walls.otherTriangles.end());
+  const size_t firstOther = check.triangles.size() / 3;
+  check.triangles.insert(check.triangles.end(), moved.begin(), moved.end());
   const size_t firstTop = check.triangles.size() / 3;
   for (const int32_t v : walls.triangles)
     check.triangles.push_back(layerPoint(walls, v, layers - 1, layers));
@@ -234,8 +295,10 @@ std::vector<int32_t> collidingColumns(const Walls& walls, const std::vector<doub
   options.nesting = false;
   options.threads = threads;
   const SurfaceCheckReport report = checkSurface(check, options);
-  std::vector<char> bad(walls.layeredPoints.size(), 0);
   const uint8_t crossing = TriangleSelfIntersecting | TriangleShellIntersecting | TriangleDegenerate;
+  for (size_t t = firstOther; t < firstTop; ++t)
+    if (report.triangleFlags[t] & crossing)
+      markMoved(3 * (t - firstOther));
   for (size_t t = firstTop; t < report.triangleFlags.size(); ++t)
     if (report.triangleFlags[t] & crossing)
       for (int i = 0; i < 3; ++i)

@@ -19,7 +19,8 @@ struct Walls
   std::vector<int32_t> triangles;              // 3 per layered triangle, normal into the domain
   std::vector<int32_t> layeredPoints;          // surface point ids that carry a column
   std::vector<int32_t> column;                 // surface point -> index in layeredPoints, or -1
-  std::vector<int32_t> otherTriangles;         // 3 per triangle of the untouched patches
+  std::vector<int32_t> otherTriangles;         // 3 per triangle of the other patches
+  std::vector<int8_t> slipAxis;                // per column: the axis normal to the symmetry plane it marches in, or -1
 };
 
 // Unit marching direction per column (3 each): angle-weighted face normals, smoothed `passes` times,
@@ -36,7 +37,11 @@ void placeLayerPoints(const Walls& walls, const std::vector<double>& directions,
 // Columns (by index) of the prisms that are not valid (prismIsValid) with the points placed.
 std::vector<int32_t> invertedColumns(const Walls& walls, const std::vector<double>& points, int layers);
 
-// Columns whose last-layer triangles cross each other, a wall or another triangle (exact).
+// The other patches' triangles with their layered points replaced by the last layer's (symmetry planes).
+std::vector<int32_t> movedOtherTriangles(const Walls& walls, int layers);
+
+// Columns whose last-layer triangles cross each other, a wall or another triangle, and columns on a
+// symmetry plane whose moved plane triangles flip or cross (exact).
 std::vector<int32_t> collidingColumns(const Walls& walls, const std::vector<double>& points, int layers,
                                       int threads = 0);
 

@@ -82,6 +82,15 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
   result.boundaryTriangles.insert(result.boundaryTriangles.begin(), layers.wallTriangles.begin(),
                                   layers.wallTriangles.end());
   result.boundaryPatch.insert(result.boundaryPatch.begin(), layers.wallPatch.begin(), layers.wallPatch.end());
+  // Prism sides on symmetry planes: two triangles cut through the quad's smallest id, as splitPrism does.
+  for (size_t q = 0; q < layers.sidePatch.size(); ++q)
+  {
+    const int32_t* v = layers.sideQuads.data() + 4 * q;
+    const int m = static_cast<int>(std::min_element(v, v + 4) - v);
+    const int32_t a = v[m], b = v[(m + 1) % 4], c = v[(m + 2) % 4], d = v[(m + 3) % 4];
+    result.boundaryTriangles.insert(result.boundaryTriangles.end(), { a, b, c, a, c, d });
+    result.boundaryPatch.insert(result.boundaryPatch.end(), 2, layers.sidePatch[q]);
+  }
   result.patchNames = layers.tetBoundary.patchNames;
   result.patchNames.erase(layers.interfacePatch);
   if (layerOptions.splitPrisms)

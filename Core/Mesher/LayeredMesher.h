@@ -24,8 +24,10 @@ struct LayeredMeshResult
   std::vector<int32_t> wedges;    // 6 per prism: base a,b,c (normal towards the top), top a',b',c'
   std::vector<int32_t> wedgeLayer;
   std::vector<uint8_t> wedgeReason;
-  std::vector<int32_t> wallTriangles;     // the layered input triangles, 3 each (also in boundaryTriangles)
-  std::vector<int32_t> boundaryTriangles; // the domain's boundary: walls and the untouched patches
+  std::vector<int32_t> wallTriangles; // the layered input triangles, 3 each (also in boundaryTriangles)
+  // The domain's boundary: walls, the other patches, and the prisms' side quads on symmetry planes (each
+  // as two triangles cut through its smallest id, as the split prisms' faces are).
+  std::vector<int32_t> boundaryTriangles;
   std::vector<int32_t> boundaryPatch;
   NameTable patchNames;
   std::vector<int32_t> interfaceTriangles; // the last layer's outer surface, 3 each

@@ -1,6 +1,7 @@
 """volgrid mesh --layers: a sphere in a sphere gets every layer (wedges, coverage, no inverted cell, the
 interface shared exactly), bad parameters are refused with nothing written, and layers that touch a
-non-layered patch (the ONERA M6 wing root on its symmetry plane) are refused with a message naming it.
+non-layered patch other than a flat symmetry plane are refused with a message naming it; the ONERA M6
+wing gets its 15 layers, marching in the symmetry plane at the root.
 usage: test_cli_layers.py VOLGRID DATA_DIR [SHARED_REAL_DATA_DIR]"""
 import json
 import os
@@ -79,10 +80,20 @@ expect(refused_cleanly(r) and "--split-prisms" in r.stderr, "prisms in a solver 
 
 m6 = os.path.join(shared, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
 if shared and os.path.exists(m6):
-    r = run([volgrid, "mesh", m6, w("m6.vtu"), "--layers", "15", "--first-height", "8e-5", "--layer-patches",
-             "3,4,5,6,7,8,9,10,11,12"])
-    expect(refused_cleanly(r) and "touch the non-layered patch 'patch2'" in r.stderr and "not supported yet" in r.stderr
-           and not os.path.exists(w("m6.vtu")), "M6: layers at the symmetry plane refused with a message", r)
+    # Acceptance 1 of issue 19: 15 layers of 1e-4 root chord (the root chord is 1), ratio 1.2; the wing root
+    # marches in the symmetry plane (patch 2).
+    r = run([volgrid, "mesh", m6, w("m6.vtu"), "--json", "--layers", "15", "--first-height", "1e-4", "--growth", "1.2",
+             "--layer-patches", "3,4,5,6,7,8,9,10,11,12"], timeout=600)
+    expect(r.returncode == 0, "M6: 15 layers on the wing", r)
+    if r.returncode == 0:
+        j = json.loads(r.stdout)
+        print("M6:", j)
+        expect(j["coverage"] >= 0.98 and j["inverted_cells"] == 0 and j["wedges"] >= 0.98 * 15 * j["layered_faces"],
+               "M6: at least 98%% of the wing faces get all 15 layers, none inverted: %s" % j)
+        expect(j["interface_faces_shared"] == j["layered_faces"], "M6: the tets share the layers' surface: %s" % j)
+    r = run([volgrid, "mesh", m6, w("m6bad.vtu"), "--layers", "15", "--first-height", "1e-4", "--layer-patches", "1,3,4"])
+    expect(refused_cleanly(r) and "touch the non-layered patch" in r.stderr and not os.path.exists(w("m6bad.vtu")),
+           "M6: layers on part of the wing, touching the rest of it, refused with a message", r)
 else:
     print("skipped the ONERA M6 case: %s is absent" % m6)
 

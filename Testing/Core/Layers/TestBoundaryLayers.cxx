@@ -175,17 +175,44 @@ TEST(BoundaryLayers, InternalFlowCornersStayValid)
   EXPECT_TRUE(surfaceStatus(checkSurface(r.tetBoundary)).ok());
 }
 
-TEST(BoundaryLayers, LayersTouchingASymmetryPlaneAreRefused)
+TEST(BoundaryLayers, LayersMarchInASymmetryPlane)
+{
+  // A box whose z = 0 face is a symmetry plane: the walls' points on it march in it (z stays 0 exactly), the
+  // plane's triangles move with them, and each wall edge on the plane gets a side quad per layer.
+  SurfaceMesh s;
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
+  testshapes::addBox(s, lo, hi);
+  s.patchIds.assign(12, 1);
+  s.patchIds[0] = s.patchIds[1] = 2; // the quad {0,2,3,1}: z = 0
+  s.patchNames = { { 1, "wall" }, { 2, "symmetry" } };
+  LayerResult r;
+  const Status st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 10);
+  EXPECT_EQ(r.sideQuads.size(), size_t(4 * 4 * 3));
+  for (size_t p = 0; p < r.prismLayer.size(); ++p)
+    ASSERT_TRUE(prismOk(r, p)) << "prism " << p;
+  for (const int32_t v : r.sideQuads)
+    EXPECT_EQ(r.points[3 * size_t(v) + 2], 0.0);
+  EXPECT_TRUE(surfaceStatus(checkSurface(r.tetBoundary)).ok());
+}
+
+TEST(BoundaryLayers, LayersAlongACurvedOrSecondPatchAreRefused)
 {
   SurfaceMesh s;
   const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
   testshapes::addBox(s, lo, hi);
   s.patchIds.assign(12, 1);
-  s.patchIds[0] = s.patchIds[1] = 2;
-  s.patchNames = { { 1, "wing" }, { 2, "symmetry" } };
+  s.patchIds[0] = s.patchIds[1] = s.patchIds[8] = s.patchIds[9] = 2; // z = 0 and x = 0: not flat
+  s.patchNames = { { 1, "wing" }, { 2, "inlet" }, { 3, "outlet" } };
   LayerResult r;
-  const Status st = growLayers(s, options(3, 0.01, 1.2), r);
+  Status st = growLayers(s, options(3, 0.01, 1.2), r);
   EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
-  EXPECT_NE(st.message.find("'symmetry'"), std::string::npos) << st.message;
+  EXPECT_NE(st.message.find("'inlet'"), std::string::npos) << st.message;
+  EXPECT_NE(st.message.find("symmetry plane"), std::string::npos) << st.message;
   EXPECT_TRUE(r.prisms.empty());
+  s.patchIds[8] = s.patchIds[9] = 3; // two flat patches meeting at the wall: a point on both
+  st = growLayers(s, options(3, 0.01, 1.2), r);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("also on patch"), std::string::npos) << st.message;
 }
