@@ -31,7 +31,7 @@ const char* const kLayerUsage =
   "  --first-height H     height of the layer on the wall\n"
   "  --growth R           ratio between consecutive layer heights (>= 1, default 1.2)\n"
   "  --layer-patches A,B  layered patches by name or id (default: every patch whose OpenFOAM type is wall)\n"
-  "  --split-prisms       each prism as 3 tets (needed for the solver formats)\n";
+  "  --split-prisms       each prism as 3 tets (needed for the solver formats other than gmsh .msh)\n";
 
 int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
 {
@@ -162,11 +162,12 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
                    MeshFormat format, bool vtkOutput, const ExportRequest& request, const MesherOptions& options,
                    const LayerOptions& layers, bool json)
 {
-  if (!vtkOutput && !layers.splitPrisms)
+  const bool gmsh = format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22;
+  if (!vtkOutput && !gmsh && !layers.splitPrisms)
   {
     std::fprintf(stderr,
-                 "volgrid mesh: prism layers are written to .vtu/.vtk only for now; add --split-prisms "
-                 "to write them as tets in a solver format\n");
+                 "volgrid mesh: prism layers are written to .vtu/.vtk/.msh only for now; add "
+                 "--split-prisms to write them as tets in another solver format\n");
     return 2;
   }
   if (!request.patches.empty())
@@ -208,6 +209,13 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
     mesh.triangles = r.boundaryTriangles;
     mesh.trianglePatch = r.boundaryPatch;
     mesh.patchNames = r.patchNames;
+    mesh.prisms = r.wedges;
+    mesh.prismRegion.assign(r.wedges.size() / 6, 0);
+    if (!layers.splitPrisms)
+    {
+      mesh.quads = r.sideQuads;
+      mesh.quadPatch = r.sidePatch;
+    }
     if (!writeSolverOutput("mesh", out, format, mesh, request, json))
       return 1;
   }

@@ -83,7 +83,9 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
                                   layers.wallTriangles.end());
   result.boundaryPatch.insert(result.boundaryPatch.begin(), layers.wallPatch.begin(), layers.wallPatch.end());
   // Prism sides on symmetry planes: two triangles cut through the quad's smallest id, as splitPrism does.
-  for (size_t q = 0; q < layers.sidePatch.size(); ++q)
+  result.sideQuads = layers.sideQuads;
+  result.sidePatch = layers.sidePatch;
+  for (size_t q = 0; q < layers.sidePatch.size() && layerOptions.splitPrisms; ++q)
   {
     const int32_t* v = layers.sideQuads.data() + 4 * q;
     const int m = static_cast<int>(std::min_element(v, v + 4) - v);

@@ -25,10 +25,12 @@ struct LayeredMeshResult
   std::vector<int32_t> wedgeLayer;
   std::vector<uint8_t> wedgeReason;
   std::vector<int32_t> wallTriangles; // the layered input triangles, 3 each (also in boundaryTriangles)
-  // The domain's boundary: walls, the other patches, and the prisms' side quads on symmetry planes (each
-  // as two triangles cut through its smallest id, as the split prisms' faces are).
+  // The domain's boundary: walls, the other patches, and with split prisms the prisms' side quads on
+  // symmetry planes (each as two triangles cut through its smallest id, as the split prisms' faces are).
   std::vector<int32_t> boundaryTriangles;
   std::vector<int32_t> boundaryPatch;
+  std::vector<int32_t> sideQuads; // the prisms' side faces on symmetry planes, 4 each (boundary faces)
+  std::vector<int32_t> sidePatch;
   NameTable patchNames;
   std::vector<int32_t> interfaceTriangles; // the last layer's outer surface, 3 each
   int64_t interfaceOnTets = 0;             // of those, how many are faces of the tet region's boundary

@@ -5,6 +5,7 @@ wing gets its 15 layers, marching in the symmetry plane at the root.
 usage: test_cli_layers.py VOLGRID DATA_DIR [SHARED_REAL_DATA_DIR]"""
 import json
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -66,6 +67,17 @@ if r.returncode == 0:
     else:
         print("skipped checkMesh: OpenFOAM is not installed")
 
+# Wedges in gmsh 2.2 through gmshToFoam: checkMesh on the mixed mesh itself.
+r = run([volgrid, "mesh", w("sis.off"), w("sis.msh"), "--format", "gmsh22"] + layers)
+expect(r.returncode == 0, "prisms to gmsh 2.2", r)
+if r.returncode == 0 and os.path.exists("/usr/share/openfoam/etc/bashrc"):
+    os.makedirs(w("sis_gmsh"), exist_ok=True)
+    shutil.copytree(w("sis_foam/system"), w("sis_gmsh/system"))
+    c = run(["bash", "-c", "source /usr/share/openfoam/etc/bashrc >/dev/null 2>&1; cd '%s' && gmshToFoam ../sis.msh "
+             "&& checkMesh" % w("sis_gmsh")], timeout=600)
+    expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
+           "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
+
 bad = [(["--layers", "10", "--first-height", "-1e-3"], "first layer height"),
        (["--layers", "10", "--first-height", "1e-3", "--growth", "0.5"], "growth"),
        (["--layers", "10", "--first-height", "5", "--growth", "1"], "more than the domain allows"),
@@ -75,7 +87,7 @@ for extra, message in bad:
     out = w("bad.vtu")
     r = run([volgrid, "mesh", w("sis.off"), out] + extra)
     expect(refused_cleanly(r) and message in r.stderr and not os.path.exists(out), "refused: " + message, r)
-r = run([volgrid, "mesh", w("sis.off"), w("bad.msh")] + layers)
+r = run([volgrid, "mesh", w("sis.off"), w("bad.su2")] + layers)
 expect(refused_cleanly(r) and "--split-prisms" in r.stderr, "prisms in a solver format need --split-prisms", r)
 
 m6 = os.path.join(shared, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
