@@ -29,6 +29,9 @@ const char* const kLayerUsage =
   "Boundary layers (prisms on the wall patches, conformal with the tets):\n"
   "  --layers N           number of prism layers (0: none)\n"
   "  --first-height H     height of the layer on the wall\n"
+  "  --y-plus Y --reynolds RE --reference-length L\n"
+  "                       instead of --first-height: the height of y+ = Y on a flat plate of length L at\n"
+  "                       Reynolds number RE (Cf = 0.026 / RE^(1/7))\n"
   "  --growth R           ratio between consecutive layer heights (>= 1, default 1.2)\n"
   "  --layer-patches A,B  layered patches by name or id (default: every patch whose OpenFOAM type is wall)\n"
   "  --split-prisms       each prism as 3 tets (needed for the solver formats other than gmsh .msh)\n";
@@ -41,7 +44,8 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
     options.splitPrisms = true;
     return 1;
   }
-  if (a != "--layers" && a != "--first-height" && a != "--growth" && a != "--layer-patches")
+  if (a != "--layers" && a != "--first-height" && a != "--growth" && a != "--layer-patches" && a != "--y-plus" &&
+      a != "--reynolds" && a != "--reference-length")
     return 0;
   if (i + 1 >= argc)
   {
@@ -75,7 +79,11 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
   double x = 0;
   if (!parseDouble("mesh", a.c_str(), v, x))
     return -1;
-  (a == "--growth" ? options.growth : options.firstHeight) = x;
+  (a == "--growth"               ? options.growth
+     : a == "--y-plus"           ? options.yPlus
+     : a == "--reynolds"         ? options.reynolds
+     : a == "--reference-length" ? options.referenceLength
+                                 : options.firstHeight) = x;
   return 1;
 }
 
@@ -222,15 +230,16 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
   const LayerStatistics& l = r.layerStats;
   const long long wedges = (long long)(r.wedges.size() / 6), tets = (long long)(r.tets.size() / 4);
   if (json)
-    std::printf("{\"input\": %s, \"points\": %lld, \"wedges\": %lld, \"tets\": %lld, \"layers\": %d, "
-                "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"thinned_columns\": %lld, "
-                "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, "
-                "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
-                "\"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
-                jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, tets, layers.layers,
-                (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(), (long long)l.thinnedColumns,
-                (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3], l.minScale,
-                (long long)inverted, (long long)r.interfaceOnTets, l.seconds, seconds);
+    std::printf(
+      "{\"input\": %s, \"points\": %lld, \"wedges\": %lld, \"tets\": %lld, \"layers\": %d, \"first_height\": %.6g, "
+      "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"thinned_columns\": %lld, "
+      "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, "
+      "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
+      "\"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
+      jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, tets, layers.layers,
+      layers.resolved().firstHeight, (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(),
+      (long long)l.thinnedColumns, (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3],
+      l.minScale, (long long)inverted, (long long)r.interfaceOnTets, l.seconds, seconds);
   else
     std::printf("%s: %d layers on %lld faces (coverage %.2f%%, %lld thinned columns) -> %lld wedges, %lld tets on "
                 "%lld points, %lld inverted, in %.3f s\n",

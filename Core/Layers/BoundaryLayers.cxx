@@ -204,8 +204,29 @@ const char* thinnedReasonName(ThinnedReason reason)
   }
 }
 
-Status validateLayerOptions(const LayerOptions& o)
+double firstHeightForYPlus(double yPlus, double reynolds, double length)
 {
+  if (!(yPlus > 0) || !(reynolds > 0) || !(length > 0))
+    return 0;
+  const double cf = 0.026 / std::pow(reynolds, 1.0 / 7.0);
+  return yPlus * length / (reynolds * std::sqrt(cf / 2));
+}
+
+LayerOptions LayerOptions::resolved() const
+{
+  LayerOptions o = *this;
+  if (o.yPlus > 0 && o.firstHeight == 0)
+    o.firstHeight = firstHeightForYPlus(o.yPlus, o.reynolds, o.referenceLength);
+  return o;
+}
+
+Status validateLayerOptions(const LayerOptions& given)
+{
+  if (given.yPlus != 0 && given.firstHeight != 0)
+    return Status::failure(ErrorKind::InvalidOption, "give the first layer height or a y+, not both");
+  if (given.yPlus != 0 && !(given.yPlus > 0 && given.reynolds > 0 && given.referenceLength > 0))
+    return Status::failure(ErrorKind::InvalidOption, "a y+ needs a positive y+, Reynolds number and reference length");
+  const LayerOptions o = given.resolved();
   if (o.layers < 1 || o.layers > 1000)
     return Status::failure(ErrorKind::InvalidOption,
                            "the number of layers must be 1..1000, not " + std::to_string(o.layers));
@@ -325,15 +346,16 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
 }
 } // namespace
 
-Status growLayers(const SurfaceMesh& input, const LayerOptions& options, LayerResult& result, Progress* progress)
+Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResult& result, Progress* progress)
 {
   const auto started = std::chrono::steady_clock::now();
   result = LayerResult();
   SilentProgress silent;
   Progress& report = progress ? *progress : silent;
-  Status status = validateLayerOptions(options);
+  Status status = validateLayerOptions(given);
   if (!status.ok())
     return status;
+  const LayerOptions options = given.resolved();
   SurfaceMesh s = input;
   mergeCoincidentPoints(s); // as the mesher does: point i of the merged surface
   const BoundingBox box = boundingBox(s, true);

@@ -33,10 +33,14 @@ struct LayerOptions
   double growth = 1.2;                 // ratio between consecutive layer heights (>= 1)
   std::vector<int32_t> patchIds;       // layered patches by id; with patchNames empty too: every wall patch
   std::vector<std::string> patchNames; // layered patches by name
-  int normalSmoothing = 5;             // Laplacian passes over the vertex normals
-  bool splitPrisms = false;            // output each prism as 3 tets (min-vertex-index rule)
+  // Instead of firstHeight: the height of a target y+ at a Reynolds number on a reference length
+  // (firstHeightForYPlus).
+  double yPlus = 0, reynolds = 0, referenceLength = 0;
+  int normalSmoothing = 5;  // Laplacian passes over the vertex normals
+  bool splitPrisms = false; // output each prism as 3 tets (min-vertex-index rule)
   bool enabled() const { return layers > 0; }
   double totalThickness() const; // first * (1 + r + ... + r^(layers-1))
+  LayerOptions resolved() const; // firstHeight computed from yPlus when that is given
 };
 
 // Why a column is thinner than asked.
@@ -85,7 +89,13 @@ struct LayerResult
   LayerStatistics stats;
 };
 
-// Checks the numbers (not the surface): layers >= 1, first height > 0 and finite, growth >= 1.
+// First-layer height for a target y+ on a flat plate (turbulent skin friction of White / Schlichting):
+// Cf = 0.026 / Re^(1/7), u_tau / U = sqrt(Cf / 2), so y = yPlus * length / (Re * sqrt(Cf / 2)), with
+// Re = U * length / nu. A first estimate, as in the usual y+ calculators; 0 for non-positive input.
+double firstHeightForYPlus(double yPlus, double reynolds, double length);
+
+// Checks the numbers (not the surface): layers >= 1, first height > 0 and finite (or y+, Reynolds number and
+// reference length, not both), growth >= 1.
 Status validateLayerOptions(const LayerOptions& options);
 
 // Grows the layers on `surface` (closed shells, as the mesher takes them; region rule even-odd decides on

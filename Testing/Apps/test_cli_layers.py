@@ -78,7 +78,14 @@ if r.returncode == 0 and os.path.exists("/usr/share/openfoam/etc/bashrc"):
     expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
            "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
 
-bad = [(["--layers", "10", "--first-height", "-1e-3"], "first layer height"),
+# The first height from a target y+ (flat plate, Re 1e6, length 1: 2.35288e-05).
+r = run([volgrid, "mesh", w("sis.off"), w("yplus.vtu"), "--json", "--layers", "3", "--y-plus", "1", "--reynolds", "1e6",
+         "--reference-length", "1"])
+expect(r.returncode == 0 and abs(json.loads(r.stdout)["first_height"] / 2.35288e-05 - 1) < 1e-5, "--y-plus", r)
+
+bad = [(["--layers", "3", "--first-height", "1e-3", "--y-plus", "1", "--reynolds", "1e6", "--reference-length", "1"],
+        "not both"),
+       (["--layers", "10", "--first-height", "-1e-3"], "first layer height"),
        (["--layers", "10", "--first-height", "1e-3", "--growth", "0.5"], "growth"),
        (["--layers", "10", "--first-height", "5", "--growth", "1"], "more than the domain allows"),
        (["--first-height", "1e-3"], "need --layers"),

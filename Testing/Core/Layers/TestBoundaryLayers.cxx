@@ -216,3 +216,13 @@ TEST(BoundaryLayers, LayersAlongACurvedOrSecondPatchAreRefused)
   EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
   EXPECT_NE(st.message.find("also on patch"), std::string::npos) << st.message;
 }
+
+TEST(BoundaryLayers, FirstHeightFromYPlus)
+{
+  // Re = 1e6, L = 1, y+ = 1: Cf = 0.026 / 1e6^(1/7) = 3.6126e-3, sqrt(Cf/2) = 4.2501e-2, y = 2.3529e-5.
+  EXPECT_NEAR(firstHeightForYPlus(1, 1e6, 1), 2.3529e-5, 1e-8);
+  // Linear in y+ and in the length; thinner for a higher Reynolds number.
+  EXPECT_NEAR(firstHeightForYPlus(30, 1e6, 2) / firstHeightForYPlus(1, 1e6, 1), 60.0, 1e-9);
+  EXPECT_LT(firstHeightForYPlus(1, 1e7, 1), firstHeightForYPlus(1, 1e6, 1));
+  EXPECT_EQ(firstHeightForYPlus(-1, 1e6, 1), 0.0);
+}
