@@ -2,12 +2,15 @@
 #include "LayeredMesher.h"
 
 #include "../Layers/LayerTestShapes.h"
+#include "MeshWriter.h"
 #include "Predicates.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <fstream>
+#include <iterator>
 #include <map>
 
 using namespace volgrid;
@@ -101,4 +104,40 @@ TEST(LayeredMesher, SplitPrismsGiveAConformalTetMesh)
   for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
     (s.patchIds[t] == 1 ? body : far).push_back(t);
   EXPECT_NEAR(volume / (signedVolume(s, far) - signedVolume(s, body)), 1.0, 1e-9);
+}
+
+TEST(LayeredMesher, GmshWritesPrismsAndQuadsOthersRefuseThem)
+{
+  // One prism (region 0) on a triangle (patch 3), its side quad on patch 5, its top on patch 4.
+  SolverMesh mesh;
+  mesh.points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1 };
+  mesh.prisms = { 0, 1, 2, 3, 4, 5 };
+  mesh.prismRegion = { 0 };
+  mesh.triangles = { 0, 2, 1, 3, 4, 5 };
+  mesh.trianglePatch = { 3, 4 };
+  mesh.quads = { 0, 1, 4, 3 };
+  mesh.quadPatch = { 5 };
+  const std::string dir = ::testing::TempDir();
+  for (const MeshFormat format : { MeshFormat::Gmsh22, MeshFormat::Gmsh41 })
+  {
+    const std::string path = dir + "/layers_prism.msh";
+    ASSERT_TRUE(writeSolverMesh(path, mesh, format).ok());
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string elements = text.substr(text.find("$Elements"));
+    if (format == MeshFormat::Gmsh22) // number, type, 2 tags (physical = entity = the normalized label), nodes
+    {
+      EXPECT_NE(elements.find("\n4 6 2 1 1 1 2 3 4 5 6\n"), std::string::npos) << elements;
+      EXPECT_NE(elements.find("\n3 3 2 3 3 1 2 5 4\n"), std::string::npos) << elements;
+    }
+    else // blocks: 2 triangle blocks, 1 quad block, 1 prism block
+    {
+      EXPECT_NE(elements.find("\n4 4 1 4\n"), std::string::npos) << elements;
+      EXPECT_NE(elements.find("\n2 3 3 1\n"), std::string::npos) << elements;
+      EXPECT_NE(elements.find("\n3 1 6 1\n4 1 2 3 4 5 6\n"), std::string::npos) << elements;
+    }
+  }
+  const Status refused = writeSolverMesh(dir + "/layers_prism.su2", mesh, MeshFormat::SU2);
+  EXPECT_EQ(refused.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(refused.message.find("prisms"), std::string::npos) << refused.message;
 }
