@@ -2,6 +2,7 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "MeshExport.h"
+#include "MeshLayers.h"
 #include "OutputPaths.h"
 #include "PointFiles.h"
 #include "SizeLimit.h"
@@ -75,6 +76,7 @@ struct Arguments
   long long maxTets = 0;
   std::map<std::string, std::string> given; // option -> its text, to name it in messages
   volgrid::MesherOptions options;
+  volgrid::LayerOptions layers; // --layers ... (MeshLayers.h)
 };
 
 bool parseArguments(int argc, char** argv, Arguments& args)
@@ -92,6 +94,12 @@ bool parseArguments(int argc, char** argv, Arguments& args)
       }
       return argv[++i];
     };
+    if (const int taken = volgrid::cli::parseLayerOption(argc, argv, i, args.layers))
+    {
+      if (taken < 0)
+        return false;
+      continue;
+    }
     if (a == "--json")
       args.json = true;
     else if (a == "--check")
@@ -182,6 +190,7 @@ bool parseArguments(int argc, char** argv, Arguments& args)
     else if (a == "--help" || a == "-h")
     {
       std::fputs(kUsage.c_str(), stdout);
+      std::fputs(volgrid::cli::kLayerUsage, stdout);
       std::fputs(volgrid::cli::kExportUsage, stdout);
       std::exit(0);
     }
@@ -192,6 +201,14 @@ bool parseArguments(int argc, char** argv, Arguments& args)
     }
     else
       positional.push_back(a);
+  }
+  if (!args.layers.enabled() &&
+      (args.layers.firstHeight != 0 || args.layers.yPlus != 0 || !args.layers.patchNames.empty() ||
+       !args.layers.patchIds.empty() || args.layers.splitPrisms))
+  {
+    std::fprintf(stderr,
+                 "volgrid mesh: --first-height, --y-plus, --layer-patches and --split-prisms need --layers N\n");
+    return false;
   }
   if (positional.size() != 2)
   {
@@ -315,6 +332,16 @@ int runMeshCommand(int argc, char** argv)
     return 1;
 
   args.options.verify = args.check;
+  if (args.layers.enabled()) // boundary layers: prisms + tets, written by MeshLayers.cxx
+  {
+    if (!args.boundaryOut.empty())
+    {
+      std::fprintf(stderr, "volgrid mesh: --boundary is not supported together with --layers yet\n");
+      return 2;
+    }
+    return volgrid::cli::runLayeredMesh(surface, args.surface, args.out, format, vtkOutput, exportRequest, args.options,
+                                        args.layers, args.json);
+  }
   volgrid::MesherResult result;
   const volgrid::cli::Stopwatch watch;
   const volgrid::Status status = volgrid::meshSurface(surface, args.options, result);

@@ -1,6 +1,7 @@
 // gmsh .msh writers, ASCII 4.1 and 2.2. Each patch is a surface entity and each region a volume entity
 // whose tag equals its label, carrying one physical group of the same tag named in $PhysicalNames.
-// Node and element tags are 1-based; tets keep VolGrid's (and gmsh's) positive vertex order.
+// Node and element tags are 1-based; tets keep VolGrid's (and gmsh's) positive vertex order; prisms
+// (type 6) and boundary quads (type 3) of boundary layers are written when the mesh has them.
 #include "MeshWriter.h"
 #include "OutputFile.h"
 
@@ -47,6 +48,16 @@ void entityBox(const SolverMesh& mesh, const std::vector<int32_t>& cells, int nv
   }
 }
 
+// entityBox over more cells (boundary quads, prisms), grown into `box`.
+void growBox(const SolverMesh& mesh, const std::vector<int32_t>& cells, int nv, const std::vector<int32_t>& labels,
+             int32_t label, double box[6])
+{
+  double more[6];
+  entityBox(mesh, cells, nv, labels, label, more);
+  for (int k = 0; k < 3; ++k)
+    box[k] = std::min(box[k], more[k]), box[3 + k] = std::max(box[3 + k], more[3 + k]);
+}
+
 void writeEntities(std::FILE* f, const SolverMesh& mesh, const std::vector<int32_t>& patches,
                    const std::vector<int32_t>& regions)
 {
@@ -55,21 +66,23 @@ void writeEntities(std::FILE* f, const SolverMesh& mesh, const std::vector<int32
   for (int32_t p : patches)
   {
     entityBox(mesh, mesh.triangles, 3, mesh.trianglePatch, p, b);
+    growBox(mesh, mesh.quads, 4, mesh.quadPatch, p, b);
     std::fprintf(f, "%d %.17g %.17g %.17g %.17g %.17g %.17g 1 %d 0\n", p, b[0], b[1], b[2], b[3], b[4], b[5], p);
   }
   for (int32_t r : regions)
   {
     entityBox(mesh, mesh.tets, 4, mesh.tetRegion, r, b);
+    growBox(mesh, mesh.prisms, 6, mesh.prismRegion, r, b);
     std::fprintf(f, "%d %.17g %.17g %.17g %.17g %.17g %.17g 1 %d 0\n", r, b[0], b[1], b[2], b[3], b[4], b[5], r);
   }
   std::fprintf(f, "$EndEntities\n");
 }
 
 // The elements carrying `label`, numbered from `next`; 2.2 lines also carry the physical and entity tags.
-void writeCells(std::FILE* f, const std::vector<int32_t>& cells, int nv, const std::vector<int32_t>& labels,
+// gmsh element types: 2 triangle, 3 quad, 4 tet, 6 prism.
+void writeCells(std::FILE* f, const std::vector<int32_t>& cells, int nv, int type, const std::vector<int32_t>& labels,
                 int32_t label, int64_t& next, bool v22)
 {
-  const int type = nv == 3 ? 2 : 4;
   for (size_t c = 0; c < labels.size(); ++c)
   {
     if (labels[c] != label)
@@ -91,11 +104,35 @@ Status writeGmsh(const std::string& path, const SolverMesh& mesh, bool v22)
   if (!s.ok())
     return s;
   std::FILE* f = out.stream();
-  const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
-  const std::vector<int32_t> regions = distinctLabels(mesh.tetRegion);
-  const std::vector<int64_t> patchCount = labelCounts(mesh.trianglePatch, patches);
-  const std::vector<int64_t> regionCount = labelCounts(mesh.tetRegion, regions);
-  const int64_t np = mesh.numberOfPoints(), ne = mesh.numberOfTriangles() + mesh.numberOfTets();
+  std::vector<int32_t> allPatches = mesh.trianglePatch, allRegions = mesh.tetRegion;
+  allPatches.insert(allPatches.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
+  allRegions.insert(allRegions.end(), mesh.prismRegion.begin(), mesh.prismRegion.end());
+  const std::vector<int32_t> patches = distinctLabels(allPatches);
+  const std::vector<int32_t> regions = distinctLabels(allRegions);
+  // One block per (entity, element type) that has elements (gmsh 4.1).
+  struct Block
+  {
+    int dim, tag, type, nv;
+    const std::vector<int32_t>* cells;
+    const std::vector<int32_t>* labels;
+    int64_t count;
+  };
+  std::vector<Block> blocks;
+  const auto add = [&](int dim, const std::vector<int32_t>& tags, int type, int nv, const std::vector<int32_t>& cells,
+                       const std::vector<int32_t>& labels)
+  {
+    const std::vector<int64_t> counts = labelCounts(labels, tags);
+    for (size_t k = 0; k < tags.size(); ++k)
+      if (counts[k] > 0)
+        blocks.push_back({ dim, tags[k], type, nv, &cells, &labels, counts[k] });
+  };
+  add(2, patches, 2, 3, mesh.triangles, mesh.trianglePatch);
+  add(2, patches, 3, 4, mesh.quads, mesh.quadPatch);
+  add(3, regions, 4, 4, mesh.tets, mesh.tetRegion);
+  add(3, regions, 6, 6, mesh.prisms, mesh.prismRegion);
+  const int64_t np = mesh.numberOfPoints(),
+                ne = mesh.numberOfTriangles() + mesh.numberOfTets() + static_cast<int64_t>(mesh.quads.size() / 4) +
+    static_cast<int64_t>(mesh.prisms.size() / 6);
   writeHeader(f, v22 ? "2.2" : "4.1");
   writePhysicalNames(f, patches, regions, mesh);
   if (!v22)
@@ -120,19 +157,13 @@ Status writeGmsh(const std::string& path, const SolverMesh& mesh, bool v22)
   if (v22)
     std::fprintf(f, "%" PRId64 "\n", ne);
   else
-    std::fprintf(f, "%zu %" PRId64 " 1 %" PRId64 "\n", patches.size() + regions.size(), ne, ne);
+    std::fprintf(f, "%zu %" PRId64 " 1 %" PRId64 "\n", blocks.size(), ne, ne);
   int64_t next = 1;
-  for (size_t k = 0; k < patches.size(); ++k)
+  for (const Block& b : blocks)
   {
     if (!v22)
-      std::fprintf(f, "2 %d 2 %" PRId64 "\n", patches[k], patchCount[k]);
-    writeCells(f, mesh.triangles, 3, mesh.trianglePatch, patches[k], next, v22);
-  }
-  for (size_t k = 0; k < regions.size(); ++k)
-  {
-    if (!v22)
-      std::fprintf(f, "3 %d 4 %" PRId64 "\n", regions[k], regionCount[k]);
-    writeCells(f, mesh.tets, 4, mesh.tetRegion, regions[k], next, v22);
+      std::fprintf(f, "%d %d %d %" PRId64 "\n", b.dim, b.tag, b.type, b.count);
+    writeCells(f, *b.cells, b.nv, b.type, *b.labels, b.tag, next, v22);
   }
   std::fprintf(f, "$EndElements\n");
   return out.commit();

@@ -36,8 +36,19 @@ void normalizeLabels(SolverMesh& mesh)
 {
   mesh.tetRegion.resize(mesh.tets.size() / 4, 0);
   mesh.trianglePatch.resize(mesh.triangles.size() / 3, 0);
-  renumber(mesh.trianglePatch, mesh.patchNames, "patch");
-  renumber(mesh.tetRegion, mesh.regionNames, "region");
+  mesh.prismRegion.resize(mesh.prisms.size() / 6, 0);
+  mesh.quadPatch.resize(mesh.quads.size() / 4, 0);
+  // Triangles and quads share the patch labels, tets and prisms the region labels.
+  const auto together = [](std::vector<int32_t>& a, std::vector<int32_t>& b, NameTable& names, const char* prefix)
+  {
+    const size_t na = a.size();
+    a.insert(a.end(), b.begin(), b.end());
+    renumber(a, names, prefix);
+    std::copy(a.begin() + static_cast<std::ptrdiff_t>(na), a.end(), b.begin());
+    a.resize(na);
+  };
+  together(mesh.trianglePatch, mesh.quadPatch, mesh.patchNames, "patch");
+  together(mesh.tetRegion, mesh.prismRegion, mesh.regionNames, "region");
 }
 
 std::vector<int64_t> labelCounts(const std::vector<int32_t>& labels, const std::vector<int32_t>& distinct)

@@ -21,8 +21,15 @@ struct SolverMesh
   std::vector<int32_t> tetRegion;     // one per tet
   std::vector<int32_t> triangles;     // boundary triangles, 3 each
   std::vector<int32_t> trianglePatch; // one per boundary triangle
-  NameTable patchNames;               // patch label -> name
-  NameTable regionNames;              // region label -> name
+  // Boundary-layer prisms (Layers/BoundaryLayers.h): 6 per prism, base a,b,c whose normal points to the top
+  // a',b',c' (gmsh's order), with a region label each; boundary quads (prism sides on a symmetry plane),
+  // 4 per quad, with a patch label each. Only the gmsh writers take them (writeSolverMesh refuses else).
+  std::vector<int32_t> prisms;
+  std::vector<int32_t> prismRegion;
+  std::vector<int32_t> quads;
+  std::vector<int32_t> quadPatch;
+  NameTable patchNames;  // patch label -> name
+  NameTable regionNames; // region label -> name
   // Point fields by name, one value per point (a solver's target size, ...): kept by the formats that
   // hold them (Exodus II nodal variables), ignored by the others.
   std::map<std::string, std::vector<double>> pointData;

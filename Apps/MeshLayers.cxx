@@ -1,0 +1,253 @@
+// volgrid mesh --layers: options, the layered mesh, its VTK and solver outputs and the report.
+#include "MeshLayers.h"
+
+#include "CliSupport.h"
+#include "XmlDataFiles.h"
+
+#include "LayeredMesher.h"
+#include "Predicates.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridWriter.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+
+namespace volgrid
+{
+namespace cli
+{
+const char* const kLayerUsage =
+  "Boundary layers (prisms on the wall patches, conformal with the tets):\n"
+  "  --layers N           number of prism layers (0: none)\n"
+  "  --first-height H     height of the layer on the wall\n"
+  "  --y-plus Y --reynolds RE --reference-length L\n"
+  "                       instead of --first-height: the height of y+ = Y on a flat plate of length L at\n"
+  "                       Reynolds number RE (Cf = 0.026 / RE^(1/7))\n"
+  "  --growth R           ratio between consecutive layer heights (>= 1, default 1.2)\n"
+  "  --layer-patches A,B  layered patches by name or id (default: every patch whose OpenFOAM type is wall)\n"
+  "  --split-prisms       each prism as 3 tets (needed for the solver formats other than gmsh .msh)\n";
+
+int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
+{
+  const std::string a = argv[i];
+  if (a == "--split-prisms")
+  {
+    options.splitPrisms = true;
+    return 1;
+  }
+  if (a != "--layers" && a != "--first-height" && a != "--growth" && a != "--layer-patches" && a != "--y-plus" &&
+      a != "--reynolds" && a != "--reference-length")
+    return 0;
+  if (i + 1 >= argc)
+  {
+    std::fprintf(stderr, "volgrid mesh: %s needs a value\n", a.c_str());
+    return -1;
+  }
+  const char* v = argv[++i];
+  if (a == "--layer-patches")
+  {
+    std::stringstream list(v);
+    for (std::string name; std::getline(list, name, ',');)
+      if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos && name.size() < 10)
+        options.patchIds.push_back(std::atoi(name.c_str())); // a patch id (Medit ref, gmsh tag)
+      else if (!name.empty())
+        options.patchNames.push_back(name);
+    return 1;
+  }
+  if (a == "--layers")
+  {
+    long long n = 0;
+    if (!parseLong("mesh", a.c_str(), v, n))
+      return -1;
+    if (n < 0 || n > 1000)
+    {
+      std::fprintf(stderr, "volgrid mesh: --layers is out of range (0..1000): %s\n", v);
+      return -1;
+    }
+    options.layers = static_cast<int>(n);
+    return 1;
+  }
+  double x = 0;
+  if (!parseDouble("mesh", a.c_str(), v, x))
+    return -1;
+  (a == "--growth"               ? options.growth
+     : a == "--y-plus"           ? options.yPlus
+     : a == "--reynolds"         ? options.reynolds
+     : a == "--reference-length" ? options.referenceLength
+                                 : options.firstHeight) = x;
+  return 1;
+}
+
+namespace
+{
+// VTK's wedge has its first triangle's normal pointing away from the second: reverse both triangles.
+vtkNew<vtkUnstructuredGrid> toVtk(const LayeredMeshResult& r)
+{
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(r.points.size() / 3));
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+    points->SetPoint(p, r.points.data() + 3 * p);
+  grid->SetPoints(points);
+  const vtkIdType wedges = static_cast<vtkIdType>(r.wedges.size() / 6),
+                  tets = static_cast<vtkIdType>(r.tets.size() / 4);
+  grid->Allocate(wedges + tets);
+  vtkNew<vtkIntArray> layer, region;
+  vtkNew<vtkUnsignedCharArray> reason;
+  layer->SetName("LayerIndex");
+  reason->SetName("ThinnedReason");
+  region->SetName("Region");
+  for (vtkIdType w = 0; w < wedges; ++w)
+  {
+    const int32_t* v = r.wedges.data() + 6 * w;
+    const vtkIdType ids[6] = { v[0], v[2], v[1], v[3], v[5], v[4] };
+    grid->InsertNextCell(VTK_WEDGE, 6, ids);
+    layer->InsertNextValue(r.wedgeLayer[w]);
+    reason->InsertNextValue(r.wedgeReason[w]);
+    region->InsertNextValue(0);
+  }
+  for (vtkIdType t = 0; t < tets; ++t)
+  {
+    const vtkIdType ids[4] = { r.tets[4 * t], r.tets[4 * t + 1], r.tets[4 * t + 2], r.tets[4 * t + 3] };
+    grid->InsertNextCell(VTK_TETRA, 4, ids);
+    layer->InsertNextValue(r.tetLayer[t]);
+    reason->InsertNextValue(r.tetReason[t]);
+    region->InsertNextValue(r.tetRegion[t]);
+  }
+  grid->GetCellData()->AddArray(layer);
+  grid->GetCellData()->AddArray(reason);
+  grid->GetCellData()->AddArray(region);
+  return grid;
+}
+
+// Cells with a non-positive volume, counted exactly (orient3d; every decomposition of a prism).
+int64_t invertedCells(const LayeredMeshResult& r)
+{
+  const auto at = [&](int32_t id) { return r.points.data() + 3 * size_t(id); };
+  int64_t bad = 0;
+  for (size_t t = 0; t < r.tets.size(); t += 4)
+    bad += predicates::orient3d(at(r.tets[t]), at(r.tets[t + 1]), at(r.tets[t + 2]), at(r.tets[t + 3])) > 0 ? 0 : 1;
+  for (size_t w = 0; w < r.wedges.size(); w += 6)
+    bad += prismIsValid(at(r.wedges[w]), at(r.wedges[w + 1]), at(r.wedges[w + 2]), at(r.wedges[w + 3]),
+                        at(r.wedges[w + 4]), at(r.wedges[w + 5]))
+      ? 0
+      : 1;
+  return bad;
+}
+
+bool writeVtk(const std::string& out, vtkUnstructuredGrid* grid)
+{
+  if (out.size() > 4 && out.compare(out.size() - 4, 4, ".vtk") == 0)
+  {
+    vtkNew<vtkUnstructuredGridWriter> writer;
+    writer->SetFileName(out.c_str());
+    writer->SetInputData(grid);
+    writer->SetFileTypeToBinary();
+    if (writer->Write() == 1)
+      return true;
+    std::fprintf(stderr, "volgrid mesh: cannot write '%s'\n", out.c_str());
+    return false;
+  }
+  std::string error;
+  if (writeXmlDataSet(out, grid, error))
+    return true;
+  std::fprintf(stderr, "volgrid mesh: %s\n", error.c_str());
+  return false;
+}
+} // namespace
+
+int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, const std::string& out,
+                   MeshFormat format, bool vtkOutput, const ExportRequest& request, const MesherOptions& options,
+                   const LayerOptions& layers, bool json)
+{
+  const bool gmsh = format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22;
+  if (!vtkOutput && !gmsh && !layers.splitPrisms)
+  {
+    std::fprintf(stderr,
+                 "volgrid mesh: prism layers are written to .vtu/.vtk/.msh only for now; add "
+                 "--split-prisms to write them as tets in another solver format\n");
+    return 2;
+  }
+  if (!request.patches.empty())
+  {
+    std::fprintf(stderr, "volgrid mesh: --patch is not supported together with --layers yet\n");
+    return 2;
+  }
+  const Status valid = validateLayerOptions(layers);
+  if (!valid.ok())
+  {
+    std::fprintf(stderr, "volgrid mesh: %s\n", valid.message.c_str());
+    return 2;
+  }
+  LayeredMeshResult r;
+  const Stopwatch watch;
+  const Status status = meshSurfaceWithLayers(surface, options, layers, r);
+  const double seconds = watch.seconds();
+  if (!status.ok())
+  {
+    std::fprintf(stderr, "volgrid mesh: %s: %s\n", surfaceName.c_str(), status.message.c_str());
+    return 1;
+  }
+  for (const std::string& warning : r.warnings)
+    std::fprintf(stderr, "volgrid mesh: warning: %s\n", warning.c_str());
+  const int64_t inverted = invertedCells(r);
+  if (inverted > 0)
+  {
+    std::fprintf(stderr, "volgrid mesh: %lld inverted cells: a bug, nothing written\n", (long long)inverted);
+    return 1;
+  }
+  if (vtkOutput && !writeVtk(out, toVtk(r)))
+    return 1;
+  if (!vtkOutput)
+  {
+    SolverMesh mesh;
+    mesh.points = r.points;
+    mesh.tets = r.tets;
+    mesh.tetRegion = r.tetRegion;
+    mesh.triangles = r.boundaryTriangles;
+    mesh.trianglePatch = r.boundaryPatch;
+    mesh.patchNames = r.patchNames;
+    mesh.prisms = r.wedges;
+    mesh.prismRegion.assign(r.wedges.size() / 6, 0);
+    if (!layers.splitPrisms)
+    {
+      mesh.quads = r.sideQuads;
+      mesh.quadPatch = r.sidePatch;
+    }
+    if (!writeSolverOutput("mesh", out, format, mesh, request, json))
+      return 1;
+  }
+  const LayerStatistics& l = r.layerStats;
+  const long long wedges = (long long)(r.wedges.size() / 6), tets = (long long)(r.tets.size() / 4);
+  if (json)
+    std::printf(
+      "{\"input\": %s, \"points\": %lld, \"wedges\": %lld, \"tets\": %lld, \"layers\": %d, \"first_height\": %.6g, "
+      "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"thinned_columns\": %lld, "
+      "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, "
+      "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
+      "\"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
+      jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, tets, layers.layers,
+      layers.resolved().firstHeight, (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(),
+      (long long)l.thinnedColumns, (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3],
+      l.minScale, (long long)inverted, (long long)r.interfaceOnTets, l.seconds, seconds);
+  else
+    std::printf("%s: %d layers on %lld faces (coverage %.2f%%, %lld thinned columns) -> %lld wedges, %lld tets on "
+                "%lld points, %lld inverted, in %.3f s\n",
+                surfaceName.c_str(), layers.layers, (long long)l.layeredTriangles, 100.0 * l.coverage(),
+                (long long)l.thinnedColumns, wedges, tets, (long long)(r.points.size() / 3), (long long)inverted,
+                seconds);
+  return 0;
+}
+
+} // namespace cli
+} // namespace volgrid

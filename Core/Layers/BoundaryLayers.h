@@ -1,0 +1,115 @@
+// Boundary layers: prisms grown from wall patches along smoothed vertex normals, for viscous CFD.
+//
+// Every layered vertex carries the same number of layers; layer k of a column is first * ratio^k thick,
+// scaled by the column's factor (1 = full height). A column is thinned (its factor halved, and the
+// neighbours limited to a smooth variation) when one of its prisms would invert (exact orient3d on every
+// tet decomposition, prismIsValid) or when the last layer's surface would cross itself, the walls or
+// another patch (the exact self-intersection check of SurfaceChecks). Nothing inverted is ever emitted.
+// The last layer's surface plus the untouched patches is `tetBoundary`: the closed boundary of the tet
+// region, handed to the conforming mesher (Mesher/LayeredMesher.h), which keeps it exactly.
+//
+// Where a wall meets a flat non-layered patch (a symmetry plane normal to a coordinate axis), its points
+// march in that plane and the plane's triangles are moved with them to the last layer (kept only when
+// none flips: exact orient2d; else the column is thinned). Limits of this first version: any other
+// non-layered patch a wall touches gets a Status naming it and the point; one marching direction per
+// vertex (no fans at sharp convex edges); every column has all the layers (thinning scales heights).
+#pragma once
+
+#include "Progress.h"
+#include "Status.h"
+#include "SurfaceMesh.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace volgrid
+{
+
+struct LayerOptions
+{
+  int layers = 0;                      // number of prism layers; 0 = no layers
+  double firstHeight = 0;              // height of the layer on the wall
+  double growth = 1.2;                 // ratio between consecutive layer heights (>= 1)
+  std::vector<int32_t> patchIds;       // layered patches by id; with patchNames empty too: every wall patch
+  std::vector<std::string> patchNames; // layered patches by name
+  // Instead of firstHeight: the height of a target y+ at a Reynolds number on a reference length
+  // (firstHeightForYPlus).
+  double yPlus = 0, reynolds = 0, referenceLength = 0;
+  int normalSmoothing = 5;  // Laplacian passes over the vertex normals
+  bool splitPrisms = false; // output each prism as 3 tets (min-vertex-index rule)
+  bool enabled() const { return layers > 0; }
+  double totalThickness() const; // first * (1 + r + ... + r^(layers-1))
+  LayerOptions resolved() const; // firstHeight computed from yPlus when that is given
+};
+
+// Why a column is thinner than asked.
+enum class ThinnedReason : uint8_t
+{
+  None = 0,
+  Inversion = 1, // a prism of the column would have a non-positive tet decomposition
+  Collision = 2, // the last layer's surface would cross itself, the walls or another patch
+  Neighbour = 3  // limited so that its height varies smoothly from a thinned neighbour
+};
+const char* thinnedReasonName(ThinnedReason reason);
+
+struct LayerStatistics
+{
+  int64_t layeredTriangles = 0;
+  int64_t fullTriangles = 0; // layered triangles whose three columns have their full height
+  int64_t layeredPoints = 0;
+  int64_t thinnedColumns = 0;
+  int64_t thinnedBy[4] = { 0, 0, 0, 0 }; // columns per ThinnedReason
+  int64_t prisms = 0;
+  int iterations = 0;  // thinning rounds
+  double minScale = 1; // smallest column factor
+  double seconds = 0;
+  double coverage() const { return layeredTriangles ? double(fullTriangles) / double(layeredTriangles) : 0.0; }
+};
+
+struct LayerResult
+{
+  // The input surface's points (after exact merging: point i of the merged surface) first, then per
+  // layered point its `layers` offset points (layer 0 nearest the wall).
+  std::vector<double> points;
+  int32_t numSurfacePoints = 0;
+  std::vector<int32_t> prisms;           // 6 per prism: base a,b,c then top a',b',c' (a' above a)
+  std::vector<int32_t> prismLayer;       // 0 at the wall
+  std::vector<int32_t> prismTriangle;    // merged input triangle the prism stands on
+  std::vector<uint8_t> prismReason;      // ThinnedReason of the column (the worst of its three points)
+  std::vector<double> pointScale;        // per surface point: column factor (1 = full; 0 = not layered)
+  std::vector<uint8_t> pointReason;      // per surface point: ThinnedReason
+  std::vector<int32_t> wallTriangles;    // layered triangles, 3 each, as in the input (orientation kept)
+  std::vector<int32_t> wallPatch;        // their patch ids
+  std::vector<int32_t> sideQuads;        // 4 per prism side face on a symmetry plane (boundary faces)
+  std::vector<int32_t> sidePatch;        // their patch ids
+  SurfaceMesh tetBoundary;               // last layer's surface (patch interfacePatch) + the other triangles
+  std::vector<int32_t> tetBoundaryPoint; // tetBoundary point -> index into points
+  int32_t interfacePatch = -1;
+  LayerStatistics stats;
+};
+
+// First-layer height for a target y+ on a flat plate (turbulent skin friction of White / Schlichting):
+// Cf = 0.026 / Re^(1/7), u_tau / U = sqrt(Cf / 2), so y = yPlus * length / (Re * sqrt(Cf / 2)), with
+// Re = U * length / nu. A first estimate, as in the usual y+ calculators; 0 for non-positive input.
+double firstHeightForYPlus(double yPlus, double reynolds, double length);
+
+// Checks the numbers (not the surface): layers >= 1, first height > 0 and finite (or y+, Reynolds number and
+// reference length, not both), growth >= 1.
+Status validateLayerOptions(const LayerOptions& options);
+
+// Grows the layers on `surface` (closed shells, as the mesher takes them; region rule even-odd decides on
+// which side of each shell the domain is). On failure the result is empty and the Status says why.
+Status growLayers(const SurfaceMesh& surface, const LayerOptions& options, LayerResult& result,
+                  Progress* progress = nullptr);
+
+// True when every tet of every decomposition of the prism (base a,b,c; top d,e,f above them) has
+// positive orientation, with the base (a,b,c) counter-clockwise seen from the top (exact).
+bool prismIsValid(const double* a, const double* b, const double* c, const double* d, const double* e, const double* f);
+
+// The three tets of prism v[6] (base v0..v2, top v3..v5) by the minimum-vertex-index rule: each quad face
+// is cut through its smallest id, so two prisms sharing a quad cut it alike. Tets are positively oriented
+// when the prism is valid (points: xyz per id).
+void splitPrism(const int32_t v[6], const double* points, int32_t tets[12]);
+
+} // namespace volgrid

@@ -1,0 +1,228 @@
+// Boundary layers (Core/Layers/BoundaryLayers.h): exact prism checks, option errors, marching, thinning.
+#include "BoundaryLayers.h"
+
+#include "LayerTestShapes.h"
+#include "MesherTestShapes.h"
+#include "Predicates.h"
+#include "SurfaceChecks.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+using namespace volgrid;
+
+namespace
+{
+const double* at(const LayerResult& r, int32_t id)
+{
+  return r.points.data() + 3 * size_t(id);
+}
+
+bool prismOk(const LayerResult& r, size_t p)
+{
+  const int32_t* v = r.prisms.data() + 6 * p;
+  return prismIsValid(at(r, v[0]), at(r, v[1]), at(r, v[2]), at(r, v[3]), at(r, v[4]), at(r, v[5]));
+}
+
+double distance(const double* a, const double* b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+LayerOptions options(int layers, double first, double growth)
+{
+  LayerOptions o;
+  o.layers = layers;
+  o.firstHeight = first;
+  o.growth = growth;
+  return o;
+}
+} // namespace
+
+TEST(BoundaryLayers, PrismValidityIsExact)
+{
+  const double p[6][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1e-9 }, { 1, 0, 1e-9 }, { 0, 1, 1e-9 } };
+  EXPECT_TRUE(prismIsValid(p[0], p[1], p[2], p[3], p[4], p[5]));
+  // Top below the base: inverted.
+  EXPECT_FALSE(prismIsValid(p[3], p[4], p[5], p[0], p[1], p[2]));
+  // Flat: a zero-volume decomposition is not accepted.
+  EXPECT_FALSE(prismIsValid(p[0], p[1], p[2], p[0], p[1], p[2]));
+  // Twisted top (Schoenhardt-like): some decomposition has a negative tet although the base tets are positive.
+  const double twisted[3][3] = { { 0.9, 0.1, 0.05 }, { 0.1, 0.9, 0.05 }, { -0.2, -0.2, 0.05 } };
+  EXPECT_FALSE(prismIsValid(p[0], p[1], p[2], twisted[0], twisted[1], twisted[2]));
+}
+
+TEST(BoundaryLayers, SplitAgreesAcrossSharedQuads)
+{
+  // Two prisms sharing the quad (1,2,4,5) -> ids (1,2,5,6) in both; split each, the shared quad must be
+  // cut by the same diagonal, and every tet must be positive.
+  const double pts[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1 };
+  const int32_t a[6] = { 0, 1, 2, 4, 5, 6 }, b[6] = { 1, 3, 2, 5, 7, 6 };
+  int32_t ta[12], tb[12];
+  splitPrism(a, pts, ta);
+  splitPrism(b, pts, tb);
+  double volume = 0;
+  std::set<std::pair<int, int>> diagonals[2];
+  for (int which = 0; which < 2; ++which)
+    for (int t = 0; t < 3; ++t)
+    {
+      const int32_t* v = (which ? tb : ta) + 4 * t;
+      ASSERT_GT(predicates::orient3d(pts + 3 * v[0], pts + 3 * v[1], pts + 3 * v[2], pts + 3 * v[3]), 0);
+      const double* q[4] = { pts + 3 * v[0], pts + 3 * v[1], pts + 3 * v[2], pts + 3 * v[3] };
+      double u[3], w[3], z[3];
+      for (int i = 0; i < 3; ++i)
+        u[i] = q[1][i] - q[0][i], w[i] = q[2][i] - q[0][i], z[i] = q[3][i] - q[0][i];
+      volume +=
+        (u[0] * (w[1] * z[2] - w[2] * z[1]) - u[1] * (w[0] * z[2] - w[2] * z[0]) + u[2] * (w[0] * z[1] - w[1] * z[0])) /
+        6;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+          const std::set<int> quad = { 1, 2, 5, 6 };
+          const std::pair<int, int> e(std::min(v[i], v[j]), std::max(v[i], v[j]));
+          if (quad.count(e.first) && quad.count(e.second) && (e == std::make_pair(1, 6) || e == std::make_pair(2, 5)))
+            diagonals[which].insert(e);
+        }
+    }
+  EXPECT_NEAR(volume, 1.0, 1e-12); // two half-cube prisms
+  EXPECT_EQ(diagonals[0].size(), 1u);
+  EXPECT_EQ(diagonals[0], diagonals[1]);
+}
+
+TEST(BoundaryLayers, BadParametersAreRefusedWithNothingPartial)
+{
+  const SurfaceMesh s = layertest::sphereInSphere(1);
+  LayerResult r;
+  Status st = growLayers(s, options(10, -1e-3, 1.2), r);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("first layer height"), std::string::npos) << st.message;
+  st = growLayers(s, options(10, 1e-3, 0.8), r);
+  EXPECT_NE(st.message.find("growth"), std::string::npos) << st.message;
+  st = growLayers(s, options(0, 1e-3, 1.2), r);
+  EXPECT_NE(st.message.find("number of layers"), std::string::npos) << st.message;
+  // 20 layers of 1 in a gap of 9 (bounding diagonal of the far field ~34.6): thinning everywhere.
+  st = growLayers(s, options(20, 1.0, 1.0), r);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("more than the domain allows"), std::string::npos) << st.message;
+  EXPECT_TRUE(r.prisms.empty());
+  LayerOptions unknown = options(3, 1e-3, 1.2);
+  unknown.patchNames = { "wing" };
+  st = growLayers(s, unknown, r);
+  EXPECT_NE(st.message.find("'wing' is not a patch"), std::string::npos) << st.message;
+}
+
+TEST(BoundaryLayers, SphereInSphereGetsEveryLayerAtItsHeight)
+{
+  const SurfaceMesh s = layertest::sphereInSphere(3);
+  LayerResult r;
+  const LayerOptions o = options(10, 1e-3, 1.2);
+  ASSERT_TRUE(growLayers(s, o, r).ok());
+  const int32_t bodyTriangles = 20 * 64;
+  EXPECT_EQ(r.stats.layeredTriangles, bodyTriangles); // the far field is not a wall
+  EXPECT_EQ(r.stats.fullTriangles, bodyTriangles);
+  EXPECT_EQ(r.stats.thinnedColumns, 0);
+  EXPECT_DOUBLE_EQ(r.stats.coverage(), 1.0);
+  ASSERT_EQ(r.prisms.size(), size_t(6 * 10 * bodyTriangles));
+  for (size_t p = 0; p < r.prismLayer.size(); ++p)
+  {
+    ASSERT_TRUE(prismOk(r, p)) << "prism " << p;
+    const int32_t* v = r.prisms.data() + 6 * p;
+    const double expected = 1e-3 * std::pow(1.2, r.prismLayer[p]);
+    for (int i = 0; i < 3; ++i)
+      ASSERT_NEAR(distance(at(r, v[i]), at(r, v[i + 3])) / expected, 1.0, 1e-9) << "prism " << p;
+  }
+  // The tet region's boundary: the last layer's outer surface plus the far field, closed and clean.
+  int64_t interface = 0;
+  for (const int32_t patch : r.tetBoundary.patchIds)
+    interface += patch == r.interfacePatch ? 1 : 0;
+  EXPECT_EQ(interface, bodyTriangles);
+  EXPECT_TRUE(surfaceStatus(checkSurface(r.tetBoundary)).ok());
+}
+
+TEST(BoundaryLayers, CloseBodiesAreThinnedNotCrossed)
+{
+  // Two unit spheres 0.06 apart, 0.1 of layers each: the columns facing each other must be thinned.
+  SurfaceMesh s;
+  const double c1[3] = { -1.03, 0, 0 }, c2[3] = { 1.03, 0, 0 }, o[3] = { 0, 0, 0 };
+  layertest::addIcosphere(s, c1, 1.0, 3, 1);
+  layertest::addIcosphere(s, c2, 1.0, 3, 1);
+  layertest::addIcosphere(s, o, 10.0, 1, 2);
+  s.patchNames = { { 1, "wall" }, { 2, "farfield" } };
+  LayerResult r;
+  ASSERT_TRUE(growLayers(s, options(5, 0.01, 1.5), r).ok());
+  EXPECT_GT(r.stats.thinnedColumns, 0);
+  EXPECT_GT(r.stats.thinnedBy[int(ThinnedReason::Collision)], 0);
+  EXPECT_GT(r.stats.coverage(), 0.6); // measured 0.78: thinning spreads smoothly (1.5x per neighbour)
+  EXPECT_LT(r.stats.coverage(), 1.0);
+  for (size_t p = 0; p < r.prismLayer.size(); ++p)
+    ASSERT_TRUE(prismOk(r, p)) << "prism " << p;
+  EXPECT_TRUE(surfaceStatus(checkSurface(r.tetBoundary)).ok());
+}
+
+TEST(BoundaryLayers, InternalFlowCornersStayValid)
+{
+  // A box as the only shell: the layers march inwards, the box's corners are concave for them.
+  SurfaceMesh s;
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
+  testshapes::addBox(s, lo, hi);
+  LayerResult r;
+  ASSERT_TRUE(growLayers(s, options(8, 0.01, 1.3), r).ok());
+  EXPECT_EQ(r.stats.layeredTriangles, 12);
+  for (size_t p = 0; p < r.prismLayer.size(); ++p)
+    ASSERT_TRUE(prismOk(r, p)) << "prism " << p;
+  EXPECT_TRUE(surfaceStatus(checkSurface(r.tetBoundary)).ok());
+}
+
+TEST(BoundaryLayers, LayersMarchInASymmetryPlane)
+{
+  // A box whose z = 0 face is a symmetry plane: the walls' points on it march in it (z stays 0 exactly), the
+  // plane's triangles move with them, and each wall edge on the plane gets a side quad per layer.
+  SurfaceMesh s;
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
+  testshapes::addBox(s, lo, hi);
+  s.patchIds.assign(12, 1);
+  s.patchIds[0] = s.patchIds[1] = 2; // the quad {0,2,3,1}: z = 0
+  s.patchNames = { { 1, "wall" }, { 2, "symmetry" } };
+  LayerResult r;
+  const Status st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 10);
+  EXPECT_EQ(r.sideQuads.size(), size_t(4 * 4 * 3));
+  for (size_t p = 0; p < r.prismLayer.size(); ++p)
+    ASSERT_TRUE(prismOk(r, p)) << "prism " << p;
+  for (const int32_t v : r.sideQuads)
+    EXPECT_EQ(r.points[3 * size_t(v) + 2], 0.0);
+  EXPECT_TRUE(surfaceStatus(checkSurface(r.tetBoundary)).ok());
+}
+
+TEST(BoundaryLayers, LayersAlongACurvedOrSecondPatchAreRefused)
+{
+  SurfaceMesh s;
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
+  testshapes::addBox(s, lo, hi);
+  s.patchIds.assign(12, 1);
+  s.patchIds[0] = s.patchIds[1] = s.patchIds[8] = s.patchIds[9] = 2; // z = 0 and x = 0: not flat
+  s.patchNames = { { 1, "wing" }, { 2, "inlet" }, { 3, "outlet" } };
+  LayerResult r;
+  Status st = growLayers(s, options(3, 0.01, 1.2), r);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("'inlet'"), std::string::npos) << st.message;
+  EXPECT_NE(st.message.find("symmetry plane"), std::string::npos) << st.message;
+  EXPECT_TRUE(r.prisms.empty());
+  s.patchIds[8] = s.patchIds[9] = 3; // two flat patches meeting at the wall: a point on both
+  st = growLayers(s, options(3, 0.01, 1.2), r);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("also on patch"), std::string::npos) << st.message;
+}
+
+TEST(BoundaryLayers, FirstHeightFromYPlus)
+{
+  // Re = 1e6, L = 1, y+ = 1: Cf = 0.026 / 1e6^(1/7) = 3.6126e-3, sqrt(Cf/2) = 4.2501e-2, y = 2.3529e-5.
+  EXPECT_NEAR(firstHeightForYPlus(1, 1e6, 1), 2.3529e-5, 1e-8);
+  // Linear in y+ and in the length; thinner for a higher Reynolds number.
+  EXPECT_NEAR(firstHeightForYPlus(30, 1e6, 2) / firstHeightForYPlus(1, 1e6, 1), 60.0, 1e-9);
+  EXPECT_LT(firstHeightForYPlus(1, 1e7, 1), firstHeightForYPlus(1, 1e6, 1));
+  EXPECT_EQ(firstHeightForYPlus(-1, 1e6, 1), 0.0);
+}
