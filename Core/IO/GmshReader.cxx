@@ -56,17 +56,12 @@ Status readPhysicalNames(Scanner& sc, SurfaceMesh& mesh)
 
 Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
-  mesh.clear();
-  SurfaceReadInfo localInfo;
-  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
-  info = SurfaceReadInfo();
-  info.format = "gmsh";
-  std::string text;
-  Status s = loadFile(path, text);
+  ReadStart start(mesh, infoOut, "gmsh");
+  Status s = start.load(path);
   if (!s.ok())
-  {
     return s;
-  }
+  SurfaceReadInfo& info = start.info;
+  const std::string& text = start.text;
   Scanner sc(text, path, false);
   const int64_t limit = countLimit(text);
   std::string_view tok;
