@@ -1,5 +1,6 @@
-// vtkVolGridSurfacePrep: a thin adapter from VTK surfaces to Core/Surface/SurfaceRepair.h, Core/Surface/SurfaceChecks.h
-// and Core/Surface/Enclosures.h.
+// vtkVolGridSurfacePrep: a thin adapter from VTK surfaces to Core/Surface/SurfacePreparation.h (merge the
+// parts, then Core diagnoses, repairs, encloses, orients and diagnoses again; here the report becomes
+// arrays, field data and the summary table).
 #include "vtkVolGridSurfacePrep.h"
 #include "VolGridConversion.h"
 
@@ -28,10 +29,8 @@
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Enclosures.h"
-#include "SurfaceChecks.h"
 #include "SurfaceMesh.h"
-#include "SurfaceRepair.h"
+#include "SurfacePreparation.h"
 
 #include <algorithm>
 #include <sstream>
@@ -42,101 +41,6 @@ vtkStandardNewMacro(vtkVolGridSurfacePrep);
 
 namespace
 {
-// Closed, consistent shells whose orientation disagrees with their nesting depth (even depth outward).
-int64_t misorientedShells(const volgrid::SurfaceCheckReport& r)
-{
-  int64_t n = 0;
-  for (const volgrid::SurfaceShell& s : r.shells)
-  {
-    if (s.closed && s.consistent && s.signedVolume != 0.0 && ((s.depth % 2 == 0) != (s.signedVolume > 0.0)))
-      ++n;
-  }
-  return n;
-}
-
-int64_t closedShells(const volgrid::SurfaceCheckReport& r)
-{
-  return std::count_if(r.shells.begin(), r.shells.end(), [](const volgrid::SurfaceShell& s) { return s.closed; });
-}
-
-std::string idList(const char* what, const std::vector<int32_t>& ids, bool pairs = false)
-{
-  if (ids.empty())
-    return std::string();
-  std::ostringstream os;
-  os << what;
-  for (size_t i = 0; i < ids.size(); ++i)
-  {
-    if (pairs)
-      os << (i % 2 == 0 ? " (" : " ") << ids[i] << (i % 2 == 1 ? ")" : "");
-    else
-      os << " " << ids[i];
-  }
-  return os.str();
-}
-
-// One row of the summary: a defect class (input and output counts) or a repair action (output only).
-struct Row
-{
-  const char* category;
-  const char* item;
-  const char* key; // field-data name (the input's count is "Input" + key)
-  int64_t input;   // -1: not measured
-  int64_t output;
-  std::string firstIds;
-};
-
-std::vector<Row> summaryRows(const volgrid::SurfaceCheckReport* in, const volgrid::SurfaceCheckReport& out,
-                             const volgrid::SurfaceRepairReport& rep, int64_t parts)
-{
-  auto before = [&](int64_t v) { return in ? v : -1; };
-  std::vector<Row> rows = {
-    { "defect", "Open edges", "BoundaryEdges", before(in ? in->boundaryEdges : 0), out.boundaryEdges,
-      idList("triangles", out.firstBoundaryEdgeTriangles) },
-    { "defect", "Boundary loops", "BoundaryLoops", before(in ? in->boundaryLoops : 0), out.boundaryLoops, "" },
-    { "defect", "Non-manifold edges", "NonManifoldEdges", before(in ? in->nonManifoldEdges : 0), out.nonManifoldEdges,
-      idList("triangles", out.firstNonManifoldEdgeTriangles) },
-    { "defect", "Non-manifold vertices", "NonManifoldVertices", before(in ? in->nonManifoldVertices : 0),
-      out.nonManifoldVertices, idList("points", out.firstNonManifoldVertices) },
-    { "defect", "Inconsistent edges", "InconsistentEdges", before(in ? in->inconsistentEdges : 0),
-      out.inconsistentEdges, idList("triangles", out.firstInconsistentTriangles) },
-    { "defect", "Degenerate triangles", "DegenerateTriangles", before(in ? in->degenerateTriangles : 0),
-      out.degenerateTriangles, idList("triangles", out.firstDegenerateTriangles) },
-    { "defect", "Duplicate triangles", "DuplicateTriangles", before(in ? in->duplicateTriangles : 0),
-      out.duplicateTriangles, idList("triangles", out.firstDuplicateTriangles) },
-    { "defect", "Self-intersecting pairs", "SelfIntersectingPairs", -1,
-      out.intersectionsChecked ? out.selfIntersectingPairs : -1,
-      idList("triangle pairs", out.firstSelfIntersectingPairs, true) },
-    { "defect", "Intersecting shell pairs", "ShellIntersectingPairs", -1,
-      out.intersectionsChecked ? out.shellIntersectingPairs : -1,
-      idList("triangle pairs", out.firstShellIntersectingPairs, true) },
-    { "defect", "Invalid triangles", "InvalidTriangles", before(in ? in->invalidTriangles : 0), out.invalidTriangles,
-      idList("triangles", out.firstInvalidTriangles) },
-    { "defect", "Non-finite points", "NonFinitePoints", before(in ? in->nonFinitePoints : 0), out.nonFinitePoints, "" },
-    { "defect", "Misoriented shells", "MisorientedShells", -1, misorientedShells(out), "" },
-    { "shells", "Shells", "Shells", before(in ? static_cast<int64_t>(in->shells.size()) : 0),
-      static_cast<int64_t>(out.shells.size()), "" },
-    { "shells", "Closed shells", "ClosedShells", before(in ? closedShells(*in) : 0), closedShells(out), "" },
-    { "shells", "Inward shells", "InwardShells", before(in ? in->inwardShells() : 0), out.inwardShells(), "" },
-    { "size", "Points", "Points", before(in ? in->points : 0), out.points, "" },
-    { "size", "Triangles", "Triangles", before(in ? in->triangles : 0), out.triangles, "" },
-    { "size", "Parts", "Parts", -1, parts, "" },
-    { "repair", "Welded points", "WeldedPoints", -1, rep.weldedPoints, "" },
-    { "repair", "Degenerate triangles removed", "RemovedDegenerate", -1, rep.removedDegenerate, "" },
-    { "repair", "Duplicate triangles removed", "RemovedDuplicates", -1, rep.removedDuplicates, "" },
-    { "repair", "Stitched points", "StitchedPoints", -1, rep.stitchedPoints, "" },
-    { "repair", "Unreferenced points removed", "UnreferencedPointsRemoved", -1, rep.unreferencedPointsRemoved, "" },
-    { "repair", "Holes filled", "LoopsFilled", -1, rep.loopsFilled, "" },
-    { "repair", "Holes left open", "LoopsLeftOpen", -1, rep.loopsLeftOpen, "" },
-    { "repair", "Triangles added", "TrianglesAdded", -1, rep.trianglesAdded, "" },
-    { "repair", "Points added", "PointsAdded", -1, rep.pointsAdded, "" },
-    { "repair", "Triangles flipped", "TrianglesFlipped", -1, rep.trianglesFlipped, "" },
-    { "repair", "Shells flipped", "ShellsFlipped", -1, rep.shellsFlipped, "" },
-    { "repair", "Non-orientable shells", "NonOrientableShells", -1, rep.nonOrientableShells, "" },
-  };
-  return rows;
-}
-
 void addCount(vtkFieldData* fd, const std::string& name, int64_t value)
 {
   auto a = vtkSmartPointer<vtkIdTypeArray>::New();
@@ -320,98 +224,45 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
   }
   this->UpdateProgress(0.05);
 
-  // ----- diagnosis of the input (topology: exactly coincident points joined) -----
-  const bool haveInput = mesh.numberOfTriangles() > 0;
-  volgrid::SurfaceCheckReport inputReport;
-  volgrid::SurfaceRepairReport repair;
-  if (haveInput)
+  // ----- diagnosis, repair, enclosure, orientation, diagnosis (Core/Surface/SurfacePreparation.h) -----
+  VolGridFilterProgress progress(this);
+  volgrid::SurfacePreparationOptions options;
+  options.mergeTolerance = this->ExactMergeOnly ? 0.0 : this->MergeTolerance;
+  options.removeDegenerate = this->RemoveDegenerate;
+  options.removeDuplicates = this->RemoveDuplicates;
+  options.maxHoleEdges = this->FillHoles ? this->MaxHoleEdges : 0;
+  options.orientShells = this->OrientShells;
+  options.checkIntersections = this->CheckIntersections;
+  options.enclosure = this->Enclosure != ENCLOSURE_NONE;
+  options.aroundInput = !this->ExplicitEnclosure;
+  options.shape = shapeOf(this->Enclosure);
+  options.explicitEnclosure.shape = options.shape;
+  std::copy(this->EnclosureCenter, this->EnclosureCenter + 3, options.explicitEnclosure.center);
+  std::copy(this->EnclosureDimensions, this->EnclosureDimensions + 3, options.explicitEnclosure.dimensions);
+  options.explicitEnclosure.axis = this->EnclosureAxis;
+  options.enclosureScale = this->EnclosureScale;
+  options.axis = this->EnclosureAxis;
+  options.enclosureEdgeLength = this->EnclosureEdgeLength;
+  options.progress = &progress;
+  volgrid::SurfacePreparationReport prepared;
+  const volgrid::Status status = volgrid::prepareSurface(mesh, nextPatch, options, prepared);
+  if (status.kind == volgrid::ErrorKind::Cancelled)
   {
-    this->SetProgressText("Checking the input");
-    volgrid::mergeCoincidentPoints(mesh);
-    volgrid::SurfaceCheckOptions quick;
-    quick.selfIntersections = false;
-    quick.nesting = false;
-    inputReport = volgrid::checkSurface(mesh, quick);
-    this->UpdateProgress(0.1);
-
-    // ----- repair -----
-    VolGridFilterProgress repairProgress(this, 0.1, 0.5);
-    volgrid::SurfaceRepairOptions options;
-    const double tolerance = this->ExactMergeOnly ? 0.0 : this->MergeTolerance;
-    options.weldTolerance = tolerance;
-    options.stitchTolerance = tolerance;
-    options.stitch = true;
-    options.removeDegenerate = this->RemoveDegenerate;
-    options.removeDuplicates = this->RemoveDuplicates;
-    options.maxHoleEdges = this->FillHoles ? this->MaxHoleEdges : 0;
-    options.orientConsistently = this->OrientShells;
-    options.orientForDomain = false; // after the enclosure is added
-    options.progress = &repairProgress;
-    const volgrid::Status status = volgrid::repairSurface(mesh, options, &repair);
-    if (status.kind == volgrid::ErrorKind::Cancelled || this->GetAbortExecute())
-    {
-      output->Initialize();
-      return 1;
-    }
-    if (!status.ok())
-    {
-      vtkWarningMacro(<< "Repair: " << status.message);
-    }
-  }
-  this->UpdateProgress(0.5);
-
-  // ----- enclosure -----
-  if (this->Enclosure != ENCLOSURE_NONE)
-  {
-    this->SetProgressText("Building the enclosure");
-    volgrid::EnclosureOptions options;
-    if (this->ExplicitEnclosure || !haveInput)
-    {
-      options.shape = shapeOf(this->Enclosure);
-      std::copy(this->EnclosureCenter, this->EnclosureCenter + 3, options.center);
-      std::copy(this->EnclosureDimensions, this->EnclosureDimensions + 3, options.dimensions);
-      options.axis = this->EnclosureAxis;
-    }
-    else
-    {
-      options = volgrid::enclosureAround(volgrid::boundingBox(mesh, true), shapeOf(this->Enclosure),
-                                         this->EnclosureScale, this->EnclosureAxis);
-    }
-    options.targetEdgeLength = this->EnclosureEdgeLength;
-    options.patchId = nextPatch;
-    volgrid::SurfaceMesh enclosure;
-    const volgrid::Status status = volgrid::makeEnclosure(options, enclosure);
-    if (!status.ok())
-    {
-      vtkErrorMacro(<< "Enclosure: " << status.message);
-      return 0;
-    }
-    mesh.append(enclosure);
-    this->EnclosurePatchId = nextPatch;
-  }
-  if (this->OrientShells && mesh.numberOfTriangles() > 0)
-  {
-    this->SetProgressText("Orienting shells");
-    repair.shellsFlipped += volgrid::orientShellsForDomain(mesh);
-  }
-  this->UpdateProgress(0.55);
-  if (this->GetAbortExecute())
-  {
+    output->Initialize();
     return 1;
   }
-
-  // ----- diagnosis of the output -----
-  this->SetProgressText("Checking the output");
-  VolGridFilterProgress checkProgress(this, 0.55, 0.95);
-  volgrid::SurfaceCheckOptions checkOptions;
-  checkOptions.selfIntersections = this->CheckIntersections;
-  checkOptions.nesting = true;
-  checkOptions.progress = &checkProgress;
-  const volgrid::SurfaceCheckReport report = volgrid::checkSurface(mesh, checkOptions);
-  if (this->GetAbortExecute())
+  if (!status.ok())
   {
-    return 1;
+    vtkErrorMacro(<< status.message);
+    return 0;
   }
+  if (!prepared.repairStatus.ok())
+  {
+    vtkWarningMacro(<< "Repair: " << prepared.repairStatus.message);
+  }
+  this->EnclosurePatchId = prepared.enclosurePatchId;
+  const volgrid::SurfaceCheckReport& report = prepared.output;
+  const volgrid::SurfaceRepairReport& repair = prepared.repair;
 
   // ----- output 0: surface, diagnostic arrays, field data -----
   VolGridSurfaceMeshToPolyData(mesh, output, "PatchId");
@@ -451,15 +302,15 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
     output->GetPointData()->AddArray(flagArray("NonManifoldVertex", report.pointNonManifold, 1));
   }
 
-  const std::vector<Row> rows = summaryRows(haveInput ? &inputReport : nullptr, report, repair, parts);
+  const std::vector<volgrid::SurfacePreparationRow> rows = volgrid::surfacePreparationRows(prepared, parts);
   vtkFieldData* fd = output->GetFieldData();
-  for (const Row& row : rows)
+  for (const volgrid::SurfacePreparationRow& row : rows)
   {
     addCount(fd, row.key, row.output);
     if (row.input >= 0)
       addCount(fd, std::string("Input") + row.key, row.input);
   }
-  this->Meshable = mesh.numberOfTriangles() > 0 && report.meshable();
+  this->Meshable = prepared.meshable;
   addCount(fd, "Meshable", this->Meshable ? 1 : 0);
   addCount(fd, "EnclosurePatchId", this->EnclosurePatchId);
   addIds(fd, "FirstBoundaryEdgeTriangles", report.firstBoundaryEdgeTriangles);
@@ -486,7 +337,7 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
   auto words = [](int64_t v) { return v < 0 ? std::string("not computed") : std::to_string(v); };
   auto firstIds = vtkSmartPointer<vtkStringArray>::New();
   firstIds->SetName("FirstIds");
-  for (const Row& row : rows)
+  for (const volgrid::SurfacePreparationRow& row : rows)
   {
     category->InsertNextValue(row.category);
     item->InsertNextValue(row.item);
@@ -527,22 +378,10 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
 
   // ----- log and warnings -----
   vtkLog(TRACE, "VolGrid Surface Prep: " << parts << " part(s); " << repair.summary());
-  if (mesh.numberOfTriangles() > 0 && !this->Meshable)
+  const std::string warning = volgrid::surfacePreparationWarning(prepared, rows, mesh.numberOfTriangles());
+  if (!warning.empty())
   {
-    const volgrid::Status status = volgrid::surfaceStatus(report);
-    std::ostringstream os;
-    os << "The surface is not meshable: " << status.message;
-    for (const Row& row : rows)
-    {
-      if (std::string(row.category) == "defect" && row.output > 0)
-        os << "\n  " << row.item << ": " << row.output << (row.firstIds.empty() ? "" : " (") << row.firstIds
-           << (row.firstIds.empty() ? "" : ")");
-    }
-    vtkWarningMacro(<< os.str());
-  }
-  else if (misorientedShells(report) > 0)
-  {
-    vtkWarningMacro(<< misorientedShells(report) << " closed shell(s) are not oriented away from the domain.");
+    vtkWarningMacro(<< warning);
   }
   this->UpdateProgress(1.0);
   return 1;

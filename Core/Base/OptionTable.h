@@ -1,10 +1,13 @@
 // Every numeric option of the mesher, written once: its name on the command line (--NAME), its property
 // in the VTK filter and the ParaView panel, its type, default, valid range and a one-line doc. The
 // options structs take their defaults from here, Core's option checks and the CLI's parsing and usage
-// take the valid ranges, the filter clamps to them, and a test (Testing/Layout/check_plugin_options.py)
-// holds Plugin/VolGridTetrahedralize.xml's defaults and slider ranges against this table.
+// take the valid ranges, the filter clamps to them, and the build writes Plugin/VolGridTetrahedralize.xml
+// from Plugin/VolGridTetrahedralize.xml.in with fillOptionPlaceholders (Plugin/GenerateOptionXml.cxx), so
+// the ParaView panel's defaults and slider ranges are this table's too (checked by TestOptionTable).
 // Changing a default or a range is a one-line change of one row below.
 #pragma once
+
+#include "Status.h"
 
 #include <limits>
 #include <string>
@@ -63,5 +66,11 @@ inline constexpr const OptionSpec* table[] = { &alpha,   &beta,      &sizeScale,
 const OptionSpec* findOption(const std::string& name);
 // The row whose filter / Plugin XML property is `property`, or nullptr.
 const OptionSpec* findOptionByProperty(const std::string& property);
+
+// `text` with every @VOLGRID_OPTION_<property>_DEFAULT@ replaced by that row's default and every
+// @VOLGRID_OPTION_<property>_RANGE@ by its slider range as XML attributes (min="0.3" max="2"; no max when
+// the slider has none). Fails on an unknown or unterminated placeholder and on a row left unused, so a
+// template cannot silently keep a number of its own.
+Status fillOptionPlaceholders(const std::string& text, std::string& filled);
 
 } // namespace volgrid

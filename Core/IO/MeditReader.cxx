@@ -16,17 +16,12 @@ using namespace detail;
 Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
                  const SurfaceReadOptions& options)
 {
-  mesh.clear();
-  SurfaceReadInfo localInfo;
-  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
-  info = SurfaceReadInfo();
-  info.format = "Medit";
-  std::string text;
-  Status s = loadFile(path, text);
+  ReadStart start(mesh, infoOut, "Medit");
+  Status s = start.load(path);
   if (!s.ok())
-  {
     return s;
-  }
+  SurfaceReadInfo& info = start.info;
+  const std::string& text = start.text;
   if (lowerExtension(path) == "meshb" || text.find('\0') != std::string::npos)
   {
     return readError(path, 0, "binary Medit (.meshb) is not supported");

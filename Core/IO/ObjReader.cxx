@@ -125,15 +125,12 @@ Status checkReferences(const std::string& path, const ObjFaces& faces, int64_t v
 
 Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
-  mesh.clear();
-  SurfaceReadInfo localInfo;
-  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
-  info = SurfaceReadInfo();
-  info.format = "OBJ";
-  std::string text;
-  Status s = loadFile(path, text);
+  ReadStart start(mesh, infoOut, "OBJ");
+  Status s = start.load(path);
   if (!s.ok())
     return s;
+  SurfaceReadInfo& info = start.info;
+  const std::string& text = start.text;
   Scanner sc(text, path, true);
   std::vector<std::string_view> toks;
   ObjFaces faces;

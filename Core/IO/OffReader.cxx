@@ -14,17 +14,12 @@ using namespace detail;
 
 Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
-  mesh.clear();
-  SurfaceReadInfo localInfo;
-  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
-  info = SurfaceReadInfo();
-  info.format = "OFF";
-  std::string text;
-  Status s = loadFile(path, text);
+  ReadStart start(mesh, infoOut, "OFF");
+  Status s = start.load(path);
   if (!s.ok())
-  {
     return s;
-  }
+  SurfaceReadInfo& info = start.info;
+  const std::string& text = start.text;
   Scanner sc(text, path, true);
   std::vector<std::string_view> toks;
   if (!sc.nextLine(toks))

@@ -16,16 +16,12 @@ using namespace detail;
 
 Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions&)
 {
-  mesh.clear();
-  SurfaceReadInfo localInfo;
-  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
-  info = SurfaceReadInfo();
-  std::string text;
-  Status s = loadFile(path, text);
+  ReadStart start(mesh, infoOut, "");
+  Status s = start.load(path);
   if (!s.ok())
-  {
     return s;
-  }
+  SurfaceReadInfo& info = start.info;
+  const std::string& text = start.text;
   if (text.empty())
   {
     return Status::failure(ErrorKind::EmptyInput, path + ": empty file");

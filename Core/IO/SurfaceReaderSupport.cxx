@@ -75,6 +75,14 @@ int64_t fileSize(const std::string& path)
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) ? static_cast<int64_t>(st.st_size) : -1;
 }
 
+ReadStart::ReadStart(SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const char* format)
+  : info(infoOut ? *infoOut : Own)
+{
+  mesh.clear();
+  this->info = SurfaceReadInfo();
+  this->info.format = format;
+}
+
 Status loadFile(const std::string& path, std::string& text)
 {
   Status s = checkRegularFile(path);

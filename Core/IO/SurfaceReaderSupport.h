@@ -33,6 +33,24 @@ int64_t fileSize(const std::string& path);
 // Reads the whole file (binary mode) into text; a file whose name ends in ".gz" is decompressed.
 Status loadFile(const std::string& path, std::string& text);
 
+// The start every text reader shares: the mesh cleared, the caller's info (or a local one when it passed
+// none) reset with the format's name, then load() reads the whole file into `text`.
+class ReadStart
+{
+public:
+  ReadStart(SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const char* format);
+  ReadStart(const ReadStart&) = delete;
+  ReadStart& operator=(const ReadStart&) = delete;
+  Status load(const std::string& path) { return loadFile(path, this->text); }
+
+private:
+  SurfaceReadInfo Own; // before `info`, which may refer to it
+
+public:
+  SurfaceReadInfo& info;
+  std::string text;
+};
+
 // True when the whole token is a number (a leading '+' is allowed).
 bool parseDouble(std::string_view tok, double& value);
 bool parseInt(std::string_view tok, int64_t& value);

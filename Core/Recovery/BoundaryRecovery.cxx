@@ -684,6 +684,98 @@ private:
   std::unordered_map<uint64_t, int> coneRounds_; // per input segment (edgeKey), splitEdgeByCones calls
 };
 
+// The final census: the unrecovered edges and facets counted into `rep`; returns the input triangles of
+// the first five of each (edges first).
+std::vector<int64_t> finalCensus(MeshEditor& ed, BoundaryConstraints& bc, BoundaryCensus& census, RecoveryReport& rep)
+{
+  std::vector<int64_t> badEdges, badFaces;
+  if (!census.upToDate(ed, bc))
+    census.take(ed, bc);
+  // A live subface none of whose edges was counted missing above, yet not a face, is a missing facet.
+  std::vector<uint8_t> edgeMissing(static_cast<size_t>(bc.capacity()), 0);
+  census.forEachSubfaceEdge(bc,
+                            [&](int32_t f, int32_t, int32_t, int32_t id, bool first)
+                            {
+                              if (first && (id < 0 || !census.edgePresent(id)))
+                              {
+                                ++rep.unrecoveredEdges;
+                                edgeMissing[static_cast<size_t>(f)] = 1;
+                                if (badEdges.size() < 5)
+                                  badEdges.push_back(bc.parent[f]);
+                              }
+                            });
+  for (int32_t f = 0; f < bc.capacity(); ++f)
+    if (bc.alive(f) && !edgeMissing[static_cast<size_t>(f)] && census.faceCode(f) < 0)
+    {
+      ++rep.unrecoveredFacets;
+      if (badFaces.size() < 5)
+        badFaces.push_back(bc.parent[f]);
+    }
+  badEdges.insert(badEdges.end(), badFaces.begin(), badFaces.end());
+  return badEdges;
+}
+
+// Cavity retetrahedralization of each input triangle with missing subfaces (all its segments present):
+// the whole triangle, its pieces, or the slab; a triangle none of them recovers is marked in `fallback`.
+Status recoverFacetCavities(MeshEditor& ed, BoundaryConstraints& bc, const std::vector<int32_t>& missingFaces,
+                            std::vector<char>& fallback, FacetCavityStats& cavityStats, Progress& progress)
+{
+  std::unordered_map<int32_t, std::vector<int32_t>> byParent;
+  for (int32_t f : missingFaces)
+    if (!fallback[static_cast<size_t>(bc.parent[f])])
+      byParent.emplace(bc.parent[f], std::vector<int32_t>());
+  if (byParent.empty())
+    return Status::success();
+  for (int32_t f = 0; f < bc.capacity(); ++f)
+    if (bc.alive(f))
+    {
+      auto it = byParent.find(bc.parent[f]);
+      if (it != byParent.end())
+        it->second.push_back(f);
+    }
+  size_t done = 0;
+  for (auto& [par, subs] : byParent)
+  {
+    if (++done % 256 == 0)
+    {
+      progress.report(0.5 + 0.5 * static_cast<double>(done) / byParent.size(), "Recovering boundary facets");
+      if (progress.cancelled())
+        return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
+    }
+    if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats) &&
+        !recoverFacetByPieces(ed, bc, par, subs, &cavityStats) && !recoverFacetBySlab(ed, bc, par, subs, &cavityStats))
+      fallback[static_cast<size_t>(par)] = 1;
+  }
+  return Status::success();
+}
+
+// The presplit stage: rounds that split each missing listed segment at its midpoint (insertVertex without
+// constraints is the Bowyer-Watson insertion, so the mesh stays Delaunay) until all are edges (true) or
+// `budget` points are used or a round splits nothing (false).
+template<class CollectMissing>
+bool presplit(Recoverer& rec, MeshEditor& ed, BoundaryConstraints& bc, const std::unordered_set<uint64_t>& segments,
+              int64_t budget, CollectMissing&& collectMissingEdges,
+              const std::vector<std::pair<int32_t, int32_t>>& missingEdges, int64_t& steinerUsed, RecoveryReport& rep)
+{
+  for (int round = 0; round < 64 && steinerUsed < budget; ++round)
+  {
+    collectMissingEdges(&segments);
+    if (missingEdges.empty())
+      return true;
+    bool split = false;
+    for (auto [a, b] : missingEdges)
+      if (bc.isEdge(a, b) && ed.findEdge(a, b) < 0 && steinerUsed < budget && rec.splitEdge(a, b, true))
+      {
+        ++steinerUsed;
+        ++rep.presplitPoints;
+        split = true;
+      }
+    if (!split)
+      return false;
+  }
+  return false;
+}
+
 } // namespace
 
 // Stop adding Steiner points after this many consecutive rounds in which the number of missing edges grew.
@@ -748,32 +840,12 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
   };
   if (options.presplitSegments && !options.presplitSegments->empty() && options.allowSteiner)
   {
-    // Presplit stage (see RecoveryOptions::presplitSegments); insertVertex without constraints is the
-    // Bowyer-Watson insertion, so the mesh stays Delaunay.
-    // At most one presplit point per input triangle: beyond that (segments of needle triangles, whose
-    // pieces would have to be as short as the needles are thin) the retry would only end in a slow
-    // Steiner removal of thousands of points.
+    // Presplit stage (see RecoveryOptions::presplitSegments). At most one presplit point per input triangle: beyond
+    // that (segments of needle triangles, whose pieces would have to be as short as the needles are thin) the retry
+    // would only end in a slow Steiner removal of thousands of points.
     const int64_t presplitBudget = std::min<int64_t>(budget, bc.numInputTriangles());
-    bool converged = false;
-    for (int round = 0; round < 64 && steinerUsed < presplitBudget; ++round)
-    {
-      collectMissingEdges(options.presplitSegments);
-      if (missingEdges.empty())
-      {
-        converged = true;
-        break;
-      }
-      bool split = false;
-      for (auto [a, b] : missingEdges)
-        if (bc.isEdge(a, b) && ed.findEdge(a, b) < 0 && steinerUsed < presplitBudget && rec.splitEdge(a, b, true))
-        {
-          ++steinerUsed;
-          ++rep.presplitPoints;
-          split = true;
-        }
-      if (!split)
-        break;
-    }
+    const bool converged = presplit(rec, ed, bc, *options.presplitSegments, presplitBudget, collectMissingEdges,
+                                    missingEdges, steinerUsed, rep);
     if (!converged)
     {
       rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -855,37 +927,9 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     if (missingFaces.empty())
       break;
     failedFaces.clear();
-    done = 0;
-    // Cavity retetrahedralization of each input triangle with missing subfaces (all segments present).
-    {
-      std::unordered_map<int32_t, std::vector<int32_t>> byParent;
-      for (int32_t f : missingFaces)
-        if (!fallback[static_cast<size_t>(bc.parent[f])])
-          byParent.emplace(bc.parent[f], std::vector<int32_t>());
-      if (!byParent.empty())
-      {
-        for (int32_t f = 0; f < bc.capacity(); ++f)
-          if (bc.alive(f))
-          {
-            auto it = byParent.find(bc.parent[f]);
-            if (it != byParent.end())
-              it->second.push_back(f);
-          }
-        for (auto& [par, subs] : byParent)
-        {
-          if (++done % 256 == 0)
-          {
-            pr->report(0.5 + 0.5 * static_cast<double>(done) / byParent.size(), "Recovering boundary facets");
-            if (pr->cancelled())
-              return Status::failure(ErrorKind::Cancelled, "Boundary recovery was cancelled.");
-          }
-          if (!recoverFacetByCavity(ed, bc, par, subs, &cavityStats) &&
-              !recoverFacetByPieces(ed, bc, par, subs, &cavityStats) &&
-              !recoverFacetBySlab(ed, bc, par, subs, &cavityStats))
-            fallback[static_cast<size_t>(par)] = 1;
-        }
-      }
-    }
+    const Status cavities = recoverFacetCavities(ed, bc, missingFaces, fallback, cavityStats, *pr);
+    if (!cavities.ok())
+      return cavities;
     bool edgesNeeded = false;
     for (int32_t f : missingFaces)
     {
@@ -926,32 +970,7 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
       break;
   }
 
-  // Final census.
-  std::vector<int64_t> badEdges, badFaces;
-  {
-    if (!census.upToDate(ed, bc))
-      census.take(ed, bc);
-    // A live subface none of whose edges was counted missing above, yet not a face, is a missing facet.
-    std::vector<uint8_t> edgeMissing(static_cast<size_t>(bc.capacity()), 0);
-    census.forEachSubfaceEdge(bc,
-                              [&](int32_t f, int32_t, int32_t, int32_t id, bool first)
-                              {
-                                if (first && (id < 0 || !census.edgePresent(id)))
-                                {
-                                  ++rep.unrecoveredEdges;
-                                  edgeMissing[static_cast<size_t>(f)] = 1;
-                                  if (badEdges.size() < 5)
-                                    badEdges.push_back(bc.parent[f]);
-                                }
-                              });
-    for (int32_t f = 0; f < bc.capacity(); ++f)
-      if (bc.alive(f) && !edgeMissing[static_cast<size_t>(f)] && census.faceCode(f) < 0)
-      {
-        ++rep.unrecoveredFacets;
-        if (badFaces.size() < 5)
-          badFaces.push_back(bc.parent[f]);
-      }
-  }
+  const std::vector<int64_t> ids = finalCensus(ed, bc, census, rep);
   rep.facetCavities = static_cast<int64_t>(cavityStats.successes);
   rep.facetCavityEnlargements = static_cast<int64_t>(cavityStats.enlargements);
   rep.steinerSegment = rec.steinerSegment;
@@ -965,8 +984,6 @@ Status recoverBoundary(MeshEditor& ed, BoundaryConstraints& bc, std::vector<Vert
     *report = rep;
   if (rep.unrecoveredEdges || rep.unrecoveredFacets)
   {
-    std::vector<int64_t> ids = badEdges;
-    ids.insert(ids.end(), badFaces.begin(), badFaces.end());
     return Status::failure(ErrorKind::RecoveryFailed,
                            "Boundary recovery failed: " + std::to_string(rep.unrecoveredEdges) + " edge(s) and " +
                              std::to_string(rep.unrecoveredFacets) + " facet(s) could not be recovered (" +

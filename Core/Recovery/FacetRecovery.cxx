@@ -1,5 +1,6 @@
 #include "FacetRecovery.h"
 
+#include "CavityDelaunay.h"
 #include "Delaunay.h"
 #include "Predicates.h"
 
@@ -25,31 +26,7 @@ constexpr int32_t kMaxRepairTets = 300;
 constexpr int kMaxRepairFlips = 16;
 constexpr int32_t kMaxRepairPairTets = 40;
 
-// A triangle with its orientation: rotated so that the smallest id comes first.
-struct OKey
-{
-  int32_t v[3];
-  bool operator==(const OKey& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
-};
-OKey orientedKey(const int32_t* f)
-{
-  if (f[0] < f[1] && f[0] < f[2])
-    return { { f[0], f[1], f[2] } };
-  if (f[1] < f[0] && f[1] < f[2])
-    return { { f[1], f[2], f[0] } };
-  return { { f[2], f[0], f[1] } };
-}
-struct OKeyHash
-{
-  size_t operator()(const OKey& k) const
-  {
-    TriKey t;
-    t.v[0] = k.v[0];
-    t.v[1] = k.v[1];
-    t.v[2] = k.v[2];
-    return TriKeyHash()(t);
-  }
-};
+using namespace cavity;
 
 // A face of a cavity's boundary, oriented so that the cavity is on its positive side.
 struct BFace
@@ -371,100 +348,41 @@ private:
     std::vector<int32_t> verts;
     for (auto& [k, bf] : fm)
       verts.insert(verts.end(), bf.v, bf.v + 3);
-    std::sort(verts.begin(), verts.end());
-    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-    if (verts.size() < 4)
+    TetMesh lm; // local ids in global order: both sides break ties the same way
+    if (!localDelaunay(m_, verts, lm))
       return -1;
-    // Local ids in global order, so that Simulation of Simplicity breaks ties the same way on both sides.
-    std::vector<double> xyz(3 * verts.size());
-    for (size_t i = 0; i < verts.size(); ++i)
-      std::copy(m_.point(verts[i]), m_.point(verts[i]) + 3, xyz.begin() + 3 * i);
-    DelaunayOptions opt;
-    opt.spatialSort = false;
-    opt.keepGhosts = false;
-    TetMesh lm;
-    std::vector<int32_t> map;
-    if (!buildDelaunay(xyz.data(), verts.size(), opt, lm, map).ok())
-      return -1;
-    for (size_t i = 0; i < map.size(); ++i)
-      if (map[i] != static_cast<int32_t>(i))
-        return -1;
     if (slab_)
       repairByFlips(lm, verts, fm);
-    auto global = [&](int32_t l) { return verts[static_cast<size_t>(l)]; };
-    std::unordered_map<OKey, std::pair<int32_t, int>, OKeyHash> dtFaces;
-    int32_t f[3];
-    for (int32_t t = 0; t < lm.tetCapacity(); ++t)
-    {
-      if (lm.isFree(t))
-        continue;
-      for (int i = 0; i < 4; ++i)
-      {
-        lm.faceVertices(t, i, f);
-        for (int32_t& x : f)
-          x = global(x);
-        dtFaces.emplace(orientedKey(f), std::make_pair(t, i));
-      }
-    }
-    std::vector<int32_t> queue;
-    std::vector<char> inFill(static_cast<size_t>(lm.tetCapacity()), 0);
+    const std::unordered_map<OKey, int32_t, OKeyHash> owners = faceOwners(lm, verts);
+    std::vector<int32_t> seeds;
     for (auto& [k, bf] : fm)
     {
-      auto it = dtFaces.find(orientedKey(bf.v));
-      if (it == dtFaces.end())
-      {
+      auto it = owners.find(orientedKey(bf.v));
+      if (it == owners.end())
         missing.push_back(k);
-        continue;
-      }
-      if (!inFill[it->second.first])
-      {
-        inFill[it->second.first] = 1;
-        queue.push_back(it->second.first);
-      }
+      else
+        seeds.push_back(it->second);
     }
     if (!missing.empty())
       return 1;
     const int want = s == 0 ? 1 : -1;
-    for (size_t q = 0; q < queue.size(); ++q)
+    // The fill stops at the cavity's boundary (reached from inside) and at faces in R (the apex on side s).
+    auto step = [&](int32_t t, int i, const int32_t* f)
     {
-      const int32_t t = queue[q];
-      for (int i = 0; i < 4; ++i)
-      {
-        lm.faceVertices(t, i, f);
-        for (int32_t& x : f)
-          x = global(x);
-        const TriKey k(f[0], f[1], f[2]);
-        auto bt = fm.find(k);
-        if (bt != fm.end())
-        {
-          if (!(orientedKey(bt->second.v) == orientedKey(f)))
-            return -1; // reached a boundary face from outside
-          continue;
-        }
-        if (onR(f[0]) && onR(f[1]) && onR(f[2]))
-        {
-          if (side(global(lm.vertex(t, i))) != want)
-            return -1;
-          tri.emplace(k, std::array<int32_t, 3>{ { f[0], f[1], f[2] } });
-          apex_[s][k] = global(lm.vertex(t, i));
-          continue;
-        }
-        const int32_t n = lm.neighbor(t, i);
-        if (n < 0)
-          return -1; // the fill leaks out of the cavity
-        if (!inFill[n])
-        {
-          inFill[n] = 1;
-          queue.push_back(n);
-        }
-      }
-    }
-    for (int32_t t : queue)
-    {
-      const int32_t* v = lm.vertices(t);
-      newTets.push_back({ { global(v[0]), global(v[1]), global(v[2]), global(v[3]) } });
-    }
-    return 0;
+      const TriKey k(f[0], f[1], f[2]);
+      auto bt = fm.find(k);
+      if (bt != fm.end())
+        return orientedKey(bt->second.v) == orientedKey(f) ? FaceStep::Stop : FaceStep::Fail;
+      if (!(onR(f[0]) && onR(f[1]) && onR(f[2])))
+        return FaceStep::Cross;
+      const int32_t apex = verts[static_cast<size_t>(lm.vertex(t, i))];
+      if (side(apex) != want)
+        return FaceStep::Fail;
+      tri.emplace(k, std::array<int32_t, 3>{ { f[0], f[1], f[2] } });
+      apex_[s][k] = apex;
+      return FaceStep::Stop;
+    };
+    return floodFill(lm, verts, seeds, step, newTets) ? 0 : -1;
   }
 
   // A new edge (not on the cavity's boundary) running along a split segment
@@ -576,37 +494,31 @@ private:
       }
     };
     int best = score(lm);
-    std::vector<TetMesh> one, two;
-    for (int pass = 0; pass < kMaxRepairFlips && best > 0; ++pass)
+    // Moves the first of `candidates` that scores better than `best` into lm.
+    auto takeBetter = [&](std::vector<TetMesh>& candidates)
     {
-      bool improved = false;
-      neighbours(lm, one);
-      for (TetMesh& n : one)
+      for (TetMesh& n : candidates)
       {
         const int sc = score(n);
         if (sc < best)
         {
           best = sc;
           lm = std::move(n);
-          improved = true;
-          break;
+          return true;
         }
       }
+      return false;
+    };
+    std::vector<TetMesh> one, two;
+    for (int pass = 0; pass < kMaxRepairFlips && best > 0; ++pass)
+    {
+      neighbours(lm, one);
+      bool improved = takeBetter(one);
       if (!improved && lm.numTets() <= kMaxRepairPairTets)
         for (size_t i = 0; i < one.size() && !improved; ++i)
         {
           neighbours(one[i], two);
-          for (TetMesh& n : two)
-          {
-            const int sc = score(n);
-            if (sc < best)
-            {
-              best = sc;
-              lm = std::move(n);
-              improved = true;
-              break;
-            }
-          }
+          improved = takeBetter(two);
         }
       if (!improved)
         break;
@@ -743,111 +655,6 @@ private:
   std::unordered_map<int32_t, int> tetSide_; // removed tets: 2 = initial cavity, 0/1 = grown side
   FaceMap faces_[2];
 };
-
-} // namespace
-
-bool fillCavityDelaunay(const TetMesh& m, const std::vector<std::array<int32_t, 3>>& faces,
-                        std::vector<std::array<int32_t, 4>>& tets, std::vector<std::array<int32_t, 3>>* missing)
-{
-  tets.clear();
-  if (missing)
-    missing->clear();
-  if (faces.size() < 4)
-    return false;
-  std::vector<int32_t> verts;
-  std::unordered_map<TriKey, OKey, TriKeyHash> fm;
-  for (auto& f : faces)
-  {
-    verts.insert(verts.end(), f.begin(), f.end());
-    if (!fm.emplace(TriKey(f[0], f[1], f[2]), orientedKey(f.data())).second)
-      return false;
-  }
-  std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  if (verts.size() < 4)
-    return false;
-  std::vector<double> xyz(3 * verts.size());
-  for (size_t i = 0; i < verts.size(); ++i)
-    std::copy(m.point(verts[i]), m.point(verts[i]) + 3, xyz.begin() + 3 * i);
-  DelaunayOptions opt;
-  opt.spatialSort = false;
-  opt.keepGhosts = false;
-  TetMesh lm;
-  std::vector<int32_t> map;
-  if (!buildDelaunay(xyz.data(), verts.size(), opt, lm, map).ok())
-    return false;
-  for (size_t i = 0; i < map.size(); ++i)
-    if (map[i] != static_cast<int32_t>(i))
-      return false;
-  auto global = [&](int32_t l) { return verts[static_cast<size_t>(l)]; };
-  std::unordered_map<OKey, int32_t, OKeyHash> dtFaces;
-  int32_t f[3];
-  for (int32_t t = 0; t < lm.tetCapacity(); ++t)
-  {
-    if (lm.isFree(t))
-      continue;
-    for (int i = 0; i < 4; ++i)
-    {
-      lm.faceVertices(t, i, f);
-      for (int32_t& x : f)
-        x = global(x);
-      dtFaces.emplace(orientedKey(f), t);
-    }
-  }
-  std::vector<int32_t> queue;
-  std::vector<char> inFill(static_cast<size_t>(lm.tetCapacity()), 0);
-  for (auto& [k, ok] : fm)
-  {
-    auto it = dtFaces.find(ok);
-    if (it == dtFaces.end())
-    {
-      if (missing)
-        missing->push_back({ { ok.v[0], ok.v[1], ok.v[2] } });
-      continue;
-    }
-    if (!inFill[it->second])
-    {
-      inFill[it->second] = 1;
-      queue.push_back(it->second);
-    }
-  }
-  if (missing && !missing->empty())
-    return false;
-  for (size_t q = 0; q < queue.size(); ++q)
-  {
-    const int32_t t = queue[q];
-    for (int i = 0; i < 4; ++i)
-    {
-      lm.faceVertices(t, i, f);
-      for (int32_t& x : f)
-        x = global(x);
-      auto bt = fm.find(TriKey(f[0], f[1], f[2]));
-      if (bt != fm.end())
-      {
-        if (!(bt->second == orientedKey(f)))
-          return false;
-        continue;
-      }
-      const int32_t n = lm.neighbor(t, i);
-      if (n < 0)
-        return false;
-      if (!inFill[n])
-      {
-        inFill[n] = 1;
-        queue.push_back(n);
-      }
-    }
-  }
-  for (int32_t t : queue)
-  {
-    const int32_t* v = lm.vertices(t);
-    tets.push_back({ { global(v[0]), global(v[1]), global(v[2]), global(v[3]) } });
-  }
-  return true;
-}
-
-namespace
-{
 
 // The whole-triangle cavity (slab: R's border vertices counted as on R); on success the subfaces of
 // `parent` are replaced by the triangulation of R the cavity produced.

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "BoundaryRecovery.h"
+#include "CavityDelaunay.h" // fillCavityDelaunay, used with the facet cavities
 
 #include <array>
 #include <cstdint>
@@ -53,16 +54,5 @@ bool recoverSubfaceByCavity(MeshEditor& ed, BoundaryConstraints& bc, int32_t sub
 // subfaces from a vertex that sees them all, before its cavity is grown.
 bool recoverFacetBySlab(MeshEditor& ed, BoundaryConstraints& bc, int32_t parent, std::vector<int32_t>& subfaces,
                         FacetCavityStats* stats = nullptr);
-
-// Tetrahedralize a closed cavity given by its boundary faces, each oriented with the cavity on its
-// positive side (orient3d(f0,f1,f2,x) > 0 for x inside), every cavity vertex being a vertex of some
-// face: the Delaunay tetrahedralization of the face vertices must contain every face, and the tets
-// reached from the faces' inner sides without crossing a face must close up. False when it does not
-// work (no Steiner point is added). Used by Steiner removal when no single point sees the whole cavity.
-// `missing` (optional) receives the faces absent from the Delaunay tetrahedralization (as given), so
-// that the caller can grow the cavity across them and retry.
-bool fillCavityDelaunay(const TetMesh& mesh, const std::vector<std::array<int32_t, 3>>& faces,
-                        std::vector<std::array<int32_t, 4>>& tets,
-                        std::vector<std::array<int32_t, 3>>* missing = nullptr);
 
 } // namespace volgrid

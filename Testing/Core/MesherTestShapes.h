@@ -3,9 +3,11 @@
 
 #include "SurfaceMesh.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace volgrid
 {

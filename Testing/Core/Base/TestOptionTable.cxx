@@ -1,6 +1,8 @@
-// The option table (OptionTable.h) against the ParaView panel (Plugin/VolGridTetrahedralize.xml): every
-// option's default and slider range must be the table's, so that a default or a range changes in one
-// place. The second test shows the check catches an XML that disagrees.
+// The option table (OptionTable.h) against the ParaView panel: the build writes VolGridTetrahedralize.xml
+// from Plugin/VolGridTetrahedralize.xml.in (fillOptionPlaceholders); every option's default and slider
+// range in the generated file must be the table's, so that a default or a range changes in one place.
+// Further tests show the check catches an XML that disagrees and the generator refuses a template that
+// keeps a number of its own.
 #include "OptionTable.h"
 
 #include <gtest/gtest.h>
@@ -16,12 +18,18 @@ using namespace volgrid;
 namespace
 {
 
-std::string readPluginXml()
+std::string readFile(const std::string& path)
 {
-  std::ifstream in(std::string(VOLGRID_TEST_DATA_DIR) + "/../../Plugin/VolGridTetrahedralize.xml");
+  std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+// The XML the build generated for the plugin.
+std::string readPluginXml()
+{
+  return readFile(VOLGRID_GENERATED_PLUGIN_XML);
 }
 
 // The value of attribute `name` in `tag` (the text of one XML start tag), or "" when absent.
@@ -88,6 +96,18 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
 
+// `xml` with the value of the first attribute `name` after `anchor` set to `value`.
+std::string withAttribute(std::string xml, const std::string& anchor, const std::string& name, const std::string& value)
+{
+  const size_t at = xml.find(anchor);
+  EXPECT_NE(at, std::string::npos) << anchor;
+  const size_t begin = xml.find(" " + name + "=\"", at);
+  EXPECT_NE(begin, std::string::npos) << name;
+  if (at == std::string::npos || begin == std::string::npos)
+    return xml;
+  const size_t valueAt = begin + name.size() + 3;
+  return xml.replace(valueAt, xml.find('"', valueAt) - valueAt, value);
+}
 } // namespace
 
 TEST(OptionTable, PluginXmlAgreesWithTheTable)
@@ -99,16 +119,43 @@ TEST(OptionTable, PluginXmlAgreesWithTheTable)
 
 TEST(OptionTable, ADisagreeingPluginXmlIsCaught)
 {
+  // A copy of the generated XML with Beta's default and TargetMinDihedral's slider maximum edited by hand.
   const std::string xml = readPluginXml();
-  const std::string defaultChanged =
-    replaced(xml, "name=\"Beta\" command=\"SetBeta\" number_of_elements=\"1\" default_values=\"0.4\"",
-             "name=\"Beta\" command=\"SetBeta\" number_of_elements=\"1\" default_values=\"0.55\"");
+  const std::string defaultChanged = withAttribute(xml, "name=\"Beta\"", "default_values", "12345");
   ASSERT_EQ(allDisagreements(defaultChanged).size(), 1u);
-  EXPECT_EQ(allDisagreements(defaultChanged)[0], "Beta: default 0.55 in the XML, 0.4 in the table");
-  const std::string rangeChanged = replaced(xml, "<DoubleRangeDomain name=\"range\" min=\"1\" max=\"60\"/>",
-                                            "<DoubleRangeDomain name=\"range\" min=\"1\" max=\"90\"/>");
+  EXPECT_EQ(allDisagreements(defaultChanged)[0],
+            "Beta: default 12345 in the XML, " + show(option::beta.defaultValue) + " in the table");
+  const std::string rangeChanged = withAttribute(xml, "name=\"TargetMinDihedral\"", "max", "12345");
   ASSERT_EQ(allDisagreements(rangeChanged).size(), 1u);
-  EXPECT_EQ(allDisagreements(rangeChanged)[0], "TargetMinDihedral: max '90' in the XML, 60 in the table");
+  EXPECT_EQ(allDisagreements(rangeChanged)[0],
+            "TargetMinDihedral: max '12345' in the XML, " + show(option::targetAngle.sliderMax) + " in the table");
+}
+
+TEST(OptionTable, TheGeneratedXmlIsTheFilledTemplate)
+{
+  const std::string templ = readFile(VOLGRID_PLUGIN_XML_TEMPLATE);
+  ASSERT_FALSE(templ.empty());
+  std::string filled;
+  ASSERT_TRUE(fillOptionPlaceholders(templ, filled).ok());
+  EXPECT_EQ(filled, readPluginXml());
+  EXPECT_EQ(filled.find("@VOLGRID_OPTION_"), std::string::npos);
+  // Numbers as people write them: 0.4, not 0.40000000000000002; 60, not 6e+01.
+  EXPECT_EQ(filled.find("e+"), std::string::npos);
+  EXPECT_EQ(filled.find("0000000"), std::string::npos);
+}
+
+TEST(OptionTable, ATemplateKeepingItsOwnNumberIsRefused)
+{
+  const std::string templ = readFile(VOLGRID_PLUGIN_XML_TEMPLATE);
+  std::string filled;
+  const Status ownDefault = fillOptionPlaceholders(
+    replaced(templ, "default_values=\"@VOLGRID_OPTION_Beta_DEFAULT@\"", "default_values=\"0.55\""), filled);
+  EXPECT_FALSE(ownDefault.ok());
+  EXPECT_NE(ownDefault.message.find("@VOLGRID_OPTION_Beta_DEFAULT@"), std::string::npos) << ownDefault.message;
+  const Status unknown = fillOptionPlaceholders(templ + "@VOLGRID_OPTION_Gamma_DEFAULT@", filled);
+  EXPECT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.message.find("VOLGRID_OPTION_Gamma_DEFAULT"), std::string::npos) << unknown.message;
+  EXPECT_FALSE(fillOptionPlaceholders(templ + "@VOLGRID_OPTION_Alpha", filled).ok());
 }
 
 TEST(OptionTable, DefaultsAndSlidersLieInTheValidRange)

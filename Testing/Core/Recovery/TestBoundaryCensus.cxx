@@ -5,6 +5,7 @@
 #include "Delaunay.h"
 #include "FlatHashMap.h"
 #include "MesherTestShapes.h"
+#include "RecoveryTestSetup.h"
 
 #include <gtest/gtest.h>
 
@@ -15,27 +16,6 @@ using namespace volgrid;
 
 namespace
 {
-
-// Delaunay of the surface points plus a far box (as the mesher does), no ghosts.
-struct CensusSetup
-{
-  TetMesh mesh;
-  BoundaryConstraints bc;
-  std::vector<VertexKind> kinds;
-  explicit CensusSetup(const SurfaceMesh& s)
-  {
-    std::vector<double> xyz = s.points;
-    for (int c = 0; c < 8; ++c)
-      for (int k = 0; k < 3; ++k)
-        xyz.push_back(((c >> k) & 1) ? 20.0 : -20.0);
-    DelaunayOptions o;
-    o.keepGhosts = false;
-    std::vector<int32_t> map;
-    EXPECT_TRUE(buildDelaunay(xyz.data(), xyz.size() / 3, o, mesh, map).ok());
-    bc.init(s.triangles.data(), s.numberOfTriangles());
-    kinds.assign(xyz.size() / 3, VertexKind::Boundary);
-  }
-};
 
 // Every answer of the census equals the star searches'; returns how many edges and faces were missing.
 std::pair<int, int> expectCensusMatchesSearch(MeshEditor& ed, const BoundaryConstraints& bc)
@@ -107,7 +87,7 @@ TEST(BoundaryCensus, MatchesStarSearchBeforeAndAfterRecovery)
   // Skinny strips: the Delaunay tetrahedralization misses many boundary edges and faces; recovery then
   // adds Steiner points and splits subfaces.
   SurfaceMesh s = testshapes::stripBox(20, 1.0, 8.0, 0.25);
-  CensusSetup su(s);
+  RecoverySetup su(s, 20);
   MeshEditor ed(su.mesh);
   const auto before = expectCensusMatchesSearch(ed, su.bc);
   EXPECT_GT(before.first, 0);
@@ -121,7 +101,7 @@ TEST(BoundaryCensus, MatchesStarSearchBeforeAndAfterRecovery)
 TEST(BoundaryCensus, SchoenhardtAndSpheres)
 {
   {
-    CensusSetup su(testshapes::schoenhardt(30));
+    RecoverySetup su(testshapes::schoenhardt(30), 20);
     MeshEditor ed(su.mesh);
     EXPECT_GT(expectCensusMatchesSearch(ed, su.bc).second, 0);
   }
@@ -129,14 +109,14 @@ TEST(BoundaryCensus, SchoenhardtAndSpheres)
   const double c[3] = { 0, 0, 0 };
   testshapes::addSphere(s, c, 1.0, 3);
   testshapes::addSphere(s, c, 3.0, 2, true);
-  CensusSetup su(s);
+  RecoverySetup su(s, 20);
   MeshEditor ed(su.mesh);
   expectCensusMatchesSearch(ed, su.bc);
 }
 
 TEST(BoundaryCensus, StaleAfterAnEditOrAConstraintChange)
 {
-  CensusSetup su(testshapes::stripBox(6, 1.0, 4.0, 0.5));
+  RecoverySetup su(testshapes::stripBox(6, 1.0, 4.0, 0.5), 20);
   MeshEditor ed(su.mesh);
   BoundaryCensus census;
   census.take(ed, su.bc);

@@ -9,6 +9,7 @@
 #include "PlanarFlip.h"
 #include "Predicates.h"
 #include "Quality.h"
+#include "RecoveryTestSetup.h"
 #include "SurfaceReader.h"
 
 #include <gtest/gtest.h>
@@ -22,28 +23,6 @@ using namespace volgrid;
 
 namespace
 {
-
-// Delaunay of the surface points plus a far box (as the mesher does), no ghosts.
-struct RecoverySetup
-{
-  TetMesh mesh;
-  BoundaryConstraints bc;
-  std::vector<VertexKind> kinds;
-  explicit RecoverySetup(const SurfaceMesh& s)
-  {
-    std::vector<double> xyz = s.points;
-    const double lo = -10, hi = 10;
-    for (int c = 0; c < 8; ++c)
-      for (int k = 0; k < 3; ++k)
-        xyz.push_back(((c >> k) & 1) ? hi : lo);
-    DelaunayOptions o;
-    o.keepGhosts = false;
-    std::vector<int32_t> map;
-    EXPECT_TRUE(buildDelaunay(xyz.data(), xyz.size() / 3, o, mesh, map).ok());
-    bc.init(s.triangles.data(), s.numberOfTriangles());
-    kinds.assign(xyz.size() / 3, VertexKind::Boundary);
-  }
-};
 
 bool allPresent(MeshEditor& ed, const BoundaryConstraints& bc)
 {
