@@ -337,7 +337,7 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
 
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
                     std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress,
-                    OptimizationReport* reportOut)
+                    OptimizationReport* reportOut, OptimizationWorklist* worklist)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (mesh.numGhostTets() > 0)
@@ -362,8 +362,15 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   // the same (quality, slot) order, as a sweep over the whole mesh, at a cost proportional to the work.
   std::vector<std::pair<double, int32_t>> bad, worst;
   std::vector<int32_t> queue, created, verts, touched, candidates, star;
-  collectSineBelow(mesh, qT, options.threads, bad);
-  std::sort(bad.begin(), bad.end());
+  if (worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees)
+    bad.swap(worklist->below); // exactly what a sweep would collect: the mesh is as the last call left it
+  else
+  {
+    collectSineBelow(mesh, qT, options.threads, bad);
+    std::sort(bad.begin(), bad.end());
+  }
+  if (worklist)
+    worklist->valid = false; // until this call ends
   auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out)
   {
     candidates.clear();
@@ -460,6 +467,12 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       break;
   }
   report.belowTargetAfter = static_cast<int64_t>(bad.size());
+  if (worklist)
+  {
+    worklist->below = bad;
+    worklist->targetDegrees = options.targetDegrees;
+    worklist->valid = true;
+  }
   if (options.summaries)
     report.after = summarizeDihedrals(mesh, options.threads);
   report.minDihedralAfter =

@@ -80,11 +80,12 @@ Status QualityRounds::run()
 
 Status QualityRounds::optimise(int maxPasses)
 {
+  OptimizationWorklist worklist; // one sweep for the series of calls below (nothing else edits between)
   for (int pass = 0; pass < maxPasses; pass += one_.maxPasses)
   {
     one_.maxPasses = pass == 0 ? std::min(3, maxPasses) : 1;
     OptimizationReport orep;
-    Status os = optimizeMesh(mesh, &fc_, locked(), &tetRegion, one_, progress, &orep);
+    Status os = optimizeMesh(mesh, &fc_, locked(), &tetRegion, one_, progress, &orep, &worklist);
     if (!os.ok())
       return os;
     stats.after.minDihedral = orep.minDihedralAfter; // what the rounds below decide on (summary: at the end)
