@@ -62,13 +62,13 @@ QualityRounds::QualityRounds(TetMesh& mesh_, const FaceConstraints& fc, const st
 {
   one_.threads = options.threads;
   one_.maxPasses = 1;
-  one_.vertexRemoval = false; // collapses come last (withCollapses)
+  one_.vertexRemoval = false; // a second attempt, withCollapseRerun
   one_.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
 }
 
 Status QualityRounds::run()
 {
-  Status s = withCollapses();
+  Status s = withCollapseRerun();
   if (!s.ok())
     return s;
   s = speculativeRounds();
@@ -158,29 +158,49 @@ Status QualityRounds::optimiseSplitFloor()
   return floorRounds();
 }
 
-// Vertex collapses (optimization.vertexRemoval) come last, on the optimised mesh, when the worst tet
-// stays under vertexRemovalDegrees (typically recovery's Steiner points pinned against nearly coplanar
-// boundary faces, which no flip, move or added point opens): a pass aimed at the tets under that angle,
-// then floor rounds, with collapses on. Every flip, move and collapse strictly improves the worst tet of
-// the region it changes, so the worst tet cannot get worse and nothing needs undoing. (Before: the whole
-// stage ran a second time from a copy of its start with collapses on, and the better mesh was kept; on
-// the wing demo that rerun was 3.2 of 7.5 s and its mesh was discarded.)
-Status QualityRounds::withCollapses()
+// Vertex collapses (optimization.vertexRemoval) are a second attempt, from the same start, when the
+// worst tet stays under vertexRemovalDegrees (typically recovery's Steiner points pinned against
+// nearly coplanar boundary faces, which no flip, move or added point opens); the better of the two
+// meshes is kept (collapses coarsen the mesh and change what later rounds reach: kept only when the
+// worst tet gets better).
+Status QualityRounds::withCollapseRerun()
 {
+  const bool removal = options.optimization.vertexRemoval;
+  TetMesh startMesh;
+  std::vector<int32_t> startRegion;
+  ImprovementStatistics startStats;
+  if (removal)
+  {
+    startMesh = mesh;
+    startRegion = tetRegion;
+    startStats = stats;
+  }
   Status s = optimiseSplitFloor();
   if (!s.ok())
     return s;
+  const double worstKept = worstSineDegrees(mesh, options.threads);
   const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
-  if (!options.optimization.vertexRemoval || !(worstSineDegrees(mesh, options.threads) < removalDegrees) ||
-      !hasUnlockedVertexBelow(mesh, fc_, clusterLock_, removalDegrees))
-    return Status::success();
-  one_.vertexRemoval = true;
-  one_.targetDegrees = removalDegrees;
-  s = optimise(3);
-  if (s.ok())
-    s = floorRounds();
-  one_.vertexRemoval = false;
-  return s;
+  if (removal && worstKept < removalDegrees && hasUnlockedVertexBelow(mesh, fc_, clusterLock_, removalDegrees))
+  {
+    TetMesh keptMesh = std::move(mesh);
+    std::vector<int32_t> keptRegion = std::move(tetRegion);
+    const ImprovementStatistics keptStats = stats;
+    mesh = std::move(startMesh);
+    tetRegion = std::move(startRegion);
+    stats = startStats;
+    one_.vertexRemoval = true;
+    s = optimiseSplitFloor();
+    if (!s.ok())
+      return s;
+    one_.vertexRemoval = false;
+    if (!(worstSineDegrees(mesh, options.threads) > worstKept))
+    {
+      mesh = std::move(keptMesh);
+      tetRegion = std::move(keptRegion);
+      stats = keptStats;
+    }
+  }
+  return Status::success();
 }
 
 // Small meshes (a few boundary triangles, few or no field points) often end as a tie with any

@@ -2,8 +2,8 @@
 // round, sharing the mesh, the constraints, the labels and the statistics of the stage:
 //   optimise            flips, edge removal, smoothing (MeshOptimization.h) while a pass pays
 //   optimiseSplitFloor  optimisation, splitting of what it cannot fix (BadTetSplitting.h), floor rounds
-//   withCollapses       optimiseSplitFloor, then vertex collapses for the tets still under
-//                       vertexRemovalDegrees (monotone: the worst tet never gets worse)
+//   withCollapseRerun   optimiseSplitFloor, and again from the same start with vertex collapses when the
+//                       worst tet stays low; the better mesh is kept
 //   speculativeRounds   small meshes: a point for the worst tet, kept only when the worst tet improves
 //   insertionRounds     vertex insertion for the worst tets (InsertionImprovement.h)
 // run() is all of them in that order. Every round changes only unconstrained faces and moves no vertex of
@@ -34,7 +34,7 @@ public:
   Status optimise(int maxPasses);
   Status floorRounds();
   Status optimiseSplitFloor();
-  Status withCollapses();
+  Status withCollapseRerun();
   Status speculativeRounds();
   void insertionRounds();
 
