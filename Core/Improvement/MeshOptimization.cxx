@@ -142,11 +142,16 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
   s.Q.assign(static_cast<size_t>(n * n), 2.0);
   s.K.assign(static_cast<size_t>(n * n), -1);
   const std::vector<int32_t>& r = s.ring;
+  // Only a triangulation better than `floor` is used, so every sub-polygon starts at floor: a split
+  // that cannot beat it is skipped without its second tet. A sub-polygon that beats floor gets the same
+  // value and split as without the bound (the first best one); one that cannot keeps floor and no split,
+  // and then no polygon containing it beats floor either.
+  const double floor = std::max(qOld, 0.0);
   for (int len = 2; len < n; ++len)
     for (int i = 0; i + len < n; ++i)
     {
       const int j = i + len;
-      double best = -3;
+      double best = floor;
       int bestK = -1;
       for (int k = i + 1; k < j; ++k)
       {
@@ -168,7 +173,7 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
       s.K[i * n + j] = bestK;
     }
   const double qNew = s.Q[n - 1];
-  if (!(qNew > qOld) || !(qNew > 0))
+  if (!(qNew > floor) || s.K[n - 1] < 0)
     return false;
   s.newTets.clear();
   emit(r, s.K, n, 0, n - 1, x, y, s.newTets);
