@@ -374,6 +374,18 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     collectSineBelow(mesh, qT, options.threads, bad);
     std::sort(bad.begin(), bad.end());
   }
+  std::vector<uint8_t> localUnmoved;
+  std::vector<uint8_t>& unmoved = worklist ? worklist->unmoved : localUnmoved;
+  if (!(worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees))
+    unmoved.clear();
+  unmoved.resize(static_cast<size_t>(mesh.numVertices()), 0);
+  // The tets in `tets` changed: their vertices' smoothing may find a move again.
+  auto changed = [&](const std::vector<int32_t>& tets)
+  {
+    for (int32_t u : tets)
+      for (int i = 0; i < 4; ++i)
+        unmoved[mesh.vertex(u, i)] = 0;
+  };
   if (worklist)
     worklist->valid = false; // until this call ends
   auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out)
@@ -419,6 +431,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       {
         ++changes;
         touched.insert(touched.end(), created.begin(), created.end());
+        changed(created);
         for (int32_t u : created)
           if (tetQ(mesh, u) < qT)
             queue.push_back(u);
@@ -434,13 +447,20 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       std::sort(verts.begin(), verts.end());
       verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
       for (int32_t v : verts)
-        if (!lock[v] && smoothVertex(editor, v, options.smoothingOptions) != SmoothMove::None)
+      {
+        if (lock[v] || unmoved[v])
+          continue;
+        if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
         {
-          ++report.smoothMoves;
-          ++changes;
-          editor.star(v, star);
-          touched.insert(touched.end(), star.begin(), star.end());
+          unmoved[v] = 1;
+          continue;
         }
+        ++report.smoothMoves;
+        ++changes;
+        editor.star(v, star);
+        touched.insert(touched.end(), star.begin(), star.end());
+        changed(star);
+      }
     }
     // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
     // target (worst first), e.g. recovery's Steiner points pinned against nearly coplanar boundary faces.
@@ -462,6 +482,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
             ++report.vertexRemovals;
             ++changes;
             touched.insert(touched.end(), created.begin(), created.end());
+            changed(created);
             break;
           }
       }

@@ -104,6 +104,9 @@ struct OptimizationWorklist
   bool valid = false;
   double targetDegrees = 0;
   std::vector<std::pair<double, int32_t>> below; // (sine quality, tet), sorted
+  // 1 for a vertex whose smoothing found no move and none of whose tets changed since: smoothing it again
+  // would find none either (its outcome depends only on its star), so it is skipped.
+  std::vector<uint8_t> unmoved;
 };
 
 // Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot
