@@ -142,11 +142,16 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
   s.Q.assign(static_cast<size_t>(n * n), 2.0);
   s.K.assign(static_cast<size_t>(n * n), -1);
   const std::vector<int32_t>& r = s.ring;
+  // Only a triangulation better than `floor` is used, so every sub-polygon starts at floor: a split
+  // that cannot beat it is skipped without its second tet. A sub-polygon that beats floor gets the same
+  // value and split as without the bound (the first best one); one that cannot keeps floor and no split,
+  // and then no polygon containing it beats floor either.
+  const double floor = std::max(qOld, 0.0);
   for (int len = 2; len < n; ++len)
     for (int i = 0; i + len < n; ++i)
     {
       const int j = i + len;
-      double best = -3;
+      double best = floor;
       int bestK = -1;
       for (int k = i + 1; k < j; ++k)
       {
@@ -168,7 +173,7 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
       s.K[i * n + j] = bestK;
     }
   const double qNew = s.Q[n - 1];
-  if (!(qNew > qOld) || !(qNew > 0))
+  if (!(qNew > floor) || s.K[n - 1] < 0)
     return false;
   s.newTets.clear();
   emit(r, s.K, n, 0, n - 1, x, y, s.newTets);
@@ -337,7 +342,7 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
 
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
                     std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress,
-                    OptimizationReport* reportOut)
+                    OptimizationReport* reportOut, OptimizationWorklist* worklist)
 {
   const auto t0 = std::chrono::steady_clock::now();
   if (mesh.numGhostTets() > 0)
@@ -362,8 +367,27 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   // the same (quality, slot) order, as a sweep over the whole mesh, at a cost proportional to the work.
   std::vector<std::pair<double, int32_t>> bad, worst;
   std::vector<int32_t> queue, created, verts, touched, candidates, star;
-  collectSineBelow(mesh, qT, options.threads, bad);
-  std::sort(bad.begin(), bad.end());
+  if (worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees)
+    bad.swap(worklist->below); // exactly what a sweep would collect: the mesh is as the last call left it
+  else
+  {
+    collectSineBelow(mesh, qT, options.threads, bad);
+    std::sort(bad.begin(), bad.end());
+  }
+  std::vector<uint8_t> localUnmoved;
+  std::vector<uint8_t>& unmoved = worklist ? worklist->unmoved : localUnmoved;
+  if (!(worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees))
+    unmoved.clear();
+  unmoved.resize(static_cast<size_t>(mesh.numVertices()), 0);
+  // The tets in `tets` changed: their vertices' smoothing may find a move again.
+  auto changed = [&](const std::vector<int32_t>& tets)
+  {
+    for (int32_t u : tets)
+      for (int i = 0; i < 4; ++i)
+        unmoved[mesh.vertex(u, i)] = 0;
+  };
+  if (worklist)
+    worklist->valid = false; // until this call ends
   auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out)
   {
     candidates.clear();
@@ -407,6 +431,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       {
         ++changes;
         touched.insert(touched.end(), created.begin(), created.end());
+        changed(created);
         for (int32_t u : created)
           if (tetQ(mesh, u) < qT)
             queue.push_back(u);
@@ -422,13 +447,20 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       std::sort(verts.begin(), verts.end());
       verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
       for (int32_t v : verts)
-        if (!lock[v] && smoothVertex(editor, v, options.smoothingOptions) != SmoothMove::None)
+      {
+        if (lock[v] || unmoved[v])
+          continue;
+        if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
         {
-          ++report.smoothMoves;
-          ++changes;
-          editor.star(v, star);
-          touched.insert(touched.end(), star.begin(), star.end());
+          unmoved[v] = 1;
+          continue;
         }
+        ++report.smoothMoves;
+        ++changes;
+        editor.star(v, star);
+        touched.insert(touched.end(), star.begin(), star.end());
+        changed(star);
+      }
     }
     // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
     // target (worst first), e.g. recovery's Steiner points pinned against nearly coplanar boundary faces.
@@ -450,6 +482,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
             ++report.vertexRemovals;
             ++changes;
             touched.insert(touched.end(), created.begin(), created.end());
+            changed(created);
             break;
           }
       }
@@ -460,6 +493,12 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
       break;
   }
   report.belowTargetAfter = static_cast<int64_t>(bad.size());
+  if (worklist)
+  {
+    worklist->below = bad;
+    worklist->targetDegrees = options.targetDegrees;
+    worklist->valid = true;
+  }
   if (options.summaries)
     report.after = summarizeDihedrals(mesh, options.threads);
   report.minDihedralAfter =

@@ -36,6 +36,7 @@
 #include "TetMesh.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace volgrid
@@ -95,11 +96,25 @@ struct OptimizationReport
   double seconds = 0;
 };
 
+// The tets below the target as a call of optimizeMesh leaves them, for the next call on the same mesh:
+// a series of calls with the same target and nothing else editing the mesh between them then sweeps the
+// mesh once, not once per call. The caller clears it (valid = false) when anything else edits the mesh.
+struct OptimizationWorklist
+{
+  bool valid = false;
+  double targetDegrees = 0;
+  std::vector<std::pair<double, int32_t>> below; // (sine quality, tet), sorted
+  // 1 for a vertex whose smoothing found no move and none of whose tets changed since: smoothing it again
+  // would find none either (its outcome depends only on its star), so it is skipped.
+  std::vector<uint8_t> unmoved;
+};
+
 // Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot
-// labels kept in step. Errors: InvalidOption (ghost tets, bad options), Cancelled.
+// labels kept in step. worklist (optional): used when valid for options.targetDegrees instead of a sweep,
+// and left valid for the next call. Errors: InvalidOption (ghost tets, bad options), Cancelled.
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
                     std::vector<int32_t>* labels, const OptimizationOptions& options, Progress* progress = nullptr,
-                    OptimizationReport* report = nullptr);
+                    OptimizationReport* report = nullptr, OptimizationWorklist* worklist = nullptr);
 
 // Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
 // of the worst tet of the affected region; created receives the new tets.

@@ -15,7 +15,8 @@ namespace
 struct Scratch
 {
   std::vector<int32_t> star, nbrs;
-  std::vector<double> q;
+  std::vector<double> q, qAt; // star qualities (star order) at the current and at a trial position
+  std::vector<int32_t> order; // star indices, worst tet first
 };
 
 inline double tetQ(const TetMesh& m, int32_t t)
@@ -24,12 +25,16 @@ inline double tetQ(const TetMesh& m, int32_t t)
   return tetSineQuality(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]));
 }
 
-double starMin(const TetMesh& m, const std::vector<int32_t>& star)
+// The visiting order of tryPosition: the star's tets by quality at the current position, worst first
+// (ties by index). A trial position mostly fails at a tet that is already bad, so the scan stops early;
+// the order changes no decision (the minimum over the whole star is the same in any order).
+void rankStar(Scratch& s)
 {
-  double q = 2.0;
-  for (int32_t t : star)
-    q = std::min(q, tetQ(m, t));
-  return q;
+  s.order.resize(s.star.size());
+  for (size_t i = 0; i < s.order.size(); ++i)
+    s.order[i] = static_cast<int32_t>(i);
+  std::sort(s.order.begin(), s.order.end(),
+            [&](int32_t a, int32_t b) { return s.q[a] < s.q[b] || (s.q[a] == s.q[b] && a < b); });
 }
 
 bool starPositive(const TetMesh& m, const std::vector<int32_t>& star)
@@ -44,23 +49,25 @@ bool starPositive(const TetMesh& m, const std::vector<int32_t>& star)
 }
 
 // Star minimum with v at x (written into the mesh, then restored to `home`); -2 when a tet is not
-// strictly positive (exact). Only a result above `floor` is used: the scan stops at the first tet at or
-// below it (most trial positions fail there) and returns that tet's quality.
-double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, const std::vector<int32_t>& star,
-                   double floor)
+// strictly positive (exact). Only a result above `floor` is used: the scan (in s.order) stops at the
+// first tet at or below it (most trial positions fail there) and returns that tet's quality. A result
+// above `floor` has every tet's quality at x in s.qAt (star order).
+double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, Scratch& s, double floor)
 {
   double* p = m.points.data() + 3 * static_cast<size_t>(v);
   p[0] = x[0];
   p[1] = x[1];
   p[2] = x[2];
+  s.qAt.resize(s.star.size());
   double q = 2.0;
-  for (int32_t t : star)
+  for (int32_t i : s.order)
   {
-    q = std::min(q, tetQ(m, t));
+    s.qAt[i] = tetQ(m, s.star[i]);
+    q = std::min(q, s.qAt[i]);
     if (q <= floor)
       break;
   }
-  if (q > floor && q > 0 && !starPositive(m, star)) // the exact test only for a position that would count
+  if (q > floor && q > 0 && !starPositive(m, s.star)) // the exact test only for a position that would count
     q = -2;
   p[0] = home[0];
   p[1] = home[1];
@@ -100,7 +107,13 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
   editor.star(v, s.star);
   if (s.star.empty())
     return SmoothMove::None;
-  const double q0 = starMin(m, s.star);
+  s.q.resize(s.star.size());
+  double q0 = 2.0;
+  for (size_t i = 0; i < s.star.size(); ++i)
+  {
+    s.q[i] = tetQ(m, s.star[i]);
+    q0 = std::min(q0, s.q[i]);
+  }
   if (sineQualityToDegrees(q0) >= options.belowDegrees)
     return SmoothMove::None;
   editor.neighbors(v, s.star, s.nbrs);
@@ -124,7 +137,8 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
   c[1] *= inv;
   c[2] *= inv;
   scale *= inv;
-  const double qL = tryPosition(m, v, c, home, s.star, q0);
+  rankStar(s);
+  const double qL = tryPosition(m, v, c, home, s, q0);
   if (qL > q0)
   {
     setPoint(m, v, c);
@@ -140,10 +154,8 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
   const double eps = 1e-7 * scale;
   for (int it = 0; it < options.optimizeIterations; ++it)
   {
-    // Nearly-worst tets and their quality gradients.
-    s.q.resize(s.star.size());
-    for (size_t i = 0; i < s.star.size(); ++i)
-      s.q[i] = tetQ(m, s.star[i]);
+    // Nearly-worst tets and their quality gradients (s.q: the star at x, from the start or from the
+    // accepted trial).
     const double tol = std::max(1e-3, 0.02 * std::fabs(qCur));
     double dir[3] = { 0, 0, 0 }, gWorst[3] = { 0, 0, 0 };
     size_t worst = 0;
@@ -179,9 +191,11 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
       for (int ls = 0; ls < 10; ++ls, h *= 0.5)
       {
         const double y[3] = { x[0] + h * d[0] / dn, x[1] + h * d[1] / dn, x[2] + h * d[2] / dn };
-        const double qy = tryPosition(m, v, y, x, s.star, qCur);
+        const double qy = tryPosition(m, v, y, x, s, qCur);
         if (qy > qCur)
         {
+          std::swap(s.q, s.qAt);
+          rankStar(s);
           x[0] = y[0];
           x[1] = y[1];
           x[2] = y[2];

@@ -1,0 +1,216 @@
+#include "DomainSizing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace volgrid
+{
+
+namespace
+{
+// A sizing field sampled on an adaptive octree over a box, with trilinear interpolation in the leaves.
+// Field points query the size at tet centroids in an order that jumps around the domain, and each query
+// of the background interpolant walks its mesh from the previous one; the octree is built with coherent
+// queries (children next to their parent) and answers in O(depth). A cell is split while it is larger
+// than 1.5 times the smallest size at its corners and centre, so leaves are about the local size and
+// the interpolation follows the field closely.
+class OctreeSizing
+{
+public:
+  void build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells)
+  {
+    std::copy(lo, lo + 3, lo_);
+    size_ = size;
+    cells_.assign(1, Cell());
+    std::vector<std::array<double, 3>> origin = { { lo[0], lo[1], lo[2] } };
+    std::vector<int> depthOf = { 0 };
+    for (int k = 0; k < 8; ++k)
+    {
+      const double p[3] = { lo[0] + ((k & 1) ? size : 0), lo[1] + ((k & 2) ? size : 0), lo[2] + ((k & 4) ? size : 0) };
+      cells_[0].h[k] = static_cast<float>(field.evaluate(p));
+    }
+    float grid[27];
+    // Breadth first: cells are appended in groups of eight siblings, so the queue is the cell array.
+    for (size_t c = 0; c < cells_.size(); ++c)
+    {
+      const int depth = depthOf[c];
+      const double cs = size / static_cast<double>(1u << depth);
+      const std::array<double, 3> o = origin[c];
+      const double centre[3] = { o[0] + cs / 2, o[1] + cs / 2, o[2] + cs / 2 };
+      const double hc = field.evaluate(centre);
+      double hmin = hc;
+      for (int k = 0; k < 8; ++k)
+        hmin = std::min(hmin, static_cast<double>(cells_[c].h[k]));
+      if (!(depth < maxDepth && cs > 1.5 * hmin && cells_.size() + 8 <= maxCells))
+        continue;
+      // The 3x3x3 lattice of the children's corners: the parent's corners and centre are known.
+      for (int l = 0; l < 27; ++l)
+      {
+        const int i = l % 3, j = (l / 3) % 3, m = l / 9;
+        if (i != 1 && j != 1 && m != 1)
+          grid[l] = cells_[c].h[(i / 2) | ((j / 2) << 1) | ((m / 2) << 2)];
+        else if (i == 1 && j == 1 && m == 1)
+          grid[l] = static_cast<float>(hc);
+        else
+        {
+          const double p[3] = { o[0] + i * cs / 2, o[1] + j * cs / 2, o[2] + m * cs / 2 };
+          grid[l] = static_cast<float>(field.evaluate(p));
+        }
+      }
+      const int32_t first = static_cast<int32_t>(cells_.size());
+      cells_[c].child = first;
+      for (int k = 0; k < 8; ++k)
+      {
+        const int bx = k & 1, by = (k >> 1) & 1, bz = (k >> 2) & 1;
+        Cell child;
+        for (int n = 0; n < 8; ++n)
+          child.h[n] = grid[(bx + (n & 1)) + 3 * (by + ((n >> 1) & 1)) + 9 * (bz + ((n >> 2) & 1))];
+        cells_.push_back(child);
+        origin.push_back({ o[0] + bx * cs / 2, o[1] + by * cs / 2, o[2] + bz * cs / 2 });
+        depthOf.push_back(depth + 1);
+      }
+    }
+  }
+  double evaluate(const double* p) const
+  {
+    double u[3];
+    for (int k = 0; k < 3; ++k)
+      u[k] = std::clamp((p[k] - lo_[k]) / size_, 0.0, 1.0);
+    int32_t c = 0;
+    while (cells_[c].child >= 0)
+    {
+      int k = 0;
+      for (int a = 0; a < 3; ++a)
+      {
+        u[a] *= 2;
+        if (u[a] >= 1)
+        {
+          k |= 1 << a;
+          u[a] -= 1;
+        }
+      }
+      c = cells_[c].child + k;
+    }
+    const float* h = cells_[c].h;
+    double r = 0;
+    for (int k = 0; k < 8; ++k)
+      r += h[k] * ((k & 1) ? u[0] : 1 - u[0]) * ((k & 2) ? u[1] : 1 - u[1]) * ((k & 4) ? u[2] : 1 - u[2]);
+    return r;
+  }
+  size_t cells() const { return cells_.size(); }
+
+private:
+  struct Cell
+  {
+    float h[8];
+    int32_t child = -1;
+  };
+  std::vector<Cell> cells_;
+  double lo_[3] = { 0, 0, 0 };
+  double size_ = 1;
+};
+
+} // namespace
+
+Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const ImprovementOptions& options,
+                         SizingField& fast, ImprovementStatistics& stats, Progress* progress)
+{
+  SizingField sizing;
+  std::shared_ptr<OctreeSizing> octree;
+  const size_t nCluster = options.clusterPoints.size() / 3;
+  Status s;
+  if (options.sizingFunction)
+    sizing.setUserFunction(options.sizingFunction);
+  if (!options.sizingPoints.empty())
+    sizing.setBackgroundCloud(options.sizingPoints.data(), options.sizingValues.data(), options.sizingValues.size());
+  if (!options.clusterSizes.empty())
+    sizing.addSizedPoints(options.clusterPoints.data(), options.clusterSizes.data(), nCluster);
+  if (options.fieldPoints)
+  {
+    // The boundary points with their PDF (eq. 3) become sized nodes, each moved by a millionth of its
+    // own PDF: the background Delaunay of the sizing field then sees no cospherical or coplanar sets
+    // (spheres, boxes), which would send every insphere test to exact arithmetic, and the interpolated
+    // sizes change by a negligible amount. The mesh itself is untouched.
+    const std::vector<double> pdf = pointDistributionFunction(surface.points.data(), surface.numberOfPoints(),
+                                                              surface.triangles.data(), surface.numberOfTriangles());
+    std::vector<double> xyz, h;
+    xyz.reserve(surface.points.size());
+    h.reserve(pdf.size());
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (int32_t i = 0; i < surface.numberOfPoints(); ++i)
+    {
+      if (!(pdf[i] > 0))
+        continue;
+      for (int k = 0; k < 3; ++k)
+      {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        const double u = static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0) - 0.5; // [-0.5, 0.5)
+        xyz.push_back(surface.points[3 * static_cast<size_t>(i) + k] + 2e-6 * u * pdf[i]);
+      }
+      h.push_back(pdf[i] * options.sizing.scale);
+    }
+    // Growth away from the boundary: a jittered lattice of nodes over the bounding box with an
+    // unbounded size. The gradation limit (Dijkstra over the background Delaunay edges) then gives each
+    // one min over the boundary nodes u of h(u) + (G - 1) * path length, so the size grows away from
+    // the boundary at the gradation's rate instead of staying at the boundary spacing inside thick
+    // bodies (the plain interpolation of eq. 3's PDF between opposite sides of a body).
+    if (options.sizing.gradation > 1 && !h.empty())
+    {
+      double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+      for (size_t i = 0; i < h.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::min(lo[k], xyz[3 * i + k]);
+          hi[k] = std::max(hi[k], xyz[3 * i + k]);
+        }
+      const double ext = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+      // About (nodes / 4) lattice nodes, at most 24 per axis: a tenth of the work of the field points.
+      const double cells = std::clamp(std::cbrt(static_cast<double>(h.size()) / 4.0), 2.0, 24.0);
+      const double step = ext / cells;
+      const double unbounded = 4 * ext + 1;
+      const size_t nBoundary = h.size();
+      for (double x = lo[0] + step / 2; x < hi[0]; x += step)
+        for (double y = lo[1] + step / 2; y < hi[1]; y += step)
+          for (double z = lo[2] + step / 2; z < hi[2]; z += step)
+          {
+            const double c[3] = { x, y, z };
+            for (int k = 0; k < 3; ++k)
+            {
+              state = state * 6364136223846793005ull + 1442695040888963407ull;
+              const double u = static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0) - 0.5;
+              xyz.push_back(c[k] + 0.3 * u * step);
+            }
+            h.push_back(unbounded);
+          }
+      stats.latticeNodes = static_cast<int64_t>(h.size() - nBoundary);
+    }
+    sizing.addSizedPoints(xyz.data(), h.data(), h.size());
+    s = sizing.build(nullptr, 0, nullptr, 0, options.sizing, progress);
+    if (!s.ok())
+      return s;
+    // The field points query the octree sampling of this field (see OctreeSizing).
+    double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+    for (size_t i = 0; i < mesh.points.size(); i += 3)
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::min(lo[k], mesh.points[i + k]);
+        hi[k] = std::max(hi[k], mesh.points[i + k]);
+      }
+    const double ext = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] }) * 1.001 + 1e-300;
+    octree = std::make_shared<OctreeSizing>();
+    octree->build(sizing, lo, ext, 18, std::max<size_t>(1u << 20, 16 * static_cast<size_t>(mesh.numVertices())));
+    std::shared_ptr<const OctreeSizing> tree = octree;
+    SizingOptions uniformOptions = options.sizing;
+    uniformOptions.gradation = 1; // no sized points in the outer field: nothing to grade
+    fast.setUserFunction([tree](const double* p) { return tree->evaluate(p); });
+    s = fast.buildUniform(std::numeric_limits<double>::max(), uniformOptions);
+    if (!s.ok())
+      return s;
+  }
+  return Status::success();
+}
+
+} // namespace volgrid

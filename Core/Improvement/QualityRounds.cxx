@@ -1,0 +1,277 @@
+#include "QualityRounds.h"
+
+#include "BadTetSplitting.h"
+#include "InsertionImprovement.h"
+#include "MeshScan.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace volgrid
+{
+
+namespace
+{
+// The worst tet's min(theta_min, 180 - theta_max) in degrees (a sweep on `threads`, MeshScan.h).
+double worstSineDegrees(const TetMesh& mesh, int threads)
+{
+  return sineQualityToDegrees(minSineQuality(mesh, threads));
+}
+
+int64_t countBelow(const TetMesh& mesh, double degrees, int threads)
+{
+  return countSineBelow(mesh, std::sin(degrees * 3.14159265358979323846 / 180.0), threads);
+}
+
+// Whether a tet under `degrees` has a vertex on no constrained face and not locked by the caller: only
+// then can a vertex collapse touch the worst tets.
+bool hasUnlockedVertexBelow(TetMesh& mesh, const FaceConstraints& fc, const std::vector<uint8_t>& extraLock,
+                            double degrees)
+{
+  TetEditor probe(mesh, &fc, nullptr);
+  probe.rebuildVertexMap();
+  const std::vector<uint8_t> lock = probe.lockedVertices();
+  const double q = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  bool found = false;
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = mesh.vertices(t);
+      if (found || !(tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q))
+        return;
+      for (int i = 0; i < 4; ++i)
+        if (!lock[v[i]] && !(static_cast<size_t>(v[i]) < extraLock.size() && extraLock[v[i]]))
+          found = true;
+    });
+  return found;
+}
+
+} // namespace
+
+QualityRounds::QualityRounds(TetMesh& mesh_, const FaceConstraints& fc, const std::vector<uint8_t>& clusterLock,
+                             std::vector<int32_t>& tetRegion_, const ImprovementOptions& options_,
+                             ImprovementStatistics& stats_, Progress* progress_)
+  : mesh(mesh_)
+  , fc_(fc)
+  , clusterLock_(clusterLock)
+  , tetRegion(tetRegion_)
+  , options(options_)
+  , stats(stats_)
+  , progress(progress_)
+  , one_(options_.optimization)
+{
+  one_.threads = options.threads;
+  one_.maxPasses = 1;
+  one_.vertexRemoval = false; // a second attempt, withCollapseRerun
+  one_.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
+}
+
+Status QualityRounds::run()
+{
+  Status s = withCollapseRerun();
+  if (!s.ok())
+    return s;
+  s = speculativeRounds();
+  if (!s.ok())
+    return s;
+  insertionRounds();
+  return Status::success();
+}
+
+Status QualityRounds::optimise(int maxPasses)
+{
+  OptimizationWorklist worklist; // one sweep for the series of calls below (nothing else edits between)
+  for (int pass = 0; pass < maxPasses; pass += one_.maxPasses)
+  {
+    one_.maxPasses = pass == 0 ? std::min(3, maxPasses) : 1;
+    OptimizationReport orep;
+    Status os = optimizeMesh(mesh, &fc_, locked(), &tetRegion, one_, progress, &orep, &worklist);
+    if (!os.ok())
+      return os;
+    stats.after.minDihedral = orep.minDihedralAfter; // what the rounds below decide on (summary: at the end)
+    stats.optimizationPasses += orep.passes;
+    stats.flips += orep.flips23 + orep.edgeRemovals;
+    stats.smoothMoves += orep.smoothMoves;
+    const int64_t gained = orep.belowTargetBefore - orep.belowTargetAfter;
+    const bool minImproved = orep.minDihedralAfter > orep.minDihedralBefore + 1.0;
+    if (orep.belowTargetAfter == 0 || orep.passes == 0 || (gained <= orep.belowTargetBefore / 50 && !minImproved))
+      break;
+  }
+  return Status::success();
+}
+
+// Beyond the target the mesh's minimum is decided by its few worst tets: while it pays, aim a little
+// above the current worst (flips, smoothing and splitting touch only the tets below the aim and accept
+// strict improvements only), so a mesh already past the target still gets better where it is worst.
+Status QualityRounds::floorRounds()
+{
+  for (int round = 0; round < options.floorRounds; ++round)
+  {
+    if (progress && progress->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+    const double worst = worstSineDegrees(mesh, options.threads);
+    if (!(worst > 0) || worst >= 60)
+      break;
+    one_.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+    // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
+    if (countBelow(mesh, one_.targetDegrees, options.threads) > std::max<int64_t>(64, mesh.numTets() / 200))
+      break;
+    Status fs = optimise(2);
+    if (!fs.ok())
+      return fs;
+    stats.splitPoints += splitBadTets(mesh, &fc_, &tetRegion, one_.targetDegrees, 64);
+    fs = optimise(1);
+    if (!fs.ok())
+      return fs;
+    if (worstSineDegrees(mesh, options.threads) < worst + 0.05)
+      break;
+  }
+  return Status::success();
+}
+
+// The stage: optimisation, splitting of what it cannot fix, floor rounds.
+Status QualityRounds::optimiseSplitFloor()
+{
+  one_.targetDegrees = options.optimization.targetDegrees;
+  Status ps = optimise(options.optimization.maxPasses);
+  if (!ps.ok())
+    return ps;
+  // What optimisation cannot fix (slivers spanned by boundary vertices): split by a point inside, then
+  // optimise again. At most splitRounds rounds.
+  for (int round = 0; round < options.splitRounds && stats.after.minDihedral < options.optimization.targetDegrees;
+       ++round)
+  {
+    if (progress && progress->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+    const int64_t n = splitBadTets(mesh, &fc_, &tetRegion, options.optimization.targetDegrees,
+                                   std::max<int64_t>(200, mesh.numTets() / 20));
+    stats.splitPoints += n;
+    if (n == 0)
+      break;
+    const double minBefore = stats.after.minDihedral;
+    Status ps = optimise(std::min(3, options.optimization.maxPasses));
+    if (!ps.ok())
+      return ps;
+    if (stats.after.minDihedral < minBefore + 0.1)
+      break;
+  }
+  return floorRounds();
+}
+
+// Vertex collapses (optimization.vertexRemoval) are a second attempt, from the same start, when the
+// worst tet stays under vertexRemovalDegrees (typically recovery's Steiner points pinned against
+// nearly coplanar boundary faces, which no flip, move or added point opens); the better of the two
+// meshes is kept (collapses coarsen the mesh and change what later rounds reach: kept only when the
+// worst tet gets better).
+Status QualityRounds::withCollapseRerun()
+{
+  const bool removal = options.optimization.vertexRemoval;
+  TetMesh startMesh;
+  std::vector<int32_t> startRegion;
+  ImprovementStatistics startStats;
+  if (removal)
+  {
+    startMesh = mesh;
+    startRegion = tetRegion;
+    startStats = stats;
+  }
+  Status s = optimiseSplitFloor();
+  if (!s.ok())
+    return s;
+  const double worstKept = worstSineDegrees(mesh, options.threads);
+  const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
+  if (removal && worstKept < removalDegrees && hasUnlockedVertexBelow(mesh, fc_, clusterLock_, removalDegrees))
+  {
+    TetMesh keptMesh = std::move(mesh);
+    std::vector<int32_t> keptRegion = std::move(tetRegion);
+    const ImprovementStatistics keptStats = stats;
+    mesh = std::move(startMesh);
+    tetRegion = std::move(startRegion);
+    stats = startStats;
+    one_.vertexRemoval = true;
+    s = optimiseSplitFloor();
+    if (!s.ok())
+      return s;
+    one_.vertexRemoval = false;
+    if (!(worstSineDegrees(mesh, options.threads) > worstKept))
+    {
+      mesh = std::move(keptMesh);
+      tetRegion = std::move(keptRegion);
+      stats = keptStats;
+    }
+  }
+  return Status::success();
+}
+
+// Small meshes (a few boundary triangles, few or no field points) often end as a tie with any
+// Delaunay-based mesher: no single flip, move or improving insertion helps. Speculative rounds insert
+// the best point found for the worst tet, optimise around it, and keep the result only when the
+// mesh's worst tet got better (else the mesh is restored: a copy is cheap at this size, and the next
+// bad tet is tried).
+// With many tets below the aim (a surface whose own triangles force bad tets, e.g. falcon1.stl: 10%
+// under 10 deg) a round costs a full optimisation of all of them: fewer rounds then.
+Status QualityRounds::speculativeRounds()
+{
+  Status s;
+  constexpr int64_t kSpeculativeMaxBad = 32;
+  constexpr int kSpeculativeRoundsManyBad = 4;
+  int rounds = options.speculativeRounds;
+  for (int round = 0, skip = 0; round < rounds && mesh.numTets() <= 5000; ++round)
+  {
+    const double worst = worstSineDegrees(mesh, options.threads);
+    if (!(worst > 0) || worst >= 60)
+      break;
+    if (countBelow(mesh, std::max(worst + 2.0, options.optimization.targetDegrees), options.threads) >
+        kSpeculativeMaxBad)
+      rounds = std::min(rounds, kSpeculativeRoundsManyBad);
+    const TetMesh savedMesh = mesh;
+    const std::vector<int32_t> savedRegion = tetRegion;
+    const DihedralSummary savedAfter = stats.after;
+    one_.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+    // Up to three points (each for the worst tet after the previous one), judged after each.
+    int64_t n = 0;
+    bool improved = false;
+    for (int depth = 0; depth < 3 && !improved; ++depth)
+    {
+      const int64_t k =
+        splitBadTets(mesh, &fc_, &tetRegion, one_.targetDegrees, 1, true, depth == 0 ? static_cast<size_t>(skip) : 0);
+      if (k == 0)
+        break;
+      n += k;
+      s = optimise(3);
+      if (!s.ok())
+        return s;
+      improved = worstSineDegrees(mesh, options.threads) > worst + 0.01;
+    }
+    if (improved)
+    {
+      stats.splitPoints += n;
+      skip = 0;
+      continue;
+    }
+    mesh = savedMesh;
+    tetRegion = savedRegion;
+    stats.after = savedAfter;
+    if (countBelow(mesh, one_.targetDegrees, options.threads) <= ++skip)
+      break;
+  }
+  return Status::success();
+}
+
+// What is still worst (typically tets of four boundary vertices on a needle triangle in a thin wedge,
+// on any mesh size): a point inserted for it, flipped and smoothed around, kept only when its region's
+// worst tet improves.
+void QualityRounds::insertionRounds()
+{
+  if (options.insertionRounds > 0)
+  {
+    InsertionImprovementOptions io;
+    io.rounds = options.insertionRounds;
+    io.plateauDegrees = options.optimization.targetDegrees;
+    io.threads = options.threads;
+    const int64_t kept = improveWorstByInsertion(mesh, &fc_, locked(), &tetRegion, io);
+    stats.splitPoints += kept;
+  }
+}
+
+} // namespace volgrid

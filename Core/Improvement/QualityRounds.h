@@ -1,0 +1,54 @@
+// The quality stage's rounds after the field points (MeshImprovement.h step 4), one member per kind of
+// round, sharing the mesh, the constraints, the labels and the statistics of the stage:
+//   optimise            flips, edge removal, smoothing (MeshOptimization.h) while a pass pays
+//   optimiseSplitFloor  optimisation, splitting of what it cannot fix (BadTetSplitting.h), floor rounds
+//   withCollapseRerun   optimiseSplitFloor, and again from the same start with vertex collapses when the
+//                       worst tet stays low; the better mesh is kept
+//   speculativeRounds   small meshes: a point for the worst tet, kept only when the worst tet improves
+//   insertionRounds     vertex insertion for the worst tets (InsertionImprovement.h)
+// run() is all of them in that order. Every round changes only unconstrained faces and moves no vertex of
+// a constrained face or of clusterLock; stats.after.minDihedral follows the rounds (the full summary is
+// the caller's, once at the end).
+#pragma once
+
+#include "MeshImprovement.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace volgrid
+{
+
+class QualityRounds
+{
+public:
+  QualityRounds(TetMesh& mesh, const FaceConstraints& fc, const std::vector<uint8_t>& clusterLock,
+                std::vector<int32_t>& tetRegion, const ImprovementOptions& options, ImprovementStatistics& stats,
+                Progress* progress);
+
+  // Every round in order. Errors: Cancelled, or optimizeMesh's.
+  Status run();
+
+  // Up to maxPasses optimisation passes towards one_.targetDegrees: the first call of a series runs up
+  // to three passes, then one pass per call while a pass still pays.
+  Status optimise(int maxPasses);
+  Status floorRounds();
+  Status optimiseSplitFloor();
+  Status withCollapseRerun();
+  Status speculativeRounds();
+  void insertionRounds();
+
+private:
+  const std::vector<uint8_t>* locked() const { return clusterLock_.empty() ? nullptr : &clusterLock_; }
+
+  TetMesh& mesh;
+  const FaceConstraints& fc_;
+  const std::vector<uint8_t>& clusterLock_;
+  std::vector<int32_t>& tetRegion;
+  const ImprovementOptions& options;
+  ImprovementStatistics& stats;
+  Progress* progress;
+  OptimizationOptions one_; // the options of the next optimisation call (target, vertex removal)
+};
+
+} // namespace volgrid
