@@ -190,7 +190,7 @@ bool parseArguments(int argc, char** argv, Arguments& args)
     else if (a == "--help" || a == "-h")
     {
       std::fputs(kUsage.c_str(), stdout);
-      std::fputs(volgrid::cli::kLayerUsage, stdout);
+      std::fputs(volgrid::cli::kLayerUsage.c_str(), stdout);
       std::fputs(volgrid::cli::kExportUsage, stdout);
       std::exit(0);
     }

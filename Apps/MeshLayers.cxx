@@ -25,14 +25,13 @@ namespace volgrid
 {
 namespace cli
 {
-const char* const kLayerUsage =
-  "Boundary layers (prisms on the wall patches, conformal with the tets):\n"
-  "  --layers N           number of prism layers (0: none)\n"
-  "  --first-height H     height of the layer on the wall\n"
+const std::string kLayerUsage =
+  std::string("Boundary layers (prisms on the wall patches, conformal with the tets):\n") +
+  optionUsage(option::layers, "N") + optionUsage(option::firstHeight, "H") +
   "  --y-plus Y --reynolds RE --reference-length L\n"
   "                       instead of --first-height: the height of y+ = Y on a flat plate of length L at\n"
-  "                       Reynolds number RE (Cf = 0.026 / RE^(1/7))\n"
-  "  --growth R           ratio between consecutive layer heights (>= 1, default 1.2)\n"
+  "                       Reynolds number RE (Cf = 0.026 / RE^(1/7))\n" +
+  optionUsage(option::growth, "R") +
   "  --layer-patches A,B  layered patches by name or id (default: every patch whose OpenFOAM type is wall)\n"
   "  --split-prisms       each prism as 3 tets (needed for the solver formats other than gmsh .msh)\n";
 
@@ -63,22 +62,17 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
         options.patchNames.push_back(name);
     return 1;
   }
+  double x = 0;
+  const OptionSpec* spec = nullptr; // layers, first-height, growth: the table's ranges and messages
+  for (const OptionSpec* row : option::layerTable)
+    spec = a.substr(2) == row->name ? row : spec;
+  if (spec ? !parseOption("mesh", *spec, v, x) : !parseDouble("mesh", a.c_str(), v, x))
+    return -1;
   if (a == "--layers")
   {
-    long long n = 0;
-    if (!parseLong("mesh", a.c_str(), v, n))
-      return -1;
-    if (n < 0 || n > 1000)
-    {
-      std::fprintf(stderr, "volgrid mesh: --layers is out of range (0..1000): %s\n", v);
-      return -1;
-    }
-    options.layers = static_cast<int>(n);
+    options.layers = static_cast<int>(x);
     return 1;
   }
-  double x = 0;
-  if (!parseDouble("mesh", a.c_str(), v, x))
-    return -1;
   (a == "--growth"               ? options.growth
      : a == "--y-plus"           ? options.yPlus
      : a == "--reynolds"         ? options.reynolds

@@ -17,7 +17,7 @@ namespace cli
 // is not a layer option, -1 on a bad value (message printed).
 int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options);
 
-extern const char* const kLayerUsage;
+extern const std::string kLayerUsage; // usage text, numbers from OptionTable.h
 
 // Meshes with layers and writes OUT (.vtu/.vtk; solver formats need splitPrisms). Returns the exit code.
 int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, const std::string& out,

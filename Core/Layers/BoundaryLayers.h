@@ -15,6 +15,7 @@
 // vertex (no fans at sharp convex edges); every column has all the layers (thinning scales heights).
 #pragma once
 
+#include "OptionTable.h"
 #include "Progress.h"
 #include "Status.h"
 #include "SurfaceMesh.h"
@@ -28,9 +29,10 @@ namespace volgrid
 
 struct LayerOptions
 {
-  int layers = 0;                      // number of prism layers; 0 = no layers
-  double firstHeight = 0;              // height of the layer on the wall
-  double growth = 1.2;                 // ratio between consecutive layer heights (>= 1)
+  // Defaults and valid ranges: OptionTable.h's layers, firstHeight, growth rows.
+  int layers = static_cast<int>(option::layers.defaultValue); // number of prism layers; 0 = no layers
+  double firstHeight = option::firstHeight.defaultValue;      // height of the layer on the wall
+  double growth = option::growth.defaultValue;                // ratio between consecutive layer heights
   std::vector<int32_t> patchIds;       // layered patches by id; with patchNames empty too: every wall patch
   std::vector<std::string> patchNames; // layered patches by name
   // Instead of firstHeight: the height of a target y+ at a Reynolds number on a reference length

@@ -85,7 +85,7 @@ expect(r.returncode == 0 and abs(json.loads(r.stdout)["first_height"] / 2.35288e
 
 bad = [(["--layers", "3", "--first-height", "1e-3", "--y-plus", "1", "--reynolds", "1e6", "--reference-length", "1"],
         "not both"),
-       (["--layers", "10", "--first-height", "-1e-3"], "first layer height"),
+       (["--layers", "10", "--first-height", "-1e-3"], "--first-height is out of range"),
        (["--layers", "10", "--first-height", "1e-3", "--growth", "0.5"], "growth"),
        (["--layers", "10", "--first-height", "5", "--growth", "1"], "more than the domain allows"),
        (["--first-height", "1e-3"], "need --layers"),

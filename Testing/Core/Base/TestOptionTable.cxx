@@ -175,3 +175,21 @@ TEST(OptionTable, DefaultsAndSlidersLieInTheValidRange)
   EXPECT_EQ(option::targetAngle.rangeText(), "(0, 60]");
   EXPECT_EQ(option::alpha.rangeText(), "(0, inf)");
 }
+
+// The boundary-layer rows: valid defaults (first-height's 0 means "not given": y+ instead), integer layers,
+// and not found by findOption, whose rows the mesh command sets on the improvement options.
+TEST(OptionTable, LayerRows)
+{
+  EXPECT_TRUE(option::layers.valid(option::layers.defaultValue));
+  EXPECT_TRUE(option::growth.valid(option::growth.defaultValue));
+  EXPECT_FALSE(option::firstHeight.valid(0));
+  EXPECT_FALSE(option::layers.valid(2.5));
+  EXPECT_FALSE(option::layers.valid(option::layers.maximum + 1));
+  EXPECT_FALSE(option::growth.valid(0.99));
+  EXPECT_EQ(option::growth.rangeText(), "[1, inf)");
+  for (const OptionSpec* spec : option::layerTable)
+  {
+    EXPECT_EQ(findOption(spec->name), nullptr) << spec->name;
+    EXPECT_EQ(findOptionByProperty(spec->property), nullptr) << spec->property;
+  }
+}
