@@ -4,22 +4,18 @@
 #include "CliSupport.h"
 #include "XmlDataFiles.h"
 
+#include "VolGridLayeredConversion.h"
+
 #include "LayeredMesher.h"
 #include "Predicates.h"
 
-#include "vtkCellData.h"
-#include "vtkCellType.h"
-#include "vtkIntArray.h"
-#include "vtkNew.h"
-#include "vtkPoints.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridWriter.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <sstream>
 
 namespace volgrid
 {
@@ -54,12 +50,7 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
   const char* v = argv[++i];
   if (a == "--layer-patches")
   {
-    std::stringstream list(v);
-    for (std::string name; std::getline(list, name, ',');)
-      if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos && name.size() < 10)
-        options.patchIds.push_back(std::atoi(name.c_str())); // a patch id (Medit ref, gmsh tag)
-      else if (!name.empty())
-        options.patchNames.push_back(name);
+    addLayerPatches(v, options);
     return 1;
   }
   double x = 0;
@@ -83,44 +74,10 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
 
 namespace
 {
-// VTK's wedge has its first triangle's normal pointing away from the second: reverse both triangles.
-vtkNew<vtkUnstructuredGrid> toVtk(const LayeredMeshResult& r)
+vtkSmartPointer<vtkUnstructuredGrid> toVtk(const LayeredMeshResult& r)
 {
-  vtkNew<vtkUnstructuredGrid> grid;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(r.points.size() / 3));
-  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
-    points->SetPoint(p, r.points.data() + 3 * p);
-  grid->SetPoints(points);
-  const vtkIdType wedges = static_cast<vtkIdType>(r.wedges.size() / 6),
-                  tets = static_cast<vtkIdType>(r.tets.size() / 4);
-  grid->Allocate(wedges + tets);
-  vtkNew<vtkIntArray> layer, region;
-  vtkNew<vtkUnsignedCharArray> reason;
-  layer->SetName("LayerIndex");
-  reason->SetName("ThinnedReason");
-  region->SetName("Region");
-  for (vtkIdType w = 0; w < wedges; ++w)
-  {
-    const int32_t* v = r.wedges.data() + 6 * w;
-    const vtkIdType ids[6] = { v[0], v[2], v[1], v[3], v[5], v[4] };
-    grid->InsertNextCell(VTK_WEDGE, 6, ids);
-    layer->InsertNextValue(r.wedgeLayer[w]);
-    reason->InsertNextValue(r.wedgeReason[w]);
-    region->InsertNextValue(0);
-  }
-  for (vtkIdType t = 0; t < tets; ++t)
-  {
-    const vtkIdType ids[4] = { r.tets[4 * t], r.tets[4 * t + 1], r.tets[4 * t + 2], r.tets[4 * t + 3] };
-    grid->InsertNextCell(VTK_TETRA, 4, ids);
-    layer->InsertNextValue(r.tetLayer[t]);
-    reason->InsertNextValue(r.tetReason[t]);
-    region->InsertNextValue(r.tetRegion[t]);
-  }
-  grid->GetCellData()->AddArray(layer);
-  grid->GetCellData()->AddArray(reason);
-  grid->GetCellData()->AddArray(region);
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  VolGridFillFromLayeredResult(r, grid, nullptr);
   return grid;
 }
 
@@ -200,7 +157,7 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
     std::fprintf(stderr, "volgrid mesh: %lld inverted cells: a bug, nothing written\n", (long long)inverted);
     return 1;
   }
-  if (vtkOutput && !writeVtk(out, toVtk(r)))
+  if (vtkOutput && !writeVtk(out, toVtk(r).Get()))
     return 1;
   if (!vtkOutput)
   {

@@ -4,6 +4,7 @@
 
 #include "VolGridConversion.h"
 #include "VolGridFilterProgress.h"
+#include "VolGridLayeredConversion.h"
 #include "VolGridMesherProgress.h"
 #include "VolGridParallel.h"
 #include "VolGridSurfaceConversion.h"
@@ -26,7 +27,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include "AvailableMemory.h"
+#include "BoundaryLayers.h"
 #include "Delaunay.h"
+#include "LayeredMesher.h"
 #include "MeshChecker.h"
 #include "Mesher.h"
 #include "OptionTable.h"
@@ -53,6 +56,11 @@ vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
   this->TargetMinDihedral = defaults.optimization.targetDegrees;
   this->MaxPasses = defaults.optimization.maxPasses;
   this->Smoothing = defaults.optimization.smoothing;
+  const volgrid::LayerOptions layerDefaults;
+  this->NumberOfLayers = layerDefaults.layers;
+  this->FirstLayerHeight = layerDefaults.firstHeight;
+  this->LayerGrowthRatio = layerDefaults.growth;
+  this->SplitPrisms = layerDefaults.splitPrisms;
 }
 
 namespace
@@ -83,12 +91,16 @@ VOLGRID_OPTION_SETTER(MaxEdgeLength, double, maxEdge)
 VOLGRID_OPTION_SETTER(MaxVolume, double, maxVolume)
 VOLGRID_OPTION_SETTER(TargetMinDihedral, double, targetAngle)
 VOLGRID_OPTION_SETTER(MaxPasses, int, passes)
+VOLGRID_OPTION_SETTER(NumberOfLayers, int, layers)
+VOLGRID_OPTION_SETTER(FirstLayerHeight, double, firstHeight)
+VOLGRID_OPTION_SETTER(LayerGrowthRatio, double, growth)
 #undef VOLGRID_OPTION_SETTER
 
 vtkVolGridTetrahedralize::~vtkVolGridTetrahedralize()
 {
   this->SetSourceSizeArray(nullptr);
   this->SetPatchAssignment(nullptr);
+  this->SetLayerPatches(nullptr);
 }
 
 void vtkVolGridTetrahedralize::SetSourceConnection(vtkAlgorithmOutput* output)
@@ -288,6 +300,8 @@ int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* source
       << " GiB available: refused before any work (choose a larger MaxEdgeLength, MaxVolume or SizeScale).");
     return 0;
   }
+  if (this->NumberOfLayers > 0)
+    return this->MeshWithLayers(surface, options, output, boundary);
   volgrid::MesherResult result;
   VolGridMesherProgress progress(this);
   const volgrid::Status status = volgrid::meshSurface(surface, options, result, &progress);
@@ -365,6 +379,38 @@ int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* source
   boundary->GetPointData()->RemoveArray("NonManifoldVertex");
   output->GetCellData()->SetActiveScalars("Region");
   boundary->GetCellData()->SetActiveScalars("PatchId");
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+int vtkVolGridTetrahedralize::MeshWithLayers(const volgrid::SurfaceMesh& surface, const volgrid::MesherOptions& options,
+                                             vtkUnstructuredGrid* output, vtkPolyData* boundary)
+{
+  if (this->PatchAssignment && *this->PatchAssignment)
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: PatchAssignment is not supported together with boundary layers yet.");
+    return 0;
+  }
+  volgrid::LayerOptions layers;
+  layers.layers = this->NumberOfLayers;
+  layers.firstHeight = this->FirstLayerHeight;
+  layers.growth = this->LayerGrowthRatio;
+  layers.splitPrisms = this->SplitPrisms;
+  if (this->LayerPatches)
+    volgrid::addLayerPatches(this->LayerPatches, layers);
+  volgrid::LayeredMeshResult result;
+  VolGridMesherProgress progress(this);
+  const volgrid::Status status = volgrid::meshSurfaceWithLayers(surface, options, layers, result, &progress);
+  if (!status.ok())
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: " << status.message);
+    return 0;
+  }
+  for (const std::string& warning : result.warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  VolGridFillFromLayeredResult(result, output, boundary);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -482,4 +528,9 @@ void vtkVolGridTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetMinDihedral: " << this->TargetMinDihedral << "\n";
   os << indent << "MaxPasses: " << this->MaxPasses << "\n";
   os << indent << "Smoothing: " << this->Smoothing << "\n";
+  os << indent << "NumberOfLayers: " << this->NumberOfLayers << "\n";
+  os << indent << "FirstLayerHeight: " << this->FirstLayerHeight << "\n";
+  os << indent << "LayerGrowthRatio: " << this->LayerGrowthRatio << "\n";
+  os << indent << "LayerPatches: " << (this->LayerPatches ? this->LayerPatches : "(none)") << "\n";
+  os << indent << "SplitPrisms: " << this->SplitPrisms << "\n";
 }

@@ -49,6 +49,11 @@ class vtkAlgorithmOutput;
 class vtkDataSet;
 class vtkPointSet;
 class vtkPolyData;
+namespace volgrid
+{
+struct MesherOptions;
+struct SurfaceMesh;
+}
 
 class VTKVOLGRIDFILTERS_EXPORT vtkVolGridTetrahedralize : public vtkUnstructuredGridAlgorithm
 {
@@ -236,6 +241,42 @@ public:
   vtkBooleanMacro(Smoothing, bool);
   ///@}
 
+  ///@{
+  /**
+   * Boundary layers: the number of prism layers grown from the wall patches (0, the default: none).
+   * With layers, output 0 holds VTK_WEDGE cells in the layers and VTK_TETRA cells elsewhere (cell arrays
+   * LayerIndex, ThinnedReason, Region) and output 1 the boundary triangles and the prisms' side quads on
+   * symmetry planes. Default and range: Core's OptionTable.h.
+   */
+  virtual void SetNumberOfLayers(int value); // clamped to the valid range of Core's OptionTable.h
+  vtkGetMacro(NumberOfLayers, int);
+  ///@}
+
+  ///@{
+  /** Boundary layers: height of the layer on the wall (needed with layers). */
+  virtual void SetFirstLayerHeight(double value); // clamped to the valid range of Core's OptionTable.h
+  vtkGetMacro(FirstLayerHeight, double);
+  ///@}
+
+  ///@{
+  /** Boundary layers: ratio between consecutive layer heights. Default: Core's OptionTable.h. */
+  virtual void SetLayerGrowthRatio(double value); // clamped to the valid range of Core's OptionTable.h
+  vtkGetMacro(LayerGrowthRatio, double);
+  ///@}
+
+  ///@{
+  /** Boundary layers: comma-separated patch names or PatchId numbers; empty (default): every wall patch. */
+  vtkSetStringMacro(LayerPatches);
+  vtkGetStringMacro(LayerPatches);
+  ///@}
+
+  ///@{
+  /** Boundary layers: every prism as three tets (consistent cuts), for tet-only solvers. Default off. */
+  vtkSetMacro(SplitPrisms, bool);
+  vtkGetMacro(SplitPrisms, bool);
+  vtkBooleanMacro(SplitPrisms, bool);
+  ///@}
+
   /** Convenience: the second input (Sources) connection. */
   void SetSourceConnection(vtkAlgorithmOutput* output);
 
@@ -251,6 +292,9 @@ protected:
   int Execute(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary);
   int TetrahedralizePoints(vtkPointSet* input, vtkUnstructuredGrid* output);
   int MeshSurface(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary);
+  // MeshSurface with boundary layers (NumberOfLayers > 0): prisms plus tets.
+  int MeshWithLayers(const volgrid::SurfaceMesh& surface, const volgrid::MesherOptions& options,
+                     vtkUnstructuredGrid* output, vtkPolyData* boundary);
 
   int InputMode = AUTOMATIC;
   int RegionRule = EVEN_ODD;
@@ -273,6 +317,11 @@ protected:
   double TargetMinDihedral = 0; // the default: the constructor, from Core
   int MaxPasses = 0;            // the default: the constructor, from Core
   bool Smoothing = true;
+  int NumberOfLayers = 0;      // the default: the constructor, from Core
+  double FirstLayerHeight = 0; // the default: the constructor, from Core
+  double LayerGrowthRatio = 0; // the default: the constructor, from Core
+  char* LayerPatches = nullptr;
+  bool SplitPrisms = false;
 
 private:
   vtkVolGridTetrahedralize(const vtkVolGridTetrahedralize&) = delete;

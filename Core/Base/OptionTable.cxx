@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <iomanip>
+#include <iterator>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace volgrid
 {
@@ -37,7 +39,9 @@ std::string exactNumber(double x)
 std::map<std::string, std::string> placeholderValues()
 {
   std::map<std::string, std::string> values;
-  for (const OptionSpec* spec : option::table)
+  std::vector<const OptionSpec*> rows(std::begin(option::table), std::end(option::table));
+  rows.insert(rows.end(), std::begin(option::layerTable), std::end(option::layerTable));
+  for (const OptionSpec* spec : rows)
   {
     const std::string stem = std::string("VOLGRID_OPTION_") + spec->property;
     values[stem + "_DEFAULT"] = exactNumber(spec->defaultValue);

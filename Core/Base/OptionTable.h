@@ -63,9 +63,9 @@ inline constexpr OptionSpec growth{ "growth",     "LayerGrowthRatio",  OptionTyp
 // clang-format on
 inline constexpr const OptionSpec* table[] = { &alpha,   &beta,      &sizeScale,   &gradation,
                                                &maxEdge, &maxVolume, &targetAngle, &passes };
-// The boundary-layer rows (LayerOptions' defaults, the CLI's --layers parsing). Not in `table` yet: the
-// filter and the Plugin XML do not have these properties so far (issue 19), and the generator refuses
-// a row the template does not use.
+// The boundary-layer rows (LayerOptions' defaults, the CLI's --layers parsing, the filter's "Boundary
+// layers" properties and their Plugin XML placeholders). Apart from `table`, whose rows the mesh and
+// refine commands set on the improvement options (findOption).
 inline constexpr const OptionSpec* layerTable[] = { &layers, &firstHeight, &growth };
 } // namespace option
 

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace volgrid
 {
@@ -218,6 +219,16 @@ LayerOptions LayerOptions::resolved() const
   if (o.yPlus > 0 && o.firstHeight == 0)
     o.firstHeight = firstHeightForYPlus(o.yPlus, o.reynolds, o.referenceLength);
   return o;
+}
+
+void addLayerPatches(const std::string& list, LayerOptions& options)
+{
+  std::stringstream entries(list);
+  for (std::string name; std::getline(entries, name, ',');)
+    if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos && name.size() < 10)
+      options.patchIds.push_back(std::stoi(name));
+    else if (!name.empty())
+      options.patchNames.push_back(name);
 }
 
 Status validateLayerOptions(const LayerOptions& given)

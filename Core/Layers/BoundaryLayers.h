@@ -96,6 +96,10 @@ struct LayerResult
 // Re = U * length / nu. A first estimate, as in the usual y+ calculators; 0 for non-positive input.
 double firstHeightForYPlus(double yPlus, double reynolds, double length);
 
+// Adds the comma-separated patches of `list` to `options`: an entry of digits is a patch id (Medit
+// reference, gmsh tag), any other entry a patch name. The CLI's --layer-patches and the filter's LayerPatches.
+void addLayerPatches(const std::string& list, LayerOptions& options);
+
 // Checks the numbers (not the surface): layers >= 1, first height > 0 and finite (or y+, Reynolds number and
 // reference length, not both), growth >= 1.
 Status validateLayerOptions(const LayerOptions& options);

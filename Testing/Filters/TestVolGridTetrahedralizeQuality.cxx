@@ -250,6 +250,11 @@ TEST(VolGridTetrahedralizeQuality, NumericOptionsAreClampedToTheOptionTable)
       [p] { return p->GetTargetMinDihedral(); } },
     { volgrid::option::passes, [p](double x) { p->SetMaxPasses(static_cast<int>(x)); },
       [p] { return static_cast<double>(p->GetMaxPasses()); } },
+    { volgrid::option::layers, [p](double x) { p->SetNumberOfLayers(static_cast<int>(x)); },
+      [p] { return static_cast<double>(p->GetNumberOfLayers()); } },
+    { volgrid::option::firstHeight, [p](double x) { p->SetFirstLayerHeight(x); },
+      [p] { return p->GetFirstLayerHeight(); } },
+    { volgrid::option::growth, [p](double x) { p->SetLayerGrowthRatio(x); }, [p] { return p->GetLayerGrowthRatio(); } },
   };
   for (const Property& property : properties)
   {

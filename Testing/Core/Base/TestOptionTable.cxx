@@ -83,9 +83,12 @@ std::vector<std::string> disagreements(const std::string& xml, const OptionSpec&
 std::vector<std::string> allDisagreements(const std::string& xml)
 {
   std::vector<std::string> found;
-  for (const OptionSpec* spec : option::table)
-    for (const std::string& line : disagreements(xml, *spec))
-      found.push_back(line);
+  for (const auto& rows :
+       { std::vector<const OptionSpec*>(std::begin(option::table), std::end(option::table)),
+         std::vector<const OptionSpec*>(std::begin(option::layerTable), std::end(option::layerTable)) })
+    for (const OptionSpec* spec : rows)
+      for (const std::string& line : disagreements(xml, *spec))
+        found.push_back(line);
   return found;
 }
 

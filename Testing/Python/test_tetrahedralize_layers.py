@@ -1,0 +1,101 @@
+"""pvpython: boundary layers through VolGrid Tetrahedralize's "Boundary layers" properties.
+
+What a viscous-CFD user relies on: a body inside a far-field sphere (made by `volgrid prep`) gets
+NumberOfLayers prism layers on the body and none on the far field; output 0 holds VTK_WEDGE cells (LayerIndex
+0 at the wall) and VTK_TETRA cells (LayerIndex -1), none with a non-positive volume, and the same cells as
+`volgrid mesh --layers` on the same surface; SplitPrisms gives three tets per prism; output 1 holds the input
+triangles with PatchId; a missing first height is refused with an error and an empty output.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager
+
+LoadPlugin(os.environ["VOLGRID_PLUGIN"], remote=False, ns=globals())
+CLI = os.environ["VOLGRID_CLI"]
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+work = tempfile.mkdtemp(prefix="volgrid-pv-layers-")
+body, domain = os.path.join(work, "body.off"), os.path.join(work, "domain.vtp")
+for args in (["--enclosure", "sphere", "--center", "0,0,0", "--dimensions", "1", "--edge-length", "0.2", body],
+             [body, domain, "--enclosure", "sphere", "--enclosure-scale", "10"]):
+    subprocess.run([CLI, "prep"] + args, check=True, capture_output=True)
+LAYERS, FIRST, GROWTH = 5, 0.01, 1.2
+cli = subprocess.run([CLI, "mesh", domain, os.path.join(work, "cli.vtu"), "--json", "--layers", str(LAYERS),
+                      "--first-height", str(FIRST), "--growth", str(GROWTH)], capture_output=True, text=True)
+check(cli.returncode == 0, "volgrid mesh --layers failed: " + cli.stderr)
+expected = json.loads(cli.stdout) if cli.returncode == 0 else {}
+
+reader = XMLPolyDataReader(FileName=[domain])
+surface = servermanager.Fetch(reader)
+mesher = VolGridTetrahedralize(Input=reader)
+mesher.NumberOfLayers = LAYERS
+mesher.FirstLayerHeight = FIRST
+mesher.LayerGrowthRatio = GROWTH
+mesher.UpdatePipeline()
+volume = servermanager.Fetch(mesher, idx=0)
+boundary = servermanager.Fetch(mesher, idx=1)
+
+types = [volume.GetCellType(c) for c in range(volume.GetNumberOfCells())]
+wedges, tets = types.count(13), types.count(10)
+check(wedges + tets == len(types), "cells other than wedges and tets")
+check(wedges == expected.get("wedges") and tets == expected.get("tets"),
+      f"filter {wedges} wedges + {tets} tets, CLI {expected.get('wedges')} + {expected.get('tets')}")
+check(wedges == LAYERS * expected.get("layered_faces", -1), "not every body face has every layer")
+body_faces = expected.get("layered_faces", 0)
+check(0 < body_faces < surface.GetNumberOfCells(), f"{body_faces} layered faces of {surface.GetNumberOfCells()}: "
+      "the far field must get none")
+layer = volume.GetCellData().GetArray("LayerIndex")
+check(layer is not None, "no LayerIndex array")
+if layer is not None:
+    per_layer = [0] * LAYERS
+    for c, t in enumerate(types):
+        k = int(layer.GetValue(c))
+        if t == 13 and 0 <= k < LAYERS:
+            per_layer[k] += 1
+        elif t == 10:
+            check(k == -1, f"tet {c} has LayerIndex {k}")
+    check(per_layer == [body_faces] * LAYERS, f"wedges per layer {per_layer}")
+
+sizes = CellSize(Input=mesher)
+sizes.ComputeVolume = 1
+sizes.ComputeArea = sizes.ComputeLength = sizes.ComputeVertexCount = 0
+sized = servermanager.Fetch(sizes)
+vol = sized.GetCellData().GetArray("Volume")
+non_positive = sum(vol.GetValue(c) <= 0 for c in range(vol.GetNumberOfTuples()))
+check(non_positive == 0, f"{non_positive} cells with a non-positive volume")
+first_layer = [vol.GetValue(c) for c, t in enumerate(types) if t == 13 and int(layer.GetValue(c)) == 0]
+second_layer = [vol.GetValue(c) for c, t in enumerate(types) if t == 13 and int(layer.GetValue(c)) == 1]
+check(first_layer and second_layer and 1.1 < sum(second_layer) / sum(first_layer) < 1.3,
+      "the second layer is not about GROWTH times the first")
+
+check(boundary.GetNumberOfCells() == surface.GetNumberOfCells(), "the boundary is not the input triangles")
+check(boundary.GetCellData().GetArray("PatchId") is not None, "no PatchId on the boundary")
+
+mesher.SplitPrisms = 1
+mesher.UpdatePipeline()
+split = servermanager.Fetch(mesher, idx=0)
+split_types = [split.GetCellType(c) for c in range(split.GetNumberOfCells())]
+check(split_types.count(13) == 0 and split_types.count(10) == 3 * wedges + tets,
+      f"SplitPrisms: {split_types.count(10)} tets, expected {3 * wedges + tets}")
+
+mesher.SplitPrisms = 0
+mesher.FirstLayerHeight = -1.0  # clamped to 0: no first height, refused
+mesher.UpdatePipeline()
+check(servermanager.Fetch(mesher, idx=0).GetNumberOfCells() == 0, "layers without a first height were meshed")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("layers: all checks passed")
