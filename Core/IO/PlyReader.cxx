@@ -243,6 +243,10 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
   // Counts the file cannot hold are refused before anything is allocated.
   for (const Element& e : elements)
   {
+    // Entries without properties take no bytes: no file size could bound their count.
+    if (e.count > 0 && e.properties.empty())
+      return plyError(path,
+                      "element '" + e.name + "' claims " + std::to_string(e.count) + " entries but has no properties");
     const double least = static_cast<double>(e.count) * minimumBytes(e, encoding);
     if (least > fileBytes || (e.name == "vertex" && e.count > INT32_MAX))
       return plyError(path,

@@ -57,6 +57,19 @@ TEST(ReaderHardening, PlyCountsBeyondTheFileAreRefusedBeforeAllocating)
   EXPECT_NE(s.message.find("claims 2000000000 entries"), std::string::npos) << s.message;
 }
 
+// An element without properties takes no bytes, so no file size bounds its count: a fuzzed header with
+// 1.9e9 such faces kept the reader looping for minutes. Refused at once.
+TEST(ReaderHardening, PlyElementsWithoutPropertiesAreRefused)
+{
+  const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                             "property float y\nproperty float z\nelement face 1901144563\nend_header\n";
+  SurfaceMesh m;
+  const Status s = readSurface(writeFile("noproperties.ply", header + std::string(36, '\0')), m);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("element 'face' claims 1901144563 entries but has no properties"), std::string::npos)
+    << s.message;
+}
+
 TEST(ReaderHardening, PlyNumbersMustBeWholeTokens)
 {
   const std::string faces = "3 0 1 2\n3 0 3 1\n3 1 3 2\n3 2 3 0\n";
