@@ -38,6 +38,8 @@ MeshFormat meshFormatFromPath(const std::string& path);
 // The common stem of a TetGen file set, for its reader and its writer: "a.node", "a.ele", "a.face", "a" -> "a".
 std::string tetgenStem(const std::string& path);
 const char* meshFormatName(MeshFormat format);
+// Whether the format's writer takes boundary-layer prisms and boundary quads (SolverMesh::prisms, quads).
+bool writesPrisms(MeshFormat format);
 
 struct MeshWriteOptions
 {

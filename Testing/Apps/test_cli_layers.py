@@ -44,39 +44,75 @@ if r.returncode == 0:
     header = open(w("sis.vtu"), "rb").read(4000)
     expect(b'Name="LayerIndex"' in header and b'Name="ThinnedReason"' in header, "cell arrays in the .vtu")
 
+FOAM = "/usr/share/openfoam/etc/bashrc"
+
+
+def foam_case(case):
+    """The system/ dictionaries checkMesh needs beside a written constant/polyMesh."""
+    os.makedirs(os.path.join(case, "system"), exist_ok=True)
+    with open(os.path.join(case, "system/controlDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }\n"
+                "application checkMesh;\nstartTime 0;\nendTime 1;\ndeltaT 1;\nwriteInterval 1;\n")
+    for name, body in (("fvSchemes", "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
+                        "divSchemes { default none; }\nlaplacianSchemes { default Gauss linear corrected; }\n"
+                        "interpolationSchemes { default linear; }\nsnGradSchemes { default corrected; }\n"),
+                       ("fvSolution", "")):
+        with open(os.path.join(case, "system", name), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n%s" % (name, body))
+
+
+def check_mesh(case, before=""):
+    """checkMesh on `case` (after the shell command `before`, run in it); None when OpenFOAM is absent."""
+    if not os.path.exists(FOAM):
+        return None
+    foam_case(case)
+    return run(["bash", "-c", "source %s >/dev/null 2>&1; cd '%s' && %s checkMesh" % (FOAM, case, before)],
+               timeout=900)
+
+
+def check_mesh_counts(out):
+    """checkMesh's cell, face and point counts, cell shapes and failed checks, for comparing two cases."""
+    keys = ("points", "faces", "internal faces", "cells", "boundary patches", "tetrahedra", "prisms", "polyhedra")
+    counts = {k: int(m.group(1)) for k in keys for m in [re.search(r"^\s+%s:\s+(\d+)" % k, out, re.M)] if m}
+    failed = re.search(r"Failed (\d+) mesh checks", out)
+    counts["failed"] = int(failed.group(1)) if failed else 0
+    skew = re.search(r"\*\*\*Max skewness = ([0-9.e+-]+), (\d+) highly skew faces", out)
+    counts["skew"] = (round(float(skew.group(1)), 2), int(skew.group(2))) if skew else None
+    return counts
+
+
 # Split prisms: a tet-only mesh; checkMesh must say "Mesh OK" when OpenFOAM is installed.
 r = run([volgrid, "mesh", w("sis.off"), w("sis_foam"), "--format", "openfoam", "--split-prisms", "--json"] + layers)
 expect(r.returncode == 0, "split prisms to OpenFOAM", r)
 if r.returncode == 0:
     j = json.loads(r.stdout.strip().splitlines()[-1])
     expect(j["wedges"] == 0 and j["tets"] > 30 * j["layered_faces"], "3 tets per prism: %s" % j)
-    foam = "/usr/share/openfoam/etc/bashrc"
-    if os.path.exists(foam):
-        os.makedirs(w("sis_foam/system"), exist_ok=True)
-        with open(w("sis_foam/system/controlDict"), "w") as f:
-            f.write("FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }\n"
-                    "application checkMesh;\nstartTime 0;\nendTime 1;\ndeltaT 1;\nwriteInterval 1;\n")
-        for name, body in (("fvSchemes", "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
-                            "divSchemes { default none; }\nlaplacianSchemes { default Gauss linear corrected; }\n"
-                            "interpolationSchemes { default linear; }\nsnGradSchemes { default corrected; }\n"),
-                           ("fvSolution", "")):
-            with open(w("sis_foam/system/" + name), "w") as f:
-                f.write("FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n%s" % (name, body))
-        c = run(["bash", "-c", "source %s >/dev/null 2>&1; cd '%s' && checkMesh" % (foam, w("sis_foam"))], timeout=600)
-        expect("Mesh OK." in c.stdout, "checkMesh on the split layers: Mesh OK", c)
-    else:
+    c = check_mesh(w("sis_foam"))
+    if c is None:
         print("skipped checkMesh: OpenFOAM is not installed")
+    else:
+        expect("Mesh OK." in c.stdout, "checkMesh on the split layers: Mesh OK", c)
+
+# Prisms written to OpenFOAM directly (no gmshToFoam): checkMesh sees every wedge as a prism.
+r = run([volgrid, "mesh", w("sis.off"), w("sis_prisms"), "--format", "openfoam", "--json"] + layers)
+expect(r.returncode == 0, "prisms to OpenFOAM", r)
+if r.returncode == 0:
+    j = json.loads(r.stdout.strip().splitlines()[-1])
+    c = check_mesh(w("sis_prisms"))
+    if c is not None:
+        n = check_mesh_counts(c.stdout)
+        expect("Mesh OK." in c.stdout and n.get("prisms") == j["wedges"] and n.get("tetrahedra") == j["tets"]
+               and n.get("cells") == j["wedges"] + j["tets"], "checkMesh on the OpenFOAM prisms: Mesh OK, %s" % n, c)
 
 # Wedges in gmsh 2.2 through gmshToFoam: checkMesh on the mixed mesh itself.
 r = run([volgrid, "mesh", w("sis.off"), w("sis.msh"), "--format", "gmsh22"] + layers)
 expect(r.returncode == 0, "prisms to gmsh 2.2", r)
-if r.returncode == 0 and os.path.exists("/usr/share/openfoam/etc/bashrc"):
+if r.returncode == 0:
     os.makedirs(w("sis_gmsh"), exist_ok=True)
-    shutil.copytree(w("sis_foam/system"), w("sis_gmsh/system"))
-    c = run(["bash", "-c", "source /usr/share/openfoam/etc/bashrc >/dev/null 2>&1; cd '%s' && gmshToFoam ../sis.msh "
-             "&& checkMesh" % w("sis_gmsh")], timeout=600)
-    expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
-           "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
+    c = check_mesh(w("sis_gmsh"), "gmshToFoam ../sis.msh &&")
+    if c is not None:
+        expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
+               "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
 
 # The first height from a target y+ (flat plate, Re 1e6, length 1: 2.35288e-05).
 r = run([volgrid, "mesh", w("sis.off"), w("yplus.vtu"), "--json", "--layers", "3", "--y-plus", "1", "--reynolds", "1e6",
@@ -94,8 +130,9 @@ for extra, message in bad:
     out = w("bad.vtu")
     r = run([volgrid, "mesh", w("sis.off"), out] + extra)
     expect(refused_cleanly(r) and message in r.stderr and not os.path.exists(out), "refused: " + message, r)
-r = run([volgrid, "mesh", w("sis.off"), w("bad.su2")] + layers)
-expect(refused_cleanly(r) and "--split-prisms" in r.stderr, "prisms in a solver format need --split-prisms", r)
+r = run([volgrid, "mesh", w("sis.off"), w("bad.node")] + layers)
+expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("bad.node")),
+       "prisms in a tet-only format (TetGen) need --split-prisms", r)
 
 m6 = os.path.join(shared, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
 if shared and os.path.exists(m6):
@@ -110,6 +147,20 @@ if shared and os.path.exists(m6):
         expect(j["coverage"] >= 0.98 and j["inverted_cells"] == 0 and j["wedges"] >= 0.98 * 15 * j["layered_faces"],
                "M6: at least 98%% of the wing faces get all 15 layers, none inverted: %s" % j)
         expect(j["interface_faces_shared"] == j["layered_faces"], "M6: the tets share the layers' surface: %s" % j)
+    # checkMesh on the direct OpenFOAM output agrees with gmsh 2.2 -> gmshToFoam: the same counts, cell shapes,
+    # failed checks and skew faces (one input edge of the wing gives 15 faces of skewness 8.19 either way).
+    m6_layers = ["--layers", "15", "--first-height", "1e-4", "--growth", "1.2", "--layer-patches",
+                 "3,4,5,6,7,8,9,10,11,12"]
+    rf = run([volgrid, "mesh", m6, w("m6_foam"), "--format", "openfoam"] + m6_layers, timeout=600)
+    rg = run([volgrid, "mesh", m6, w("m6.msh"), "--format", "gmsh22"] + m6_layers, timeout=600)
+    expect(rf.returncode == 0 and rg.returncode == 0, "M6: prisms to OpenFOAM and gmsh 2.2", rf if rf.returncode else rg)
+    if rf.returncode == 0 and rg.returncode == 0 and os.path.exists(FOAM):
+        os.makedirs(w("m6_gmsh"), exist_ok=True)
+        cf, cg = check_mesh(w("m6_foam")), check_mesh(w("m6_gmsh"), "gmshToFoam ../m6.msh &&")
+        nf, ng = check_mesh_counts(cf.stdout), check_mesh_counts(cg.stdout)
+        print("M6 checkMesh, direct:", nf, "\nM6 checkMesh, gmshToFoam:", ng)
+        expect(nf == ng and nf.get("prisms", 0) > 0, "M6: checkMesh agrees on the direct and gmshToFoam cases: %s %s"
+               % (nf, ng), cf)
     r = run([volgrid, "mesh", m6, w("m6bad.vtu"), "--layers", "15", "--first-height", "1e-4", "--layer-patches", "1,3,4"])
     expect(refused_cleanly(r) and "touch the non-layered patch" in r.stderr and not os.path.exists(w("m6bad.vtu")),
            "M6: layers on part of the wing, touching the rest of it, refused with a message", r)
