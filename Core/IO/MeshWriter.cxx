@@ -100,7 +100,8 @@ const char* meshFormatName(MeshFormat format)
 
 bool writesPrisms(MeshFormat format)
 {
-  return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM;
+  return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM ||
+    format == MeshFormat::SU2 || format == MeshFormat::CGNS;
 }
 
 std::string defaultOpenFoamPatchType(const std::string& name)
@@ -129,7 +130,7 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
   if ((!mesh.prisms.empty() || !mesh.quads.empty()) && !writesPrisms(format))
     return Status::failure(ErrorKind::InvalidOption,
                            "'" + path + "': prisms are not written to " + meshFormatName(format) +
-                             " (gmsh, OpenFOAM and VTK take them); split them into tets for this format");
+                             " (gmsh, OpenFOAM, SU2, CGNS and VTK take them); split them into tets for this format");
   switch (format)
   {
     case MeshFormat::Gmsh41:

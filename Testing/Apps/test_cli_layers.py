@@ -114,6 +114,48 @@ if r.returncode == 0:
         expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
                "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
 
+# Prisms in SU2 and CGNS, read back by readers VolGrid did not write (mixed_mesh_readers.py under pvpython):
+# cells by type and volumes equal to the .vtu's; cgnscheck finds nothing.
+PVPYTHON = shutil.which("pvpython")
+READERS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mixed_mesh_readers.py")
+
+
+def read_mixed(kind, path):
+    c = run([PVPYTHON, READERS, kind, path], timeout=600)
+    return json.loads(c.stdout.strip().splitlines()[-1]) if c.returncode == 0 else {"error": c.describe()}
+
+
+def close(a, b):
+    return abs(a - b) <= 1e-9 * max(abs(a), abs(b))
+
+
+for fmt in ("su2", "cgns"):
+    r = run([volgrid, "mesh", w("sis.off"), w("sis." + fmt), "--json"] + layers)
+    expect(r.returncode == 0, "prisms to " + fmt, r)
+su2_cells = [l.split()[0] for l in open(w("sis.su2")).read().split("NPOIN=")[0].splitlines()[2:]]
+expect(su2_cells.count("13") == 24200 and su2_cells.count("10") + su2_cells.count("13") == len(su2_cells),
+       "SU2: 24200 prisms (type 13) after the tets")
+if PVPYTHON:
+    ref = read_mixed("vtu", w("sis.vtu"))
+    su2, cgns = read_mixed("su2", w("sis.su2")), read_mixed("cgns", w("sis.cgns"))
+    print("sphere in sphere, .vtu:", ref, "\n  SU2:", su2, "\n  CGNS (ParaView):", cgns)
+    expect(ref.get("wedges") == 24200 and ref["wedge_min_max"][0] > 0 and ref["tet_min_max"][0] > 0, ".vtu: %s" % ref)
+    expect(su2.get("tets") == ref.get("tets") and su2.get("wedges") == 24200 and su2.get("other") == 0
+           and close(su2["tet_volume"], ref["tet_volume"]) and close(su2["wedge_volume"], ref["wedge_volume"])
+           and su2["wedge_min_max"][0] > 0, "SU2 read as VTK cells: the .vtu's cells and volumes: %s" % su2)
+    # PENTA_6 is in CGNS's (and gmsh's) order, the base's normal towards the top; ParaView's CGNS reader
+    # passes it on as VTK_WEDGE unchanged, whose first triangle faces away from the top: every wedge of
+    # the reader's output has the .vtu wedge's volume with the sign flipped, none of the other sign.
+    expect(cgns.get("tets") == ref.get("tets") and cgns.get("wedges") == 24200 and cgns.get("other") == 0
+           and close(cgns["tet_volume"], ref["tet_volume"]) and close(-cgns["wedge_volume"], ref["wedge_volume"])
+           and cgns["wedge_min_max"][1] < 0, "CGNS read by ParaView: the .vtu's cells and volumes: %s" % cgns)
+else:
+    print("skipped the SU2/CGNS readers: pvpython is not installed")
+if shutil.which("cgnscheck"):
+    c = run(["cgnscheck", w("sis.cgns")])
+    expect(c.returncode == 0 and "error" not in c.stdout.lower() and "warning" not in c.stdout.lower(),
+           "cgnscheck on the prisms' CGNS file", c)
+
 # The first height from a target y+ (flat plate, Re 1e6, length 1: 2.35288e-05).
 r = run([volgrid, "mesh", w("sis.off"), w("yplus.vtu"), "--json", "--layers", "3", "--y-plus", "1", "--reynolds", "1e6",
          "--reference-length", "1"])
@@ -161,6 +203,21 @@ if shared and os.path.exists(m6):
         print("M6 checkMesh, direct:", nf, "\nM6 checkMesh, gmshToFoam:", ng)
         expect(nf == ng and nf.get("prisms", 0) > 0, "M6: checkMesh agrees on the direct and gmshToFoam cases: %s %s"
                % (nf, ng), cf)
+    # The wing root's prism sides on the symmetry plane are boundary quads of its patch in SU2 (type 9) and CGNS
+    # (a QUAD_4 section in the patch's boundary condition): ParaView's CGNS reader counts what SU2 lists.
+    for fmt in ("su2", "cgns"):
+        r = run([volgrid, "mesh", m6, w("m6." + fmt)] + m6_layers, timeout=600)
+        expect(r.returncode == 0, "M6: prisms to " + fmt, r)
+    text = open(w("m6.su2")).read() if os.path.exists(w("m6.su2")) else ""
+    markers = {k: int(v) for k, v in re.findall(r"MARKER_TAG= (\S+)\nMARKER_ELEMS= (\d+)", text)}
+    quads = sum(1 for l in text.split("NMARK=")[-1].splitlines() if l.startswith("9 "))
+    expect(quads > 0, "M6: SU2 boundary quads on the symmetry plane")
+    if PVPYTHON and os.path.exists(w("m6.cgns")):
+        export = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Export", "paraview_readers.py")
+        c = run([PVPYTHON, export, "cgns", w("m6.cgns")], timeout=600)
+        seen = json.loads(c.stdout.strip().splitlines()[-1])["patches"] if c.returncode == 0 else {}
+        expect(seen == markers and len(seen) == 12, "M6: CGNS patches (ParaView) = SU2 markers: %s %s" % (seen, markers),
+               c)
     r = run([volgrid, "mesh", m6, w("m6bad.vtu"), "--layers", "15", "--first-height", "1e-4", "--layer-patches", "1,3,4"])
     expect(refused_cleanly(r) and "touch the non-layered patch" in r.stderr and not os.path.exists(w("m6bad.vtu")),
            "M6: layers on part of the wing, touching the rest of it, refused with a message", r)

@@ -209,6 +209,26 @@ TEST(MeshWriterOpenFOAM, PrismsAreCellsWithQuadSidesInTheirPatch)
   EXPECT_FALSE(std::filesystem::exists(dir2));
 }
 
+TEST(MeshWriterSU2, PrismsInVtkOrderAndSideQuadsInTheirMarker)
+{
+  const std::string path = tempPath("prism.su2");
+  ASSERT_TRUE(writeSolverMesh(path, prismUnderTet(), MeshFormat::SU2).ok());
+  const std::string text = readText(path);
+  EXPECT_NE(text.find("NELEM= 2\n10 3 4 5 6 0\n13 0 2 1 3 5 4 1\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("MARKER_TAG= symmetry\nMARKER_ELEMS= 3\n9 0 1 4 3\n9 1 2 5 4\n9 2 0 3 5\n"), std::string::npos)
+    << text;
+  // Formats without prisms refuse them by name, writing nothing.
+  for (MeshFormat f : { MeshFormat::Medit, MeshFormat::TetGen, MeshFormat::Exodus })
+  {
+    const std::string out = tempPath(std::string("prism-refused.") + (f == MeshFormat::Medit ? "mesh" : "x"));
+    const Status s = writeSolverMesh(out, prismUnderTet(), f);
+    EXPECT_FALSE(s.ok());
+    EXPECT_NE(s.message.find(std::string("prisms are not written to ") + meshFormatName(f)), std::string::npos)
+      << s.message;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+}
+
 TEST(MeshWriterMedit, RoundTripKeepsLabelsAndNames)
 {
   const std::string path = tempPath("two.mesh"), again = tempPath("two-again.mesh");
