@@ -156,6 +156,23 @@ if shutil.which("cgnscheck"):
     expect(c.returncode == 0 and "error" not in c.stdout.lower() and "warning" not in c.stdout.lower(),
            "cgnscheck on the prisms' CGNS file", c)
 
+# volgrid quality on the mixed .vtu: the wedges measured by type (Core/Quality/PrismQuality.h), none inverted,
+# and the total volume the tets' and the wedges' together.
+r = run([volgrid, "quality", w("sis.vtu"), "--json"])
+expect(r.returncode == 0, "volgrid quality on the layers' .vtu", r)
+if r.returncode == 0:
+    q = json.loads(r.stdout.strip().splitlines()[-1])
+    jac, vol = q["metrics"]["WedgeScaledJacobian"], q["metrics"]["WedgeVolume"]
+    print("quality of the layers:", {k: q[k] for k in ("NumberOfTetrahedra", "NumberOfWedges", "InvertedWedges",
+                                                      "SkippedCells", "TotalVolume")}, "scaled Jacobian", jac["min"],
+          jac["max"])
+    expect(q["NumberOfWedges"] == 24200 and q["InvertedWedges"] == 0 and q["SkippedCells"] == 0
+           and jac["count"] == 24200 and 0.9 < jac["min"] <= jac["max"] <= 1 and vol["min"] > 0,
+           "quality: 24200 wedges, none inverted, near-right prisms: %s %s" % (jac, vol))
+    if PVPYTHON:
+        expect(close(q["TotalVolume"], ref["tet_volume"] + ref["wedge_volume"]),
+               "quality: TotalVolume %s = the .vtu's tets + wedges %s" % (q["TotalVolume"], ref))
+
 # The first height from a target y+ (flat plate, Re 1e6, length 1: 2.35288e-05).
 r = run([volgrid, "mesh", w("sis.off"), w("yplus.vtu"), "--json", "--layers", "3", "--y-plus", "1", "--reynolds", "1e6",
          "--reference-length", "1"])
