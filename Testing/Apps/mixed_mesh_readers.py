@@ -1,9 +1,9 @@
-"""Readers VolGrid did not write, on a mixed (prism + tet) mesh, run under pvpython: ParaView's .vtu and CGNS
-readers (vtkXMLUnstructuredGridReader, vtkCGNSReader), and for SU2 (no reader here) the file's element lines
+"""Readers VolGrid did not write, on a mixed (prism + tet) mesh, run under pvpython: ParaView's .vtu, CGNS and
+Exodus II readers (vtkXMLUnstructuredGridReader, vtkCGNSReader, vtkExodusIIReader), and for SU2 (no reader here) the file's element lines
 taken as the VTK cell types they name. Prints one JSON line: cells by type ("tets", "wedges", "other") and
 their signed volumes by vtkCellSizeFilter (VTK's wedge: the first triangle's normal points away from the
 second, as vtkCellTypeSource makes them): "tet_volume", "wedge_volume", "tet_min_max", "wedge_min_max".
-Usage: pvpython mixed_mesh_readers.py vtu|cgns|su2 FILE"""
+Usage: pvpython mixed_mesh_readers.py vtu|cgns|exodus|su2 FILE"""
 import json
 import sys
 
@@ -11,6 +11,7 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
 from vtkmodules.vtkIOCGNSReader import vtkCGNSReader
+from vtkmodules.vtkIOExodus import vtkExodusIIReader
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 
@@ -27,6 +28,24 @@ def cgns(path):
     r.SetFileName(path)
     r.UpdateInformation()
     r.EnableAllBases()
+    r.Update()
+    it = r.GetOutput().NewTreeIterator()
+    it.VisitOnlyLeavesOn()
+    it.InitTraversal()
+    grids = []
+    while not it.IsDoneWithTraversal():
+        grids.append(it.GetCurrentDataObject())
+        it.GoToNextItem()
+    return grids
+
+
+def exodus(path):
+    """Every element block (side sets off)."""
+    r = vtkExodusIIReader()
+    r.SetFileName(path)
+    r.UpdateInformation()
+    for k in range(r.GetNumberOfObjects(vtkExodusIIReader.ELEM_BLOCK)):
+        r.SetObjectStatus(vtkExodusIIReader.ELEM_BLOCK, k, 1)
     r.Update()
     it = r.GetOutput().NewTreeIterator()
     it.VisitOnlyLeavesOn()
@@ -59,7 +78,7 @@ def su2(path):
     return [grid]
 
 
-grids = {"vtu": vtu, "cgns": cgns, "su2": su2}[sys.argv[1]](sys.argv[2])
+grids = {"vtu": vtu, "cgns": cgns, "exodus": exodus, "su2": su2}[sys.argv[1]](sys.argv[2])
 out = {"tets": 0, "wedges": 0, "other": 0, "tet_volume": 0.0, "wedge_volume": 0.0}
 bounds = {10: [float("inf"), -float("inf")], 13: [float("inf"), -float("inf")]}
 for g in grids:

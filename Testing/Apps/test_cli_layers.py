@@ -114,7 +114,7 @@ if r.returncode == 0:
         expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
                "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
 
-# Prisms in SU2 and CGNS, read back by readers VolGrid did not write (mixed_mesh_readers.py under pvpython):
+# Prisms in SU2, CGNS and Exodus II, read back by readers VolGrid did not write (mixed_mesh_readers.py under pvpython):
 # cells by type and volumes equal to the .vtu's; cgnscheck finds nothing.
 PVPYTHON = shutil.which("pvpython")
 READERS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mixed_mesh_readers.py")
@@ -125,11 +125,11 @@ def read_mixed(kind, path):
     return json.loads(c.stdout.strip().splitlines()[-1]) if c.returncode == 0 else {"error": c.describe()}
 
 
-def close(a, b):
-    return abs(a - b) <= 1e-9 * max(abs(a), abs(b))
+def close(a, b, tolerance=1e-9):
+    return abs(a - b) <= tolerance * max(abs(a), abs(b))
 
 
-for fmt in ("su2", "cgns"):
+for fmt in ("su2", "cgns", "exo"):
     r = run([volgrid, "mesh", w("sis.off"), w("sis." + fmt), "--json"] + layers)
     expect(r.returncode == 0, "prisms to " + fmt, r)
 su2_cells = [l.split()[0] for l in open(w("sis.su2")).read().split("NPOIN=")[0].splitlines()[2:]]
@@ -149,6 +149,14 @@ if PVPYTHON:
     expect(cgns.get("tets") == ref.get("tets") and cgns.get("wedges") == 24200 and cgns.get("other") == 0
            and close(cgns["tet_volume"], ref["tet_volume"]) and close(-cgns["wedge_volume"], ref["wedge_volume"])
            and cgns["wedge_min_max"][1] < 0, "CGNS read by ParaView: the .vtu's cells and volumes: %s" % cgns)
+    # Exodus's WEDGE is CGNS's PENTA_6 (side 4 = 1 3 2 outward) and ParaView's reader passes it on the same way;
+    # it reads the coordinates as floats (hence 1e-6).
+    exo = read_mixed("exodus", w("sis.exo"))
+    print("  Exodus (ParaView):", exo)
+    expect(exo.get("tets") == ref.get("tets") and exo.get("wedges") == 24200 and exo.get("other") == 0
+           and close(exo["tet_volume"], ref["tet_volume"], 1e-6)
+           and close(-exo["wedge_volume"], ref["wedge_volume"], 1e-6) and exo["wedge_min_max"][1] < 0,
+           "Exodus read by ParaView: the .vtu's cells and volumes: %s" % exo)
 else:
     print("skipped the SU2/CGNS readers: pvpython is not installed")
 if shutil.which("cgnscheck"):
@@ -220,21 +228,23 @@ if shared and os.path.exists(m6):
         print("M6 checkMesh, direct:", nf, "\nM6 checkMesh, gmshToFoam:", ng)
         expect(nf == ng and nf.get("prisms", 0) > 0, "M6: checkMesh agrees on the direct and gmshToFoam cases: %s %s"
                % (nf, ng), cf)
-    # The wing root's prism sides on the symmetry plane are boundary quads of its patch in SU2 (type 9) and CGNS
-    # (a QUAD_4 section in the patch's boundary condition): ParaView's CGNS reader counts what SU2 lists.
-    for fmt in ("su2", "cgns"):
+    # The wing root's prism sides on the symmetry plane are boundary quads of its patch in SU2 (type 9), CGNS
+    # (a QUAD_4 section in the patch's boundary condition) and Exodus (wedge sides in its side set):
+    # ParaView's CGNS and Exodus readers count what SU2 lists.
+    for fmt in ("su2", "cgns", "exo"):
         r = run([volgrid, "mesh", m6, w("m6." + fmt)] + m6_layers, timeout=600)
         expect(r.returncode == 0, "M6: prisms to " + fmt, r)
     text = open(w("m6.su2")).read() if os.path.exists(w("m6.su2")) else ""
     markers = {k: int(v) for k, v in re.findall(r"MARKER_TAG= (\S+)\nMARKER_ELEMS= (\d+)", text)}
     quads = sum(1 for l in text.split("NMARK=")[-1].splitlines() if l.startswith("9 "))
     expect(quads > 0, "M6: SU2 boundary quads on the symmetry plane")
-    if PVPYTHON and os.path.exists(w("m6.cgns")):
-        export = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Export", "paraview_readers.py")
-        c = run([PVPYTHON, export, "cgns", w("m6.cgns")], timeout=600)
-        seen = json.loads(c.stdout.strip().splitlines()[-1])["patches"] if c.returncode == 0 else {}
-        expect(seen == markers and len(seen) == 12, "M6: CGNS patches (ParaView) = SU2 markers: %s %s" % (seen, markers),
-               c)
+    export = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Export", "paraview_readers.py")
+    for kind, path in (("cgns", w("m6.cgns")), ("exodus", w("m6.exo"))):
+        if PVPYTHON and os.path.exists(path):
+            c = run([PVPYTHON, export, kind, path], timeout=600)
+            seen = json.loads(c.stdout.strip().splitlines()[-1])["patches"] if c.returncode == 0 else {}
+            expect(seen == markers and len(seen) == 12,
+                   "M6: %s patches (ParaView) = SU2 markers: %s %s" % (kind, seen, markers), c)
     r = run([volgrid, "mesh", m6, w("m6bad.vtu"), "--layers", "15", "--first-height", "1e-4", "--layer-patches", "1,3,4"])
     expect(refused_cleanly(r) and "touch the non-layered patch" in r.stderr and not os.path.exists(w("m6bad.vtu")),
            "M6: layers on part of the wing, touching the rest of it, refused with a message", r)

@@ -218,7 +218,7 @@ TEST(MeshWriterSU2, PrismsInVtkOrderAndSideQuadsInTheirMarker)
   EXPECT_NE(text.find("MARKER_TAG= symmetry\nMARKER_ELEMS= 3\n9 0 1 4 3\n9 1 2 5 4\n9 2 0 3 5\n"), std::string::npos)
     << text;
   // Formats without prisms refuse them by name, writing nothing.
-  for (MeshFormat f : { MeshFormat::Medit, MeshFormat::TetGen, MeshFormat::Exodus })
+  for (MeshFormat f : { MeshFormat::Medit, MeshFormat::TetGen })
   {
     const std::string out = tempPath(std::string("prism-refused.") + (f == MeshFormat::Medit ? "mesh" : "x"));
     const Status s = writeSolverMesh(out, prismUnderTet(), f);
@@ -227,6 +227,23 @@ TEST(MeshWriterSU2, PrismsInVtkOrderAndSideQuadsInTheirMarker)
       << s.message;
     EXPECT_FALSE(std::filesystem::exists(out));
   }
+}
+
+TEST(MeshWriterExodus, PrismSidesFoundOrRefusedByName)
+{
+  const std::string path = tempPath("prism.exo");
+  std::filesystem::remove(path);
+  ASSERT_TRUE(writeSolverMesh(path, prismUnderTet(), MeshFormat::Exodus).ok());
+  EXPECT_TRUE(std::filesystem::exists(path));
+  // A quad of the prism's points across it, (2 0 4 5), is no face of any cell: refused, nothing written.
+  SolverMesh bad = prismUnderTet();
+  bad.quads[10] = 4;
+  const std::string badPath = tempPath("prism-bad.exo");
+  std::filesystem::remove(badPath);
+  const Status s = writeSolverMesh(badPath, bad, MeshFormat::Exodus);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("boundary quad 2 is not a face of any tet or prism"), std::string::npos) << s.message;
+  EXPECT_FALSE(std::filesystem::exists(badPath));
 }
 
 TEST(MeshWriterMedit, RoundTripKeepsLabelsAndNames)
