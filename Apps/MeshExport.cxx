@@ -133,10 +133,15 @@ bool writeSolverOutput(const char* command, const std::string& out, MeshFormat f
   }
   if (quiet)
     return true;
-  std::printf("wrote %s '%s': %lld points, %lld tets, patches", meshFormatName(format), out.c_str(),
+  std::printf("wrote %s '%s': %lld points, %lld tets", meshFormatName(format), out.c_str(),
               static_cast<long long>(normalized.numberOfPoints()), static_cast<long long>(normalized.numberOfTets()));
-  const std::vector<int32_t> patches = distinctLabels(normalized.trianglePatch);
-  const std::vector<int64_t> counts = labelCounts(normalized.trianglePatch, patches);
+  if (!normalized.prisms.empty())
+    std::printf(", %lld prisms", static_cast<long long>(normalized.prisms.size() / 6));
+  std::printf(", patches");
+  std::vector<int32_t> faces = normalized.trianglePatch; // boundary faces: triangles and prism side quads
+  faces.insert(faces.end(), normalized.quadPatch.begin(), normalized.quadPatch.end());
+  const std::vector<int32_t> patches = distinctLabels(faces);
+  const std::vector<int64_t> counts = labelCounts(faces, patches);
   for (size_t k = 0; k < patches.size(); ++k)
     std::printf(" %s (%lld)", labelName(normalized.patchNames, patches[k], "patch").c_str(),
                 static_cast<long long>(counts[k]));

@@ -29,7 +29,7 @@ const std::string kLayerUsage =
   "                       Reynolds number RE (Cf = 0.026 / RE^(1/7))\n" +
   optionUsage(option::growth, "R") +
   "  --layer-patches A,B  layered patches by name or id (default: every patch whose OpenFOAM type is wall)\n"
-  "  --split-prisms       each prism as 3 tets (needed for the solver formats other than gmsh .msh)\n";
+  "  --split-prisms       each prism as 3 tets (for tet-only solvers; needed for the formats without prisms)\n";
 
 int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
 {
@@ -121,12 +121,10 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
                    MeshFormat format, bool vtkOutput, const ExportRequest& request, const MesherOptions& options,
                    const LayerOptions& layers, bool json)
 {
-  const bool gmsh = format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22;
-  if (!vtkOutput && !gmsh && !layers.splitPrisms)
+  if (!vtkOutput && !writesPrisms(format) && !layers.splitPrisms)
   {
-    std::fprintf(stderr,
-                 "volgrid mesh: prism layers are written to .vtu/.vtk/.msh only for now; add "
-                 "--split-prisms to write them as tets in another solver format\n");
+    std::fprintf(stderr, "volgrid mesh: prism layers are not written to %s; add --split-prisms to write them as tets\n",
+                 meshFormatName(format));
     return 2;
   }
   if (!request.patches.empty())

@@ -179,14 +179,23 @@ std::string jsonString(const std::string& s)
   return out + "\"";
 }
 
-const char* kVolumeMetrics[] = { "AspectRatio",      "MinDihedralAngle", "MaxDihedralAngle", "MinSolidAngle",
-                                 "Volume",           "VolumeGradient",   "RadiusEdgeRatio",  "RadiusRatio",
-                                 "NonOrthogonality", "Skewness",         "VolumeRatio" };
+const char* kVolumeMetrics[] = { "AspectRatio",        "MinDihedralAngle", "MaxDihedralAngle",
+                                 "MinSolidAngle",      "Volume",           "VolumeGradient",
+                                 "RadiusEdgeRatio",    "RadiusRatio",      "NonOrthogonality",
+                                 "Skewness",           "VolumeRatio",      "WedgeVolume",
+                                 "WedgeScaledJacobian" };
 const char* kSurfaceMetrics[] = { "AspectRatio", "Area", "MinAngle", "MaxAngle" };
-const char* kVolumeFigures[] = {
-  "NumberOfTetrahedra",       "SkippedCells", "TotalVolume",     "MaxNonOrthogonality", "AverageNonOrthogonality",
-  "SevereNonOrthogonalFaces", "MaxSkewness",  "HighlySkewFaces", "MaxVolumeRatio"
-};
+const char* kVolumeFigures[] = { "NumberOfTetrahedra",
+                                 "SkippedCells",
+                                 "TotalVolume",
+                                 "MaxNonOrthogonality",
+                                 "AverageNonOrthogonality",
+                                 "SevereNonOrthogonalFaces",
+                                 "MaxSkewness",
+                                 "HighlySkewFaces",
+                                 "MaxVolumeRatio",
+                                 "NumberOfWedges",
+                                 "InvertedWedges" };
 const char* kSurfaceFigures[] = { "NumberOfElements", "SurfaceArea",      "EnclosedVolume", "BoundaryEdges",
                                   "BoundaryLoops",    "NonManifoldEdges", "Shells",         "SkippedCells" };
 } // namespace
@@ -220,7 +229,7 @@ int runQualityCommand(int argc, char** argv)
       if (!v)
         return 2;
       metric = -1;
-      for (int m = vtkVolGridQuality::ASPECT_RATIO; m <= vtkVolGridQuality::VOLUME_RATIO; ++m)
+      for (int m = vtkVolGridQuality::ASPECT_RATIO; m <= vtkVolGridQuality::WEDGE_SCALED_JACOBIAN; ++m)
         if (std::strcmp(v, vtkVolGridQuality::GetMetricName(m)) == 0)
           metric = m;
       if (metric < 0)

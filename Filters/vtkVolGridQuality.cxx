@@ -2,6 +2,7 @@
 #include "vtkVolGridQuality.h"
 
 #include "CfdQuality.h"
+#include "PrismQuality.h"
 #include "Quality.h"
 #include "QualityStatistics.h"
 
@@ -66,6 +67,8 @@ const MetricInfo kMetrics[] = {
   { vtkVolGridQuality::NON_ORTHOGONALITY, "NonOrthogonality", vq::Worst::Largest },
   { vtkVolGridQuality::SKEWNESS, "Skewness", vq::Worst::Largest },
   { vtkVolGridQuality::VOLUME_RATIO, "VolumeRatio", vq::Worst::Largest },
+  { vtkVolGridQuality::WEDGE_VOLUME, "WedgeVolume", vq::Worst::Smallest },
+  { vtkVolGridQuality::WEDGE_SCALED_JACOBIAN, "WedgeScaledJacobian", vq::Worst::Smallest },
 };
 
 // The selected metric, or its counterpart on the other kind of grid (see the header).
@@ -101,6 +104,8 @@ int effectiveMetric(int metric, bool volume)
     case Q::NON_ORTHOGONALITY:
     case Q::SKEWNESS:
     case Q::VOLUME_RATIO:
+    case Q::WEDGE_VOLUME:
+    case Q::WEDGE_SCALED_JACOBIAN:
       return Q::ASPECT_RATIO;
     default:
       return metric;
@@ -261,6 +266,9 @@ struct vtkVolGridQuality::Internals
 
   static bool Volume(vtkVolGridQuality* self, vtkUnstructuredGrid* input,
                      std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
+  // The wedges (boundary-layer prisms, Core/Quality/PrismQuality.h): two cell arrays and two figures.
+  static bool Wedges(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
+                     std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
   // The CFD face metrics of a pure tet grid (Core/Quality/CfdQuality.h): three cell arrays and six figures.
   static void Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
                   std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
@@ -277,12 +285,13 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
   const double* points = numPoints ? flatPoints(input->GetPoints(), pointStorage) : nullptr;
 
   vtkUnsignedCharArray* types = input->GetCellTypesArray();
-  vtkIdType numTets = 0;
+  vtkIdType numTets = 0, numWedges = 0;
   for (vtkIdType c = 0; c < numCells; ++c)
   {
     numTets += types->GetValue(c) == VTK_TETRA;
+    numWedges += types->GetValue(c) == VTK_WEDGE;
   }
-  self->NumberOfSkippedCells = numCells - numTets;
+  self->NumberOfSkippedCells = numCells - numTets - numWedges;
 
   for (int m = ASPECT_RATIO; m <= RADIUS_RATIO; ++m)
   {
@@ -375,13 +384,75 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
   if (self->NumberOfSkippedCells > 0)
   {
     vtkWarningWithObjectMacro(self, << self->NumberOfSkippedCells << " of " << numCells
-                                    << " cells are not tetrahedra: they were skipped (their values are NaN).");
+                                    << " cells are neither tetrahedra nor wedges: they were skipped (their values "
+                                       "are NaN).");
   }
   addScalar(summary, "NumberOfTetrahedra", static_cast<double>(numTets));
   addScalar(summary, "SkippedCells", static_cast<double>(self->NumberOfSkippedCells));
+  if (!Wedges(self, input, points, arrays, summary))
+    return false;
   if (numTets == numCells && numCells > 0)
     Cfd(self, input, points, arrays, summary);
   return true;
+}
+
+bool vtkVolGridQuality::Internals::Wedges(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
+                                          std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkUnsignedCharArray* types = input->GetCellTypesArray();
+  std::vector<vtkIdType> wedges, wedgeCells; // SolverMesh's order: VTK's triangles reversed
+  for (vtkIdType c = 0; c < numCells; ++c)
+  {
+    if (types->GetValue(c) != VTK_WEDGE)
+      continue;
+    vtkIdType npts;
+    const vtkIdType* v;
+    input->GetCellPoints(c, npts, v);
+    if (npts != 6)
+    {
+      vtkErrorWithObjectMacro(self, "Wedge cell " << c << " has " << npts << " points instead of 6.");
+      return false;
+    }
+    wedges.insert(wedges.end(), { v[0], v[2], v[1], v[3], v[5], v[4] });
+    wedgeCells.push_back(c);
+  }
+  addScalar(summary, "NumberOfWedges", static_cast<double>(wedgeCells.size()));
+  if (!IdsInRange(wedges.data(), static_cast<vtkIdType>(wedges.size()), numPoints))
+  {
+    vtkErrorWithObjectMacro(self, "The grid has point ids outside [0, " << numPoints << ").");
+    return false;
+  }
+  if (wedgeCells.empty())
+  {
+    addScalar(summary, "InvertedWedges", 0.0);
+    return true;
+  }
+  auto volume = newCellArray("WedgeVolume", numCells), jacobian = newCellArray("WedgeScaledJacobian", numCells);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::fill(volume->GetPointer(0), volume->GetPointer(0) + numCells, nan);
+  std::fill(jacobian->GetPointer(0), jacobian->GetPointer(0) + numCells, nan);
+  std::vector<unsigned char> inverted(wedgeCells.size(), 0);
+  const bool ok = parallelBlocks(self, static_cast<vtkIdType>(wedgeCells.size()), 0.6, 0.7,
+                                 [&](vtkIdType begin, vtkIdType end)
+                                 {
+                                   for (vtkIdType w = begin; w < end; ++w)
+                                   {
+                                     const double* p[6];
+                                     for (int k = 0; k < 6; ++k)
+                                       p[k] = points + 3 * wedges[6 * w + k];
+                                     const vq::PrismMetrics m = vq::prismMetrics(p);
+                                     volume->SetValue(wedgeCells[w], m.volume);
+                                     jacobian->SetValue(wedgeCells[w], m.minScaledJacobian);
+                                     inverted[w] = m.nonPositiveCorners > 0;
+                                   }
+                                 });
+  addScalar(summary, "InvertedWedges",
+            static_cast<double>(std::count(inverted.begin(), inverted.end(), static_cast<unsigned char>(1))));
+  arrays.push_back(volume);
+  arrays.push_back(jacobian);
+  return ok;
 }
 
 void vtkVolGridQuality::Internals::Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
@@ -508,7 +579,7 @@ vtkVolGridQuality::vtkVolGridQuality()
 
 const char* vtkVolGridQuality::GetMetricName(int metric)
 {
-  return metric >= ASPECT_RATIO && metric <= VOLUME_RATIO ? kMetrics[metric].name : nullptr;
+  return metric >= ASPECT_RATIO && metric <= WEDGE_SCALED_JACOBIAN ? kMetrics[metric].name : nullptr;
 }
 
 int vtkVolGridQuality::FillInputPortInformation(int, vtkInformation* info)
@@ -650,8 +721,11 @@ bool vtkVolGridQuality::Execute(vtkDataSet* input, vtkDataSet* output, vtkTable*
   this->SetProgressText("Statistics");
   const vtkIdType numCells = input->GetNumberOfCells();
   int selected = effectiveMetric(this->Metric, volume);
-  if (volume && selected >= NON_ORTHOGONALITY && arrays.size() <= static_cast<size_t>(RADIUS_RATIO) + 1)
-    selected = MAX_DIHEDRAL_ANGLE; // no CFD metrics: the grid is not made of tets only
+  const bool measured = std::any_of(arrays.begin(), arrays.end(),
+                                    [&](const vtkSmartPointer<vtkDoubleArray>& a)
+                                    { return std::strcmp(a->GetName(), kMetrics[selected].name) == 0; });
+  if (volume && !measured)
+    selected = MAX_DIHEDRAL_ANGLE; // no CFD metrics (not tets only) or no wedge metrics (no wedges)
 
   vtkCellData* cd = output->GetCellData();
   auto bin = vtkSmartPointer<vtkIntArray>::New();
@@ -674,9 +748,9 @@ bool vtkVolGridQuality::Execute(vtkDataSet* input, vtkDataSet* output, vtkTable*
     }
     cd->AddArray(a);
     const vq::Statistics s = parallelStatistics(a->GetPointer(0), numCells, this->BinCount, info->worst);
-    if (info->id == VOLUME)
+    if (info->id == VOLUME || info->id == WEDGE_VOLUME)
     {
-      totalVolume = s.mean * static_cast<double>(s.count);
+      totalVolume += s.mean * static_cast<double>(s.count);
     }
     if (info->id == selected)
     {

@@ -2,8 +2,8 @@
  * @class   vtkVolGridQuality
  * @brief   Volume and surface grid quality of the VolGrid paper (section 8.2), threaded, with statistics.
  *
- * Input: a vtkUnstructuredGrid (tetrahedra are measured) or a vtkPolyData (triangles are measured).
- * Other cells are skipped: their values are NaN and a warning says how many there were.
+ * Input: a vtkUnstructuredGrid (tetrahedra and wedges are measured) or a vtkPolyData (triangles are
+ * measured). Other cells are skipped: their values are NaN and a warning says how many there were.
  *
  * Output port 0: the input with per-cell arrays added.
  *  - Volume grids: AspectRatio, MinDihedralAngle, MaxDihedralAngle (degrees), MinSolidAngle (steradians),
@@ -11,6 +11,11 @@
  *    face neighbour), RadiusEdgeRatio, RadiusRatio (vtkMeshQuality's tet radius ratio); for grids of
  *    tets only, the CFD metrics of OpenFOAM's checkMesh (Core/Quality/CfdQuality.h), each the largest over the
  *    cell's faces: NonOrthogonality (degrees), Skewness, VolumeRatio (with the face neighbours).
+ *    Wedges (boundary-layer prisms) get their own arrays, NaN on the other cells (the tet arrays are NaN
+ *    on wedges): WedgeVolume (signed) and WedgeScaledJacobian (the smallest corner's, 1 for a right prism
+ *    on an equilateral triangle at any height, <= 0 at an inverted corner), as Core/Quality/PrismQuality.h
+ *    defines them; field data NumberOfWedges and InvertedWedges (wedges with a corner tet that is not
+ *    positive, decided exactly). TotalVolume is the tets' and the wedges' volume.
  *  - Surface grids: AspectRatio, Area, MinAngle, MaxAngle (degrees).
  *  - Quality: a copy of the selected metric (see SetMetric), so that ParaView colours by it at once.
  *  Field data: per metric a 6-component array "<Metric>Statistics" (Count, Min, Max, Mean, StdDev,
@@ -62,7 +67,9 @@ public:
     MAX_ANGLE = 10,
     NON_ORTHOGONALITY = 11, // CFD metrics of pure tet grids, as OpenFOAM's checkMesh (Core/Quality/CfdQuality.h)
     SKEWNESS = 12,
-    VOLUME_RATIO = 13
+    VOLUME_RATIO = 13,
+    WEDGE_VOLUME = 14, // boundary-layer prisms (VTK_WEDGE), Core/Quality/PrismQuality.h
+    WEDGE_SCALED_JACOBIAN = 15
   };
 
   ///@{
@@ -71,9 +78,9 @@ public:
    * for a surface uses its surface counterpart and vice versa: dihedral and solid angles <-> triangle
    * angles (min to MinAngle, max to MaxAngle), Volume and VolumeGradient <-> Area, RadiusEdgeRatio and
    * RadiusRatio -> AspectRatio. The CFD metrics fall back to MaxDihedralAngle on grids that are not
-   * pure tets, AspectRatio on surfaces.
+   * pure tets, the wedge metrics on grids without wedges; both to AspectRatio on surfaces.
    */
-  vtkSetClampMacro(Metric, int, ASPECT_RATIO, VOLUME_RATIO);
+  vtkSetClampMacro(Metric, int, ASPECT_RATIO, WEDGE_SCALED_JACOBIAN);
   vtkGetMacro(Metric, int);
   ///@}
 

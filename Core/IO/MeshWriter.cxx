@@ -98,6 +98,12 @@ const char* meshFormatName(MeshFormat format)
   }
 }
 
+bool writesPrisms(MeshFormat format)
+{
+  return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM ||
+    format == MeshFormat::SU2 || format == MeshFormat::CGNS || format == MeshFormat::Exodus;
+}
+
 std::string defaultOpenFoamPatchType(const std::string& name)
 {
   if (contains(name, "symmetry"))
@@ -121,11 +127,11 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
     normalizeLabels(copy);
     return writeSolverMesh(path, copy, format, options);
   }
-  if ((!mesh.prisms.empty() || !mesh.quads.empty()) && format != MeshFormat::Gmsh41 && format != MeshFormat::Gmsh22)
-    return Status::failure(ErrorKind::InvalidOption,
-                           "'" + path +
-                             "': prisms are written to gmsh .msh (and VTK) only; split "
-                             "them into tets for this format");
+  if ((!mesh.prisms.empty() || !mesh.quads.empty()) && !writesPrisms(format))
+    return Status::failure(
+      ErrorKind::InvalidOption,
+      "'" + path + "': prisms are not written to " + meshFormatName(format) +
+        " (gmsh, OpenFOAM, SU2, CGNS, Exodus II and VTK take them); split them into tets for this format");
   switch (format)
   {
     case MeshFormat::Gmsh41:

@@ -38,6 +38,8 @@ MeshFormat meshFormatFromPath(const std::string& path);
 // The common stem of a TetGen file set, for its reader and its writer: "a.node", "a.ele", "a.face", "a" -> "a".
 std::string tetgenStem(const std::string& path);
 const char* meshFormatName(MeshFormat format);
+// Whether the format's writer takes boundary-layer prisms and boundary quads (SolverMesh::prisms, quads).
+bool writesPrisms(MeshFormat format);
 
 struct MeshWriteOptions
 {
@@ -61,7 +63,7 @@ Status writeMedit(const std::string& path, const SolverMesh& mesh);
 // `path` names the stem or any of the three files; all three are written (each atomically).
 Status writeTetGen(const std::string& path, const SolverMesh& mesh);
 Status writeCGNS(const std::string& path, const SolverMesh& mesh);
-// Fails when a boundary triangle is not a face of a tet (a side set lists faces as tet sides).
+// Fails when a boundary triangle (quad) is not a face of a tet or prism (a side set lists element sides).
 Status writeExodus(const std::string& path, const SolverMesh& mesh);
 // `caseDir` must not exist; it is built under a temporary name and renamed when complete. Patch names
 // must be OpenFOAM words.

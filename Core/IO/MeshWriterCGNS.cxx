@@ -1,6 +1,8 @@
 // CGNS writer (Debian's libcgns, HDF5): one base, one unstructured zone; the tets in one TETRA_4 section
-// per region (named after the region), then the boundary triangles in one TRI_3 section per patch, and one
-// boundary condition per patch, named after it, over that section's element range (face-centred). Each
+// per region (named after the region), the boundary-layer prisms in one PENTA_6 section per region
+// ("<region>_prisms"; SolverMesh's order is CGNS's: face (1 3 2) points out), then per patch its boundary
+// triangles (TRI_3 section) and prism side quads (QUAD_4 section "<patch>_quads", right after), and one
+// boundary condition per patch, named after it, over the element range of its sections (face-centred). Each
 // condition is FamilySpecified, its family (same name) holding the type (wall, symmetry, far field ...):
 // the usual CGNS practice, and the form ParaView's reader takes for every type.
 #include "LibraryOutput.h"
@@ -44,22 +46,27 @@ std::string cgnsName(const std::string& name)
 // The first patch or region name CGNS cannot hold whole, as an error message ("" when all fit).
 std::string longNameError(const SolverMesh& mesh)
 {
-  for (int32_t p : distinctLabels(mesh.trianglePatch))
+  std::vector<int32_t> faces = mesh.trianglePatch, cells = mesh.tetRegion;
+  faces.insert(faces.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
+  cells.insert(cells.end(), mesh.prismRegion.begin(), mesh.prismRegion.end());
+  for (int32_t p : distinctLabels(faces))
     if (labelName(mesh.patchNames, p, "patch").size() > 32)
       return "patch name '" + labelName(mesh.patchNames, p, "patch") + "' is longer than CGNS's 32 characters";
-  for (int32_t r : distinctLabels(mesh.tetRegion))
+  for (int32_t r : distinctLabels(cells))
     if (labelName(mesh.regionNames, r, "region").size() > 32)
       return "region name '" + labelName(mesh.regionNames, r, "region") + "' is longer than CGNS's 32 characters";
   return "";
 }
 
-// Writes the element sections of one label kind: cells of `type` with `perCell` vertices, grouped by
-// label in ascending order, numbered from `next`. Returns each group's first and last element number.
+// Writes the element sections of one label kind: cells of `type` with `perCell` vertices, one section per
+// label of `only` that has cells (named after the label, plus `suffix`), numbered from `next`. Returns
+// each label's first and last element number (next, next - 1 when it has none).
 bool writeSections(int file, int base, int zone, CGNS_ENUMT(ElementType_t) type, int perCell,
                    const std::vector<int32_t>& cells, const std::vector<int32_t>& labels, const NameTable& names,
-                   const char* prefix, cgsize_t& next, std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
+                   const char* prefix, const char* suffix, const std::vector<int32_t>& only, cgsize_t& next,
+                   std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
 {
-  for (int32_t label : distinctLabels(labels))
+  for (int32_t label : only)
   {
     std::vector<cgsize_t> connectivity;
     for (size_t c = 0; c < labels.size(); ++c)
@@ -67,20 +74,22 @@ bool writeSections(int file, int base, int zone, CGNS_ENUMT(ElementType_t) type,
         for (int k = 0; k < perCell; ++k)
           connectivity.push_back(static_cast<cgsize_t>(cells[perCell * c + k]) + 1);
     const cgsize_t count = static_cast<cgsize_t>(connectivity.size() / perCell);
-    int section = 0;
-    if (cg_section_write(file, base, zone, cgnsName(labelName(names, label, prefix)).c_str(), type, next,
-                         next + count - 1, 0, connectivity.data(), &section) != CG_OK)
-      return false;
     ranges.emplace_back(next, next + count - 1);
+    if (count == 0)
+      continue;
+    const std::string name = cgnsName(labelName(names, label, prefix)).substr(0, 32 - std::string(suffix).size());
+    int section = 0;
+    if (cg_section_write(file, base, zone, (name + suffix).c_str(), type, next, next + count - 1, 0,
+                         connectivity.data(), &section) != CG_OK)
+      return false;
     next += count;
   }
   return true;
 }
 
-bool writeBoundaryConditions(int file, int base, int zone, const SolverMesh& mesh,
+bool writeBoundaryConditions(int file, int base, int zone, const SolverMesh& mesh, const std::vector<int32_t>& patches,
                              const std::vector<std::pair<cgsize_t, cgsize_t>>& ranges)
 {
-  const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
   for (size_t k = 0; k < patches.size(); ++k)
   {
     const std::string name = cgnsName(labelName(mesh.patchNames, patches[k], "patch"));
@@ -101,7 +110,8 @@ bool writeBoundaryConditions(int file, int base, int zone, const SolverMesh& mes
 bool writeZone(int file, const SolverMesh& mesh)
 {
   int base = 0, zone = 0, coordinate = 0;
-  cgsize_t size[3] = { static_cast<cgsize_t>(mesh.numberOfPoints()), static_cast<cgsize_t>(mesh.numberOfTets()), 0 };
+  const cgsize_t cells = static_cast<cgsize_t>(mesh.numberOfTets() + static_cast<int64_t>(mesh.prisms.size() / 6));
+  cgsize_t size[3] = { static_cast<cgsize_t>(mesh.numberOfPoints()), cells, 0 };
   if (cg_base_write(file, "Base", 3, 3, &base) != CG_OK ||
       cg_zone_write(file, base, "Zone", size, CGNS_ENUMV(Unstructured), &zone) != CG_OK ||
       cg_goto(file, base, "end") != CG_OK || cg_dataclass_write(CGNS_ENUMV(NormalizedByUnknownDimensional)) != CG_OK)
@@ -120,18 +130,36 @@ bool writeZone(int file, const SolverMesh& mesh)
       return false;
   }
   cgsize_t next = 1;
-  std::vector<std::pair<cgsize_t, cgsize_t>> tetRanges, triangleRanges;
-  return writeSections(file, base, zone, CGNS_ENUMV(TETRA_4), 4, mesh.tets, mesh.tetRegion, mesh.regionNames, "region",
-                       next, tetRanges) &&
-    writeSections(file, base, zone, CGNS_ENUMV(TRI_3), 3, mesh.triangles, mesh.trianglePatch, mesh.patchNames, "patch",
-                  next, triangleRanges) &&
-    writeBoundaryConditions(file, base, zone, mesh, triangleRanges);
+  std::vector<std::pair<cgsize_t, cgsize_t>> cellRanges, patchRanges;
+  if (!writeSections(file, base, zone, CGNS_ENUMV(TETRA_4), 4, mesh.tets, mesh.tetRegion, mesh.regionNames, "region",
+                     "", distinctLabels(mesh.tetRegion), next, cellRanges) ||
+      !writeSections(file, base, zone, CGNS_ENUMV(PENTA_6), 6, mesh.prisms, mesh.prismRegion, mesh.regionNames,
+                     "region", "_prisms", distinctLabels(mesh.prismRegion), next, cellRanges))
+    return false;
+  // A patch's triangles and quads are consecutive: one element range for its boundary condition.
+  std::vector<int32_t> faces = mesh.trianglePatch;
+  faces.insert(faces.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
+  const std::vector<int32_t> patches = distinctLabels(faces);
+  for (int32_t p : patches)
+  {
+    std::vector<std::pair<cgsize_t, cgsize_t>> r;
+    if (!writeSections(file, base, zone, CGNS_ENUMV(TRI_3), 3, mesh.triangles, mesh.trianglePatch, mesh.patchNames,
+                       "patch", "", { p }, next, r) ||
+        !writeSections(file, base, zone, CGNS_ENUMV(QUAD_4), 4, mesh.quads, mesh.quadPatch, mesh.patchNames, "patch",
+                       "_quads", { p }, next, r))
+      return false;
+    patchRanges.emplace_back(r[0].first, r[1].second);
+  }
+  return writeBoundaryConditions(file, base, zone, mesh, patches, patchRanges);
 }
 } // namespace
 
 Status writeCGNS(const std::string& path, const SolverMesh& mesh)
 {
-  if (mesh.numberOfPoints() > 2147483647LL || mesh.numberOfTets() + mesh.numberOfTriangles() > 2147483647LL)
+  if (mesh.numberOfPoints() > 2147483647LL ||
+      mesh.numberOfTets() + mesh.numberOfTriangles() +
+          static_cast<int64_t>(mesh.prismRegion.size() + mesh.quadPatch.size()) >
+        2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
                            "cannot write CGNS file '" + path +
                              "': more than 2^31 points or elements (Debian's libcgns is 32-bit)");

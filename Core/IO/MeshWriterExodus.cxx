@@ -1,12 +1,17 @@
 // Exodus II writer (Debian's libexoIIv2c over netCDF): the tets in one TETRA element block per region
-// (block id = region label, named after the region), and one side set per patch (id = patch label, named
-// after it) listing each boundary triangle as (owning tet, Exodus side). Tets are numbered block by block,
-// as Exodus numbers elements. Point fields (SolverMesh::pointData) become nodal variables at time 0.
+// (block id = region label, named after the region), boundary-layer prisms in one WEDGE block per region
+// after them (id = region label + the largest tet region label, named "<region>_prisms"; SolverMesh's
+// order is Exodus's: side 4 (1 3 2) points out), and one side set per patch (id = patch label, named
+// after it) listing each boundary triangle and prism side quad as (owning element, Exodus side).
+// Elements are numbered block by block, as Exodus numbers them. Point fields (SolverMesh::pointData)
+// become nodal variables at time 0.
 #include "BoundaryFaceOwners.h"
+#include "CellFaces.h"
 #include "LibraryOutput.h"
 #include "MeshWriter.h"
 
 #include <algorithm>
+#include <array>
 #include <exodusII.h>
 
 namespace volgrid
@@ -35,9 +40,68 @@ int putNames(int file, ex_entity_type kind, const std::vector<int32_t>& labels, 
   return ex_put_names(file, kind, pointers.data());
 }
 
+// Side f + 1 of an Exodus II wedge in SolverMesh's order, outward (a triangle's fourth entry is -1).
+const int kExodusWedgeSide[5][4] = { { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 0, 3, 5, 2 }, { 0, 2, 1, -1 }, { 3, 4, 5, -1 } };
+
+// A boundary face's owner: its element (tets first, then prisms: prism w is element numberOfTets + w, both
+// 0-based before the block numbering) and its 0-based Exodus side.
+struct SideOwner
+{
+  int64_t cell = -1;
+  int side = -1;
+};
+
+// Owners of the boundary triangles (then the quads, after them): tet faces by findBoundaryFaceOwners, the
+// rest among the prisms' faces. Fails naming the first face that is neither.
+Status findSideOwners(const SolverMesh& mesh, std::vector<SideOwner>& owners)
+{
+  std::vector<FaceOwner> tetOwners;
+  const Status tets = findBoundaryFaceOwners(mesh, tetOwners);
+  if (!tets.ok() && mesh.prisms.empty())
+    return tets;
+  std::vector<std::pair<std::array<int32_t, 4>, SideOwner>> prismFaces;
+  for (size_t w = 0; w < mesh.prisms.size() / 6; ++w)
+    for (int side = 0; side < 5; ++side)
+    {
+      const int* f = kExodusWedgeSide[side];
+      const int32_t* v = mesh.prisms.data() + 6 * w;
+      prismFaces.push_back({ cellFaceKey(v[f[0]], v[f[1]], v[f[2]], f[3] < 0 ? -1 : v[f[3]]),
+                             { mesh.numberOfTets() + static_cast<int64_t>(w), side } });
+    }
+  std::sort(prismFaces.begin(), prismFaces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const auto prismOwner = [&](const std::array<int32_t, 4>& key)
+  {
+    const auto it = std::lower_bound(prismFaces.begin(), prismFaces.end(), key,
+                                     [](const auto& a, const std::array<int32_t, 4>& k) { return a.first < k; });
+    return it != prismFaces.end() && it->first == key ? it->second : SideOwner();
+  };
+  owners.assign(mesh.triangles.size() / 3 + mesh.quads.size() / 4, SideOwner());
+  for (size_t t = 0; t < owners.size(); ++t)
+  {
+    const bool triangle = t < mesh.triangles.size() / 3;
+    if (triangle && tetOwners[t].tet >= 0)
+      owners[t] = { tetOwners[t].tet, tetOwners[t].side };
+    else if (triangle)
+      owners[t] = prismOwner(cellFaceKey(mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]));
+    else
+    {
+      const int32_t* q = mesh.quads.data() + 4 * (t - mesh.triangles.size() / 3);
+      owners[t] = prismOwner(cellFaceKey(q[0], q[1], q[2], q[3]));
+    }
+    if (owners[t].cell < 0)
+      return Status::failure(ErrorKind::InvalidOption,
+                             std::string("boundary ") + (triangle ? "triangle " : "quad ") +
+                               std::to_string(triangle ? t : t - mesh.triangles.size() / 3) +
+                               " is not a face of any tet or prism");
+  }
+  return Status::success();
+}
+
 size_t longestName(const SolverMesh& mesh)
 {
   size_t longest = 0;
+  for (int32_t r : distinctLabels(mesh.prismRegion))
+    longest = std::max(longest, labelName(mesh.regionNames, r, "region").size() + 7);
   for (int32_t p : distinctLabels(mesh.trianglePatch))
     longest = std::max(longest, labelName(mesh.patchNames, p, "patch").size());
   for (int32_t r : distinctLabels(mesh.tetRegion))
@@ -47,41 +111,66 @@ size_t longestName(const SolverMesh& mesh)
   return longest;
 }
 
-// The tets block by block (ascending region label); elementNumber[t] is tet t's 1-based Exodus number.
+// The cells of one kind block by block (ascending label), numbered from `next`; elementNumber[first + c]
+// is cell c's 1-based Exodus number.
+bool writeKindBlocks(int file, const char* type, int nv, const std::vector<int32_t>& cells,
+                     const std::vector<int32_t>& labels, int32_t idOffset, size_t first, int64_t& next,
+                     std::vector<int64_t>& elementNumber)
+{
+  for (int32_t label : distinctLabels(labels))
+  {
+    std::vector<int> connectivity;
+    for (size_t c = 0; c < labels.size(); ++c)
+    {
+      if (labels[c] != label)
+        continue;
+      elementNumber[first + c] = next++;
+      for (int k = 0; k < nv; ++k)
+        connectivity.push_back(cells[nv * c + k] + 1);
+    }
+    if (ex_put_elem_block(file, label + idOffset, type, static_cast<int>(connectivity.size() / nv), nv, 0) < 0 ||
+        ex_put_elem_conn(file, label + idOffset, connectivity.data()) < 0)
+      return false;
+  }
+  return true;
+}
+
+// The tet blocks, then the prism blocks; their names.
 bool writeBlocks(int file, const SolverMesh& mesh, const std::vector<int32_t>& regions,
                  std::vector<int64_t>& elementNumber)
 {
-  elementNumber.assign(static_cast<size_t>(mesh.numberOfTets()), 0);
+  const std::vector<int32_t> prismRegions = distinctLabels(mesh.prismRegion);
+  const int32_t offset = regions.empty() ? 0 : regions.back();
+  elementNumber.assign(mesh.tetRegion.size() + mesh.prismRegion.size(), 0);
   int64_t next = 1;
-  for (int32_t region : regions)
-  {
-    std::vector<int> connectivity;
-    for (int64_t t = 0; t < mesh.numberOfTets(); ++t)
-    {
-      if (mesh.tetRegion[t] != region)
-        continue;
-      elementNumber[t] = next++;
-      for (int k = 0; k < 4; ++k)
-        connectivity.push_back(mesh.tets[4 * t + k] + 1);
-    }
-    if (ex_put_elem_block(file, region, "TETRA", static_cast<int>(connectivity.size() / 4), 4, 0) < 0 ||
-        ex_put_elem_conn(file, region, connectivity.data()) < 0)
-      return false;
-  }
-  return putNames(file, EX_ELEM_BLOCK, regions, mesh.regionNames, "region") >= 0;
+  if (!writeKindBlocks(file, "TETRA", 4, mesh.tets, mesh.tetRegion, 0, 0, next, elementNumber) ||
+      !writeKindBlocks(file, "WEDGE", 6, mesh.prisms, mesh.prismRegion, offset, mesh.tetRegion.size(), next,
+                       elementNumber))
+    return false;
+  std::vector<std::string> texts;
+  for (int32_t r : regions)
+    texts.push_back(labelName(mesh.regionNames, r, "region"));
+  for (int32_t r : prismRegions)
+    texts.push_back(labelName(mesh.regionNames, r, "region") + "_prisms");
+  std::vector<char*> pointers;
+  for (std::string& t : texts)
+    pointers.push_back(&t[0]);
+  return ex_put_names(file, EX_ELEM_BLOCK, pointers.data()) >= 0;
 }
 
 bool writeSideSets(int file, const SolverMesh& mesh, const std::vector<int32_t>& patches,
-                   const std::vector<FaceOwner>& owners, const std::vector<int64_t>& elementNumber)
+                   const std::vector<SideOwner>& owners, const std::vector<int64_t>& elementNumber)
 {
+  std::vector<int32_t> facePatch = mesh.trianglePatch; // triangles, then quads, as the owners
+  facePatch.insert(facePatch.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
   for (int32_t patch : patches)
   {
     std::vector<int> elements, sides;
-    for (int64_t t = 0; t < mesh.numberOfTriangles(); ++t)
+    for (size_t t = 0; t < facePatch.size(); ++t)
     {
-      if (mesh.trianglePatch[t] != patch)
+      if (facePatch[t] != patch)
         continue;
-      elements.push_back(static_cast<int>(elementNumber[owners[t].tet]));
+      elements.push_back(static_cast<int>(elementNumber[owners[t].cell]));
       sides.push_back(owners[t].side + 1);
     }
     if (ex_put_side_set_param(file, patch, static_cast<int>(elements.size()), 0) < 0 ||
@@ -115,16 +204,19 @@ bool writePointData(int file, const SolverMesh& mesh)
   return true;
 }
 
-bool writeFile(int file, const SolverMesh& mesh, const std::vector<FaceOwner>& owners)
+bool writeFile(int file, const SolverMesh& mesh, const std::vector<SideOwner>& owners)
 {
   const std::vector<int32_t> regions = distinctLabels(mesh.tetRegion);
-  const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
+  std::vector<int32_t> faces = mesh.trianglePatch;
+  faces.insert(faces.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
+  const std::vector<int32_t> patches = distinctLabels(faces);
+  const size_t blocks = regions.size() + distinctLabels(mesh.prismRegion).size();
+  const int64_t elements = mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size());
   const size_t longest = longestName(mesh);
   if (longest > 32 && ex_set_max_name_length(file, static_cast<int>(longest)) < 0)
     return false;
   if (ex_put_init(file, "VolGrid tetrahedral mesh", 3, static_cast<int>(mesh.numberOfPoints()),
-                  static_cast<int>(mesh.numberOfTets()), static_cast<int>(regions.size()), 0,
-                  static_cast<int>(patches.size())) < 0)
+                  static_cast<int>(elements), static_cast<int>(blocks), 0, static_cast<int>(patches.size())) < 0)
     return false;
   std::vector<double> xyz[3];
   for (int axis = 0; axis < 3; ++axis)
@@ -141,11 +233,12 @@ bool writeFile(int file, const SolverMesh& mesh, const std::vector<FaceOwner>& o
 
 Status writeExodus(const std::string& path, const SolverMesh& mesh)
 {
-  if (mesh.numberOfPoints() > 2147483647LL || mesh.numberOfTets() > 2147483647LL)
+  if (mesh.numberOfPoints() > 2147483647LL ||
+      mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size()) > 2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
-                           "cannot write Exodus II file '" + path + "': more than 2^31 points or tets");
-  std::vector<FaceOwner> owners;
-  Status s = findBoundaryFaceOwners(mesh, owners);
+                           "cannot write Exodus II file '" + path + "': more than 2^31 points or cells");
+  std::vector<SideOwner> owners;
+  Status s = findSideOwners(mesh, owners);
   if (!s.ok())
     return Status::failure(ErrorKind::InvalidOption, "cannot write Exodus II file '" + path + "': " + s.message);
   LibraryOutput out;

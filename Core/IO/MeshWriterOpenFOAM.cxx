@@ -1,12 +1,13 @@
 // OpenFOAM polyMesh writer: CASE/constant/polyMesh/{points,faces,owner,neighbour,boundary}, ASCII.
-// Every tet is a cell. Faces are oriented out of their owner; internal faces come first, in upper
-// triangular order (owner < neighbour, sorted by owner then neighbour), then the boundary faces grouped
-// by patch in label order. Boundary faces take the patch of the boundary triangle with the same three
-// points; a boundary face without one fails (the mesh and its patches disagree). Triangles between two
-// tets (an interface between regions) are internal faces.
+// Every prism (first, as in the .vtu) and every tet is a cell; faces are triangles or quads (prism
+// sides). Faces are oriented out of their owner; internal faces come first, in upper triangular order
+// (owner < neighbour, sorted by owner then neighbour), then the boundary faces grouped by patch in label
+// order. A boundary face takes the patch of the boundary triangle (or quad: prism sides on a symmetry
+// plane) with the same points; a boundary face without one fails (the mesh and its patches disagree).
+// Triangles between two cells (an interface between regions) are internal faces.
+#include "CellFaces.h"
 #include "MeshWriter.h"
 #include "OutputFile.h"
-#include "TetFaces.h"
 
 #include <algorithm>
 #include <array>
@@ -23,45 +24,65 @@ namespace
 {
 struct PolyMesh
 {
-  std::vector<std::array<int32_t, 3>> faces;
+  std::vector<std::array<int32_t, 4>> faces;  // a triangle's fourth point is -1
   std::vector<int32_t> owner, neighbour;      // neighbour: internal faces only
   std::vector<int32_t> patchStart, patchSize; // per patch in label order
 };
 
+std::string faceText(const std::array<int32_t, 4>& key)
+{
+  std::string text = "(" + std::to_string(key[0]);
+  for (int k = 1; k < 4 && key[k] >= 0; ++k)
+    text += " " + std::to_string(key[k]);
+  return text + ")";
+}
+
+// The boundary triangles and quads by sorted key, with their patch.
+std::vector<std::pair<std::array<int32_t, 4>, int32_t>> boundaryKeys(const SolverMesh& mesh)
+{
+  std::vector<std::pair<std::array<int32_t, 4>, int32_t>> keys;
+  for (int64_t t = 0; t < mesh.numberOfTriangles(); ++t)
+    keys.emplace_back(cellFaceKey(mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]),
+                      mesh.trianglePatch[t]);
+  for (size_t q = 0; q < mesh.quadPatch.size(); ++q)
+    keys.emplace_back(
+      cellFaceKey(mesh.quads[4 * q], mesh.quads[4 * q + 1], mesh.quads[4 * q + 2], mesh.quads[4 * q + 3]),
+      mesh.quadPatch[q]);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 Status buildPolyMesh(const SolverMesh& mesh, const std::vector<int32_t>& patches, PolyMesh& poly)
 {
-  const std::vector<TetFace> faces = sortedTetFaces(mesh.points, mesh.tets);
+  const std::vector<CellFace> faces = sortedCellFaces(mesh.points, mesh.tets, mesh.prisms);
   struct Internal
   {
     int32_t owner, neighbour;
-    std::array<int32_t, 3> loop;
+    std::array<int32_t, 4> loop;
   };
   std::vector<Internal> internal;
-  std::vector<std::pair<int32_t, const TetFace*>> boundary; // (patch, face)
-  std::vector<std::pair<std::array<int32_t, 3>, int32_t>> triangleKeys;
-  for (int64_t t = 0; t < mesh.numberOfTriangles(); ++t)
-  {
-    std::array<int32_t, 3> k = { mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2] };
-    std::sort(k.begin(), k.end());
-    triangleKeys.emplace_back(k, mesh.trianglePatch[t]);
-  }
-  std::sort(triangleKeys.begin(), triangleKeys.end());
+  std::vector<std::pair<int32_t, const CellFace*>> boundary; // (patch, face)
+  const std::vector<std::pair<std::array<int32_t, 4>, int32_t>> keys = boundaryKeys(mesh);
   for (size_t i = 0; i < faces.size();)
   {
     if (i + 1 < faces.size() && faces[i + 1].key == faces[i].key)
     {
-      const TetFace& a = faces[i]; // sorted: the smaller tet first
-      const TetFace& b = faces[i + 1];
-      internal.push_back({ a.tet, b.tet, a.loop });
+      if (i + 2 < faces.size() && faces[i + 2].key == faces[i].key)
+        return Status::failure(ErrorKind::InvalidOption,
+                               "face " + faceText(faces[i].key) + " is shared by more than two cells (" +
+                                 std::to_string(faces[i].cell) + ", " + std::to_string(faces[i + 1].cell) + ", " +
+                                 std::to_string(faces[i + 2].cell) + ")");
+      const CellFace& a = faces[i]; // sorted: the smaller cell first
+      const CellFace& b = faces[i + 1];
+      internal.push_back({ a.cell, b.cell, a.loop });
       i += 2;
       continue;
     }
-    const auto it = std::lower_bound(triangleKeys.begin(), triangleKeys.end(), std::make_pair(faces[i].key, INT32_MIN));
-    if (it == triangleKeys.end() || it->first != faces[i].key)
+    const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(faces[i].key, INT32_MIN));
+    if (it == keys.end() || it->first != faces[i].key)
       return Status::failure(ErrorKind::InvalidOption,
-                             "boundary face (" + std::to_string(faces[i].key[0]) + " " +
-                               std::to_string(faces[i].key[1]) + " " + std::to_string(faces[i].key[2]) + ") of tet " +
-                               std::to_string(faces[i].tet) + " is in no patch");
+                             "boundary face " + faceText(faces[i].key) + " of cell " + std::to_string(faces[i].cell) +
+                               " is in no patch");
     boundary.emplace_back(it->second, &faces[i]);
     ++i;
   }
@@ -82,7 +103,7 @@ Status buildPolyMesh(const SolverMesh& mesh, const std::vector<int32_t>& patches
     for (; b < boundary.size() && boundary[b].first == p; ++b)
     {
       poly.faces.push_back(boundary[b].second->loop);
-      poly.owner.push_back(boundary[b].second->tet);
+      poly.owner.push_back(boundary[b].second->cell);
     }
     poly.patchSize.push_back(static_cast<int32_t>(poly.faces.size()) - poly.patchStart.back());
   }
@@ -129,17 +150,21 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
     return s;
   foamHeader(faces.stream(), "faceList", "faces", "");
   std::fprintf(faces.stream(), "%zu\n(\n", poly.faces.size());
-  for (const auto& f : poly.faces) // each loop from its smallest point id: independent of the tet's vertex order
+  for (const auto& f : poly.faces) // each loop from its smallest point id: independent of the cell's vertex order
   {
-    const int k = f[0] < f[1] ? (f[0] < f[2] ? 0 : 2) : (f[1] < f[2] ? 1 : 2);
-    std::fprintf(faces.stream(), "3(%d %d %d)\n", f[k], f[(k + 1) % 3], f[(k + 2) % 3]);
+    const int n = f[3] < 0 ? 3 : 4;
+    const int k = static_cast<int>(std::min_element(f.begin(), f.begin() + n) - f.begin());
+    std::fprintf(faces.stream(), "%d(%d", n, f[k]);
+    for (int j = 1; j < n; ++j)
+      std::fprintf(faces.stream(), " %d", f[(k + j) % n]);
+    std::fprintf(faces.stream(), ")\n");
   }
   std::fprintf(faces.stream(), ")\n");
   if (!(s = faces.commit()).ok())
     return s;
   const std::string note = "nPoints:" + std::to_string(mesh.numberOfPoints()) +
-    "  nCells:" + std::to_string(mesh.numberOfTets()) + "  nFaces:" + std::to_string(poly.faces.size()) +
-    "  nInternalFaces:" + std::to_string(poly.neighbour.size());
+    "  nCells:" + std::to_string(mesh.numberOfTets() + static_cast<int64_t>(mesh.prisms.size() / 6)) +
+    "  nFaces:" + std::to_string(poly.faces.size()) + "  nInternalFaces:" + std::to_string(poly.neighbour.size());
   if (!(s = writeLabels(dir + "/owner", "owner", poly.owner, note)).ok() ||
       !(s = writeLabels(dir + "/neighbour", "neighbour", poly.neighbour, note)).ok() ||
       !(s = boundary.open(dir + "/boundary")).ok())
@@ -164,7 +189,9 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
 Status writeOpenFOAM(const std::string& caseDir, const SolverMesh& mesh, const MeshWriteOptions& options)
 {
   namespace fs = std::filesystem;
-  const std::vector<int32_t> patches = distinctLabels(mesh.trianglePatch);
+  std::vector<int32_t> allPatches = mesh.trianglePatch;
+  allPatches.insert(allPatches.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
+  const std::vector<int32_t> patches = distinctLabels(allPatches);
   for (int32_t p : patches)
   {
     const std::string name = labelName(mesh.patchNames, p, "patch");

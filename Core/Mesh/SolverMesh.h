@@ -23,7 +23,7 @@ struct SolverMesh
   std::vector<int32_t> trianglePatch; // one per boundary triangle
   // Boundary-layer prisms (Layers/BoundaryLayers.h): 6 per prism, base a,b,c whose normal points to the top
   // a',b',c' (gmsh's order), with a region label each; boundary quads (prism sides on a symmetry plane),
-  // 4 per quad, with a patch label each. Only the gmsh writers take them (writeSolverMesh refuses else).
+  // 4 per quad, with a patch label each. Only the writers of writesPrisms (MeshWriter.h) take them.
   std::vector<int32_t> prisms;
   std::vector<int32_t> prismRegion;
   std::vector<int32_t> quads;

@@ -44,39 +44,142 @@ if r.returncode == 0:
     header = open(w("sis.vtu"), "rb").read(4000)
     expect(b'Name="LayerIndex"' in header and b'Name="ThinnedReason"' in header, "cell arrays in the .vtu")
 
+FOAM = "/usr/share/openfoam/etc/bashrc"
+
+
+def foam_case(case):
+    """The system/ dictionaries checkMesh needs beside a written constant/polyMesh."""
+    os.makedirs(os.path.join(case, "system"), exist_ok=True)
+    with open(os.path.join(case, "system/controlDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }\n"
+                "application checkMesh;\nstartTime 0;\nendTime 1;\ndeltaT 1;\nwriteInterval 1;\n")
+    for name, body in (("fvSchemes", "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
+                        "divSchemes { default none; }\nlaplacianSchemes { default Gauss linear corrected; }\n"
+                        "interpolationSchemes { default linear; }\nsnGradSchemes { default corrected; }\n"),
+                       ("fvSolution", "")):
+        with open(os.path.join(case, "system", name), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n%s" % (name, body))
+
+
+def check_mesh(case, before=""):
+    """checkMesh on `case` (after the shell command `before`, run in it); None when OpenFOAM is absent."""
+    if not os.path.exists(FOAM):
+        return None
+    foam_case(case)
+    return run(["bash", "-c", "source %s >/dev/null 2>&1; cd '%s' && %s checkMesh" % (FOAM, case, before)],
+               timeout=900)
+
+
+def check_mesh_counts(out):
+    """checkMesh's cell, face and point counts, cell shapes and failed checks, for comparing two cases."""
+    keys = ("points", "faces", "internal faces", "cells", "boundary patches", "tetrahedra", "prisms", "polyhedra")
+    counts = {k: int(m.group(1)) for k in keys for m in [re.search(r"^\s+%s:\s+(\d+)" % k, out, re.M)] if m}
+    failed = re.search(r"Failed (\d+) mesh checks", out)
+    counts["failed"] = int(failed.group(1)) if failed else 0
+    skew = re.search(r"\*\*\*Max skewness = ([0-9.e+-]+), (\d+) highly skew faces", out)
+    counts["skew"] = (round(float(skew.group(1)), 2), int(skew.group(2))) if skew else None
+    return counts
+
+
 # Split prisms: a tet-only mesh; checkMesh must say "Mesh OK" when OpenFOAM is installed.
 r = run([volgrid, "mesh", w("sis.off"), w("sis_foam"), "--format", "openfoam", "--split-prisms", "--json"] + layers)
 expect(r.returncode == 0, "split prisms to OpenFOAM", r)
 if r.returncode == 0:
     j = json.loads(r.stdout.strip().splitlines()[-1])
     expect(j["wedges"] == 0 and j["tets"] > 30 * j["layered_faces"], "3 tets per prism: %s" % j)
-    foam = "/usr/share/openfoam/etc/bashrc"
-    if os.path.exists(foam):
-        os.makedirs(w("sis_foam/system"), exist_ok=True)
-        with open(w("sis_foam/system/controlDict"), "w") as f:
-            f.write("FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }\n"
-                    "application checkMesh;\nstartTime 0;\nendTime 1;\ndeltaT 1;\nwriteInterval 1;\n")
-        for name, body in (("fvSchemes", "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
-                            "divSchemes { default none; }\nlaplacianSchemes { default Gauss linear corrected; }\n"
-                            "interpolationSchemes { default linear; }\nsnGradSchemes { default corrected; }\n"),
-                           ("fvSolution", "")):
-            with open(w("sis_foam/system/" + name), "w") as f:
-                f.write("FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n%s" % (name, body))
-        c = run(["bash", "-c", "source %s >/dev/null 2>&1; cd '%s' && checkMesh" % (foam, w("sis_foam"))], timeout=600)
-        expect("Mesh OK." in c.stdout, "checkMesh on the split layers: Mesh OK", c)
-    else:
+    c = check_mesh(w("sis_foam"))
+    if c is None:
         print("skipped checkMesh: OpenFOAM is not installed")
+    else:
+        expect("Mesh OK." in c.stdout, "checkMesh on the split layers: Mesh OK", c)
+
+# Prisms written to OpenFOAM directly (no gmshToFoam): checkMesh sees every wedge as a prism.
+r = run([volgrid, "mesh", w("sis.off"), w("sis_prisms"), "--format", "openfoam", "--json"] + layers)
+expect(r.returncode == 0, "prisms to OpenFOAM", r)
+if r.returncode == 0:
+    j = json.loads(r.stdout.strip().splitlines()[-1])
+    c = check_mesh(w("sis_prisms"))
+    if c is not None:
+        n = check_mesh_counts(c.stdout)
+        expect("Mesh OK." in c.stdout and n.get("prisms") == j["wedges"] and n.get("tetrahedra") == j["tets"]
+               and n.get("cells") == j["wedges"] + j["tets"], "checkMesh on the OpenFOAM prisms: Mesh OK, %s" % n, c)
 
 # Wedges in gmsh 2.2 through gmshToFoam: checkMesh on the mixed mesh itself.
 r = run([volgrid, "mesh", w("sis.off"), w("sis.msh"), "--format", "gmsh22"] + layers)
 expect(r.returncode == 0, "prisms to gmsh 2.2", r)
-if r.returncode == 0 and os.path.exists("/usr/share/openfoam/etc/bashrc"):
+if r.returncode == 0:
     os.makedirs(w("sis_gmsh"), exist_ok=True)
-    shutil.copytree(w("sis_foam/system"), w("sis_gmsh/system"))
-    c = run(["bash", "-c", "source /usr/share/openfoam/etc/bashrc >/dev/null 2>&1; cd '%s' && gmshToFoam ../sis.msh "
-             "&& checkMesh" % w("sis_gmsh")], timeout=600)
-    expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
-           "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
+    c = check_mesh(w("sis_gmsh"), "gmshToFoam ../sis.msh &&")
+    if c is not None:
+        expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
+               "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
+
+# Prisms in SU2, CGNS and Exodus II, read back by readers VolGrid did not write (mixed_mesh_readers.py under pvpython):
+# cells by type and volumes equal to the .vtu's; cgnscheck finds nothing.
+PVPYTHON = shutil.which("pvpython")
+READERS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mixed_mesh_readers.py")
+
+
+def read_mixed(kind, path):
+    c = run([PVPYTHON, READERS, kind, path], timeout=600)
+    return json.loads(c.stdout.strip().splitlines()[-1]) if c.returncode == 0 else {"error": c.describe()}
+
+
+def close(a, b, tolerance=1e-9):
+    return abs(a - b) <= tolerance * max(abs(a), abs(b))
+
+
+for fmt in ("su2", "cgns", "exo"):
+    r = run([volgrid, "mesh", w("sis.off"), w("sis." + fmt), "--json"] + layers)
+    expect(r.returncode == 0, "prisms to " + fmt, r)
+su2_cells = [l.split()[0] for l in open(w("sis.su2")).read().split("NPOIN=")[0].splitlines()[2:]]
+expect(su2_cells.count("13") == 24200 and su2_cells.count("10") + su2_cells.count("13") == len(su2_cells),
+       "SU2: 24200 prisms (type 13) after the tets")
+if PVPYTHON:
+    ref = read_mixed("vtu", w("sis.vtu"))
+    su2, cgns = read_mixed("su2", w("sis.su2")), read_mixed("cgns", w("sis.cgns"))
+    print("sphere in sphere, .vtu:", ref, "\n  SU2:", su2, "\n  CGNS (ParaView):", cgns)
+    expect(ref.get("wedges") == 24200 and ref["wedge_min_max"][0] > 0 and ref["tet_min_max"][0] > 0, ".vtu: %s" % ref)
+    expect(su2.get("tets") == ref.get("tets") and su2.get("wedges") == 24200 and su2.get("other") == 0
+           and close(su2["tet_volume"], ref["tet_volume"]) and close(su2["wedge_volume"], ref["wedge_volume"])
+           and su2["wedge_min_max"][0] > 0, "SU2 read as VTK cells: the .vtu's cells and volumes: %s" % su2)
+    # PENTA_6 is in CGNS's (and gmsh's) order, the base's normal towards the top; ParaView's CGNS reader
+    # passes it on as VTK_WEDGE unchanged, whose first triangle faces away from the top: every wedge of
+    # the reader's output has the .vtu wedge's volume with the sign flipped, none of the other sign.
+    expect(cgns.get("tets") == ref.get("tets") and cgns.get("wedges") == 24200 and cgns.get("other") == 0
+           and close(cgns["tet_volume"], ref["tet_volume"]) and close(-cgns["wedge_volume"], ref["wedge_volume"])
+           and cgns["wedge_min_max"][1] < 0, "CGNS read by ParaView: the .vtu's cells and volumes: %s" % cgns)
+    # Exodus's WEDGE is CGNS's PENTA_6 (side 4 = 1 3 2 outward) and ParaView's reader passes it on the same way;
+    # it reads the coordinates as floats (hence 1e-6).
+    exo = read_mixed("exodus", w("sis.exo"))
+    print("  Exodus (ParaView):", exo)
+    expect(exo.get("tets") == ref.get("tets") and exo.get("wedges") == 24200 and exo.get("other") == 0
+           and close(exo["tet_volume"], ref["tet_volume"], 1e-6)
+           and close(-exo["wedge_volume"], ref["wedge_volume"], 1e-6) and exo["wedge_min_max"][1] < 0,
+           "Exodus read by ParaView: the .vtu's cells and volumes: %s" % exo)
+else:
+    print("skipped the SU2/CGNS readers: pvpython is not installed")
+if shutil.which("cgnscheck"):
+    c = run(["cgnscheck", w("sis.cgns")])
+    expect(c.returncode == 0 and "error" not in c.stdout.lower() and "warning" not in c.stdout.lower(),
+           "cgnscheck on the prisms' CGNS file", c)
+
+# volgrid quality on the mixed .vtu: the wedges measured by type (Core/Quality/PrismQuality.h), none inverted,
+# and the total volume the tets' and the wedges' together.
+r = run([volgrid, "quality", w("sis.vtu"), "--json"])
+expect(r.returncode == 0, "volgrid quality on the layers' .vtu", r)
+if r.returncode == 0:
+    q = json.loads(r.stdout.strip().splitlines()[-1])
+    jac, vol = q["metrics"]["WedgeScaledJacobian"], q["metrics"]["WedgeVolume"]
+    print("quality of the layers:", {k: q[k] for k in ("NumberOfTetrahedra", "NumberOfWedges", "InvertedWedges",
+                                                      "SkippedCells", "TotalVolume")}, "scaled Jacobian", jac["min"],
+          jac["max"])
+    expect(q["NumberOfWedges"] == 24200 and q["InvertedWedges"] == 0 and q["SkippedCells"] == 0
+           and jac["count"] == 24200 and 0.9 < jac["min"] <= jac["max"] <= 1 and vol["min"] > 0,
+           "quality: 24200 wedges, none inverted, near-right prisms: %s %s" % (jac, vol))
+    if PVPYTHON:
+        expect(close(q["TotalVolume"], ref["tet_volume"] + ref["wedge_volume"]),
+               "quality: TotalVolume %s = the .vtu's tets + wedges %s" % (q["TotalVolume"], ref))
 
 # The first height from a target y+ (flat plate, Re 1e6, length 1: 2.35288e-05).
 r = run([volgrid, "mesh", w("sis.off"), w("yplus.vtu"), "--json", "--layers", "3", "--y-plus", "1", "--reynolds", "1e6",
@@ -94,8 +197,9 @@ for extra, message in bad:
     out = w("bad.vtu")
     r = run([volgrid, "mesh", w("sis.off"), out] + extra)
     expect(refused_cleanly(r) and message in r.stderr and not os.path.exists(out), "refused: " + message, r)
-r = run([volgrid, "mesh", w("sis.off"), w("bad.su2")] + layers)
-expect(refused_cleanly(r) and "--split-prisms" in r.stderr, "prisms in a solver format need --split-prisms", r)
+r = run([volgrid, "mesh", w("sis.off"), w("bad.node")] + layers)
+expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("bad.node")),
+       "prisms in a tet-only format (TetGen) need --split-prisms", r)
 
 m6 = os.path.join(shared, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
 if shared and os.path.exists(m6):
@@ -110,6 +214,37 @@ if shared and os.path.exists(m6):
         expect(j["coverage"] >= 0.98 and j["inverted_cells"] == 0 and j["wedges"] >= 0.98 * 15 * j["layered_faces"],
                "M6: at least 98%% of the wing faces get all 15 layers, none inverted: %s" % j)
         expect(j["interface_faces_shared"] == j["layered_faces"], "M6: the tets share the layers' surface: %s" % j)
+    # checkMesh on the direct OpenFOAM output agrees with gmsh 2.2 -> gmshToFoam: the same counts, cell shapes,
+    # failed checks and skew faces (one input edge of the wing gives 15 faces of skewness 8.19 either way).
+    m6_layers = ["--layers", "15", "--first-height", "1e-4", "--growth", "1.2", "--layer-patches",
+                 "3,4,5,6,7,8,9,10,11,12"]
+    rf = run([volgrid, "mesh", m6, w("m6_foam"), "--format", "openfoam"] + m6_layers, timeout=600)
+    rg = run([volgrid, "mesh", m6, w("m6.msh"), "--format", "gmsh22"] + m6_layers, timeout=600)
+    expect(rf.returncode == 0 and rg.returncode == 0, "M6: prisms to OpenFOAM and gmsh 2.2", rf if rf.returncode else rg)
+    if rf.returncode == 0 and rg.returncode == 0 and os.path.exists(FOAM):
+        os.makedirs(w("m6_gmsh"), exist_ok=True)
+        cf, cg = check_mesh(w("m6_foam")), check_mesh(w("m6_gmsh"), "gmshToFoam ../m6.msh &&")
+        nf, ng = check_mesh_counts(cf.stdout), check_mesh_counts(cg.stdout)
+        print("M6 checkMesh, direct:", nf, "\nM6 checkMesh, gmshToFoam:", ng)
+        expect(nf == ng and nf.get("prisms", 0) > 0, "M6: checkMesh agrees on the direct and gmshToFoam cases: %s %s"
+               % (nf, ng), cf)
+    # The wing root's prism sides on the symmetry plane are boundary quads of its patch in SU2 (type 9), CGNS
+    # (a QUAD_4 section in the patch's boundary condition) and Exodus (wedge sides in its side set):
+    # ParaView's CGNS and Exodus readers count what SU2 lists.
+    for fmt in ("su2", "cgns", "exo"):
+        r = run([volgrid, "mesh", m6, w("m6." + fmt)] + m6_layers, timeout=600)
+        expect(r.returncode == 0, "M6: prisms to " + fmt, r)
+    text = open(w("m6.su2")).read() if os.path.exists(w("m6.su2")) else ""
+    markers = {k: int(v) for k, v in re.findall(r"MARKER_TAG= (\S+)\nMARKER_ELEMS= (\d+)", text)}
+    quads = sum(1 for l in text.split("NMARK=")[-1].splitlines() if l.startswith("9 "))
+    expect(quads > 0, "M6: SU2 boundary quads on the symmetry plane")
+    export = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Export", "paraview_readers.py")
+    for kind, path in (("cgns", w("m6.cgns")), ("exodus", w("m6.exo"))):
+        if PVPYTHON and os.path.exists(path):
+            c = run([PVPYTHON, export, kind, path], timeout=600)
+            seen = json.loads(c.stdout.strip().splitlines()[-1])["patches"] if c.returncode == 0 else {}
+            expect(seen == markers and len(seen) == 12,
+                   "M6: %s patches (ParaView) = SU2 markers: %s %s" % (kind, seen, markers), c)
     r = run([volgrid, "mesh", m6, w("m6bad.vtu"), "--layers", "15", "--first-height", "1e-4", "--layer-patches", "1,3,4"])
     expect(refused_cleanly(r) and "touch the non-layered patch" in r.stderr and not os.path.exists(w("m6bad.vtu")),
            "M6: layers on part of the wing, touching the rest of it, refused with a message", r)

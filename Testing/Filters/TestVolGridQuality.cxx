@@ -292,6 +292,70 @@ TEST(VolGridQuality, NonTetCellsAreSkipped)
   EXPECT_EQ(sum, 1.0);
 }
 
+TEST(VolGridQuality, WedgesAreMeasuredByType)
+{
+  // A right wedge of height 0.01 on the equilateral triangle (0 0) (1 0) (0.5 h) in VTK's order (the first
+  // triangle's normal away from the second), the same wedge listed the other way round (inverted at every
+  // corner), a tet on top of the first and a hexahedron, which alone is skipped.
+  const double h = std::sqrt(3.0) / 2.0;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const double xyz[13][3] = { { 0, 0, 0 },      { 1, 0, 0 },     { 0.5, h, 0 }, { 0, 0, 0.01 }, { 1, 0, 0.01 },
+                              { 0.5, h, 0.01 }, { 0.5, 0.3, 1 }, { 5, 5, 5 },   { 6, 5, 5 },    { 6, 6, 5 },
+                              { 5, 6, 5 },      { 5, 5, 6 },     { 6, 5, 6 } };
+  for (const auto& p : xyz)
+    points->InsertNextPoint(p);
+  points->InsertNextPoint(6, 6, 6);
+  points->InsertNextPoint(5, 6, 6);
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  const vtkIdType wedge[6] = { 0, 2, 1, 3, 5, 4 }, inverted[6] = { 0, 1, 2, 3, 4, 5 }, tet[4] = { 3, 4, 5, 6 };
+  const vtkIdType hex[8] = { 7, 8, 9, 10, 11, 12, 13, 14 };
+  grid->InsertNextCell(VTK_WEDGE, 6, wedge);
+  grid->InsertNextCell(VTK_WEDGE, 6, inverted);
+  grid->InsertNextCell(VTK_TETRA, 4, tet);
+  grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+  vtkNew<vtkVolGridQuality> quality;
+  quality->SetInputData(grid);
+  quality->SetMetric(vtkVolGridQuality::WEDGE_SCALED_JACOBIAN);
+  quality->Update();
+  EXPECT_EQ(quality->GetNumberOfSkippedCells(), 1);
+  vtkDataSet* out = vtkDataSet::SafeDownCast(quality->GetOutputDataObject(0));
+  vtkDataArray* jacobian = out->GetCellData()->GetArray("Quality");
+  vtkDataArray* volume = out->GetCellData()->GetArray("WedgeVolume");
+  ASSERT_NE(jacobian, nullptr);
+  ASSERT_NE(volume, nullptr);
+  EXPECT_NEAR(jacobian->GetTuple1(0), 1.0, 1e-12);
+  EXPECT_NEAR(volume->GetTuple1(0), h / 2 * 0.01, 1e-15);
+  EXPECT_NEAR(jacobian->GetTuple1(1), -1.0, 1e-12);
+  EXPECT_NEAR(volume->GetTuple1(1), -h / 2 * 0.01, 1e-15);
+  EXPECT_TRUE(std::isnan(jacobian->GetTuple1(2)) && std::isnan(jacobian->GetTuple1(3)));
+  // The tet metrics are NaN on the wedges and measured on the tet.
+  vtkDataArray* tetVolume = out->GetCellData()->GetArray("Volume");
+  EXPECT_TRUE(std::isnan(tetVolume->GetTuple1(0)) && std::isnan(tetVolume->GetTuple1(1)));
+  EXPECT_GT(tetVolume->GetTuple1(2), 0.0);
+  vtkFieldData* fd = out->GetFieldData();
+  EXPECT_EQ(fd->GetArray("NumberOfWedges")->GetTuple1(0), 2.0);
+  EXPECT_EQ(fd->GetArray("InvertedWedges")->GetTuple1(0), 1.0);
+  EXPECT_EQ(fd->GetArray("NumberOfTetrahedra")->GetTuple1(0), 1.0);
+  EXPECT_NEAR(fd->GetArray("TotalVolume")->GetTuple1(0), tetVolume->GetTuple1(2), 1e-15); // the wedges cancel
+  vtkDataArray* stats = fd->GetArray("WedgeScaledJacobianStatistics");
+  ASSERT_NE(stats, nullptr);
+  EXPECT_EQ(stats->GetComponent(0, 0), 2.0); // count
+  EXPECT_NEAR(stats->GetComponent(0, 1), -1.0, 1e-12);
+  EXPECT_EQ(stats->GetComponent(0, 5), 1.0); // worst cell
+  // Without wedges the wedge metric falls back to MaxDihedralAngle, as the CFD metrics do without pure tets.
+  vtkNew<vtkUnstructuredGrid> tets;
+  tets->SetPoints(points);
+  tets->InsertNextCell(VTK_TETRA, 4, tet);
+  quality->SetInputData(tets);
+  quality->Update();
+  vtkDataSet* tetOut = vtkDataSet::SafeDownCast(quality->GetOutputDataObject(0));
+  EXPECT_EQ(tetOut->GetCellData()->GetArray("Quality")->GetTuple1(0),
+            tetOut->GetCellData()->GetArray("MaxDihedralAngle")->GetTuple1(0));
+  EXPECT_EQ(tetOut->GetFieldData()->GetArray("NumberOfWedges")->GetTuple1(0), 0.0);
+}
+
 TEST(VolGridQuality, SphereSurface)
 {
   vtkNew<vtkSphereSource> sphere;

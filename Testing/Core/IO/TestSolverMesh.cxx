@@ -44,6 +44,24 @@ SolverMesh twoTets()
   m.patchNames = { { 1, "wall_a" }, { 2, "farfield" } };
   return m;
 }
+
+// A boundary-layer prism (base 0 1 2 at z = 0, its normal towards the top 3 4 5 at z = 1) under a tet
+// (3 4 5 6): the wall under the prism, its three sides on a symmetry patch, the tet's other faces far field.
+SolverMesh prismUnderTet()
+{
+  SolverMesh m;
+  m.points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 0.3, 0.3, 2 };
+  m.prisms = { 0, 1, 2, 3, 4, 5 };
+  m.prismRegion = { 1 };
+  m.tets = { 3, 4, 5, 6 };
+  m.tetRegion = { 1 };
+  m.triangles = { 0, 2, 1, 3, 4, 6, 4, 5, 6, 5, 3, 6 };
+  m.trianglePatch = { 1, 3, 3, 3 };
+  m.quads = { 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5 };
+  m.quadPatch = { 2, 2, 2 };
+  m.patchNames = { { 1, "wall" }, { 2, "symmetry" }, { 3, "farfield" } };
+  return m;
+}
 } // namespace
 
 TEST(PatchNames, ParsesGroupsAndBareIds)
@@ -160,6 +178,72 @@ TEST(MeshWriterOpenFOAM, UpperTriangularOrderOutwardFacesPatchesByName)
   std::filesystem::remove_all(dir2);
   EXPECT_FALSE(writeSolverMesh(dir2, bad, MeshFormat::OpenFOAM).ok());
   EXPECT_FALSE(std::filesystem::exists(dir2));
+}
+
+TEST(MeshWriterOpenFOAM, PrismsAreCellsWithQuadSidesInTheirPatch)
+{
+  const std::string dir = tempPath("foam-prism");
+  std::filesystem::remove_all(dir);
+  ASSERT_TRUE(writeSolverMesh(dir, prismUnderTet(), MeshFormat::OpenFOAM).ok());
+  const std::string owner = readText(dir + "/constant/polyMesh/owner");
+  // The prism is cell 0, the tet cell 1; the shared top (3 4 5) is the internal face, out of the prism.
+  EXPECT_NE(owner.find("nPoints:7  nCells:2  nFaces:8  nInternalFaces:1"), std::string::npos) << owner;
+  EXPECT_NE(owner.find("8\n(\n0\n0\n0\n0\n0\n1\n1\n1\n)"), std::string::npos) << owner;
+  EXPECT_NE(readText(dir + "/constant/polyMesh/neighbour").find("1\n(\n1\n)"), std::string::npos);
+  const std::string faces = readText(dir + "/constant/polyMesh/faces");
+  EXPECT_NE(faces.find("8\n(\n3(3 4 5)\n3(0 2 1)\n4(0 1 4 3)\n4(0 3 5 2)\n4(1 2 5 4)\n"), std::string::npos) << faces;
+  const std::string boundary = readText(dir + "/constant/polyMesh/boundary");
+  EXPECT_NE(boundary.find("symmetry\n    {\n        type            symmetryPlane;\n        inGroups        "
+                          "List<word> 1(symmetryPlane);\n        nFaces          3;\n        startFace       2;"),
+            std::string::npos)
+    << boundary;
+  // A side quad in no patch is a mesh that disagrees with its patches: refused, nothing written.
+  SolverMesh open = prismUnderTet();
+  open.quads.resize(8);
+  open.quadPatch.resize(2);
+  const std::string dir2 = tempPath("foam-prism-open");
+  std::filesystem::remove_all(dir2);
+  const Status s = writeSolverMesh(dir2, open, MeshFormat::OpenFOAM);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("boundary face (0 2 3 5) of cell 0 is in no patch"), std::string::npos) << s.message;
+  EXPECT_FALSE(std::filesystem::exists(dir2));
+}
+
+TEST(MeshWriterSU2, PrismsInVtkOrderAndSideQuadsInTheirMarker)
+{
+  const std::string path = tempPath("prism.su2");
+  ASSERT_TRUE(writeSolverMesh(path, prismUnderTet(), MeshFormat::SU2).ok());
+  const std::string text = readText(path);
+  EXPECT_NE(text.find("NELEM= 2\n10 3 4 5 6 0\n13 0 2 1 3 5 4 1\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("MARKER_TAG= symmetry\nMARKER_ELEMS= 3\n9 0 1 4 3\n9 1 2 5 4\n9 2 0 3 5\n"), std::string::npos)
+    << text;
+  // Formats without prisms refuse them by name, writing nothing.
+  for (MeshFormat f : { MeshFormat::Medit, MeshFormat::TetGen })
+  {
+    const std::string out = tempPath(std::string("prism-refused.") + (f == MeshFormat::Medit ? "mesh" : "x"));
+    const Status s = writeSolverMesh(out, prismUnderTet(), f);
+    EXPECT_FALSE(s.ok());
+    EXPECT_NE(s.message.find(std::string("prisms are not written to ") + meshFormatName(f)), std::string::npos)
+      << s.message;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+}
+
+TEST(MeshWriterExodus, PrismSidesFoundOrRefusedByName)
+{
+  const std::string path = tempPath("prism.exo");
+  std::filesystem::remove(path);
+  ASSERT_TRUE(writeSolverMesh(path, prismUnderTet(), MeshFormat::Exodus).ok());
+  EXPECT_TRUE(std::filesystem::exists(path));
+  // A quad of the prism's points across it, (2 0 4 5), is no face of any cell: refused, nothing written.
+  SolverMesh bad = prismUnderTet();
+  bad.quads[10] = 4;
+  const std::string badPath = tempPath("prism-bad.exo");
+  std::filesystem::remove(badPath);
+  const Status s = writeSolverMesh(badPath, bad, MeshFormat::Exodus);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("boundary quad 2 is not a face of any tet or prism"), std::string::npos) << s.message;
+  EXPECT_FALSE(std::filesystem::exists(badPath));
 }
 
 TEST(MeshWriterMedit, RoundTripKeepsLabelsAndNames)

@@ -1,0 +1,96 @@
+"""Readers VolGrid did not write, on a mixed (prism + tet) mesh, run under pvpython: ParaView's .vtu, CGNS and
+Exodus II readers (vtkXMLUnstructuredGridReader, vtkCGNSReader, vtkExodusIIReader), and for SU2 (no reader here) the file's element lines
+taken as the VTK cell types they name. Prints one JSON line: cells by type ("tets", "wedges", "other") and
+their signed volumes by vtkCellSizeFilter (VTK's wedge: the first triangle's normal points away from the
+second, as vtkCellTypeSource makes them): "tet_volume", "wedge_volume", "tet_min_max", "wedge_min_max".
+Usage: pvpython mixed_mesh_readers.py vtu|cgns|exodus|su2 FILE"""
+import json
+import sys
+
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
+from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
+from vtkmodules.vtkIOCGNSReader import vtkCGNSReader
+from vtkmodules.vtkIOExodus import vtkExodusIIReader
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+
+def vtu(path):
+    r = vtkXMLUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    return [r.GetOutput()]
+
+
+def cgns(path):
+    """The zone's cells: every leaf block (boundary patches are not loaded)."""
+    r = vtkCGNSReader()
+    r.SetFileName(path)
+    r.UpdateInformation()
+    r.EnableAllBases()
+    r.Update()
+    it = r.GetOutput().NewTreeIterator()
+    it.VisitOnlyLeavesOn()
+    it.InitTraversal()
+    grids = []
+    while not it.IsDoneWithTraversal():
+        grids.append(it.GetCurrentDataObject())
+        it.GoToNextItem()
+    return grids
+
+
+def exodus(path):
+    """Every element block (side sets off)."""
+    r = vtkExodusIIReader()
+    r.SetFileName(path)
+    r.UpdateInformation()
+    for k in range(r.GetNumberOfObjects(vtkExodusIIReader.ELEM_BLOCK)):
+        r.SetObjectStatus(vtkExodusIIReader.ELEM_BLOCK, k, 1)
+    r.Update()
+    it = r.GetOutput().NewTreeIterator()
+    it.VisitOnlyLeavesOn()
+    it.InitTraversal()
+    grids = []
+    while not it.IsDoneWithTraversal():
+        grids.append(it.GetCurrentDataObject())
+        it.GoToNextItem()
+    return grids
+
+
+def su2(path):
+    """NELEM lines "TYPE ids... index" as VTK cells, NPOIN lines "x y z index" as points."""
+    lines = open(path).read().split("\n")
+    grid, points = vtkUnstructuredGrid(), vtkPoints()
+    points.SetDataTypeToDouble()
+    cells, k = [], 0
+    while k < len(lines):
+        if lines[k].startswith("NELEM="):
+            cells = [[int(x) for x in lines[k + 1 + e].split()] for e in range(int(lines[k].split("=")[1]))]
+            k += len(cells)
+        elif lines[k].startswith("NPOIN="):
+            for i in range(int(lines[k].split("=")[1].split()[0])):
+                points.InsertNextPoint(*[float(x) for x in lines[k + 1 + i].split()[:3]])
+            break
+        k += 1
+    grid.SetPoints(points)
+    for c in cells:
+        grid.InsertNextCell(c[0], len(c) - 2, c[1:-1])
+    return [grid]
+
+
+grids = {"vtu": vtu, "cgns": cgns, "exodus": exodus, "su2": su2}[sys.argv[1]](sys.argv[2])
+out = {"tets": 0, "wedges": 0, "other": 0, "tet_volume": 0.0, "wedge_volume": 0.0}
+bounds = {10: [float("inf"), -float("inf")], 13: [float("inf"), -float("inf")]}
+for g in grids:
+    size = vtkCellSizeFilter()
+    size.SetInputData(g)
+    size.Update()
+    v = size.GetOutput().GetCellData().GetArray("Volume")
+    for c in range(g.GetNumberOfCells()):
+        t, x = g.GetCellType(c), v.GetValue(c)
+        out[{10: "tets", 13: "wedges"}.get(t, "other")] += 1
+        if t in bounds:
+            out["tet_volume" if t == 10 else "wedge_volume"] += x
+            bounds[t] = [min(bounds[t][0], x), max(bounds[t][1], x)]
+out["tet_min_max"], out["wedge_min_max"] = bounds[10], bounds[13]
+print(json.dumps(out))
