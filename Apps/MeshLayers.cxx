@@ -186,11 +186,12 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
       "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"thinned_columns\": %lld, "
       "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, "
       "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
-      "\"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
+      "\"wall_skew_edges\": %lld, \"wall_skewness_max\": %.6g, \"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
       jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, tets, layers.layers,
       layers.resolved().firstHeight, (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(),
       (long long)l.thinnedColumns, (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3],
-      l.minScale, (long long)inverted, (long long)r.interfaceOnTets, l.seconds, seconds);
+      l.minScale, (long long)inverted, (long long)r.interfaceOnTets, (long long)l.wallSkewness.edgesOverLimit,
+      l.wallSkewness.worst, l.seconds, seconds);
   else
     std::printf("%s: %d layers on %lld faces (coverage %.2f%%, %lld thinned columns) -> %lld wedges, %lld tets on "
                 "%lld points, %lld inverted, in %.3f s\n",

@@ -37,6 +37,49 @@ std::string patchName(const SurfaceMesh& s, int32_t patch)
   return it != s.patchNames.end() ? it->second : (s.hasPatchIds() ? "patch" : "shell") + std::to_string(patch);
 }
 
+// The default layered patches. A named patch is a wall unless its name says otherwise (OpenFOAM's rule:
+// symmetry, farfield, inlet, outlet). An unnamed one (a Medit reference, an unnamed shell) is judged by
+// geometry: not a wall when it is on a shell around another shell (a far field around a body), or when it
+// reaches both ends of the whole surface's box along some axis (a far-field sphere, a symmetry plane
+// through the domain, a box side). A body, also one touching a symmetry plane, reaches neither.
+std::set<int32_t> defaultWalls(const SurfaceMesh& s, const SurfaceCheckReport& report, const std::set<int32_t>& present)
+{
+  std::vector<bool> enclosesAnother(report.shells.size(), false);
+  for (const SurfaceShell& shell : report.shells)
+    if (shell.parent >= 0)
+      enclosesAnother[shell.parent] = true;
+  BoundingBox all;
+  std::map<int32_t, BoundingBox> box;
+  std::set<int32_t> aroundAnother;
+  for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
+  {
+    const int32_t patch = trianglePatch(s, report, t), shell = report.triangleShell[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      all.add(s.point(s.triangles[3 * t + i]));
+      box[patch].add(s.point(s.triangles[3 * t + i]));
+    }
+    if (shell >= 0 && enclosesAnother[shell])
+      aroundAnother.insert(patch);
+  }
+  const auto spansTheDomain = [&](const BoundingBox& own)
+  {
+    for (int d = 0; d < 3; ++d)
+      if (own.min[d] == all.min[d] && own.max[d] == all.max[d] && all.max[d] > all.min[d])
+        return true;
+    return false;
+  };
+  std::set<int32_t> walls;
+  for (const int32_t patch : present)
+  {
+    const bool named = s.hasPatchIds() && s.patchNames.count(patch);
+    if (named ? defaultOpenFoamPatchType(s.patchNames.at(patch)) == "wall"
+              : present.size() == 1 || (!aroundAnother.count(patch) && !spansTheDomain(box[patch])))
+      walls.insert(patch);
+  }
+  return walls;
+}
+
 // The set of layered patch labels, or a Status naming what was asked for and not found.
 Status choosePatches(const SurfaceMesh& s, const SurfaceCheckReport& report, const LayerOptions& options,
                      std::set<int32_t>& chosen)
@@ -66,16 +109,12 @@ Status choosePatches(const SurfaceMesh& s, const SurfaceCheckReport& report, con
                              "layer patch '" + name + "' is not a patch of the surface; patches: " + available);
   }
   if (options.patchIds.empty() && options.patchNames.empty())
-    for (const int32_t p : present)
-    {
-      // Without patch ids a shell is a wall when another shell encloses it (a body in a far field).
-      const bool wall = s.hasPatchIds() ? defaultOpenFoamPatchType(patchName(s, p)) == "wall"
-                                        : (report.shells[p].depth > 0 || present.size() == 1);
-      if (wall)
-        chosen.insert(p);
-    }
+    chosen = defaultWalls(s, report, present);
   if (chosen.empty())
-    return Status::failure(ErrorKind::InvalidOption, "no wall patch to grow layers from; patches: " + available);
+    return Status::failure(ErrorKind::InvalidOption,
+                           "no wall patch to grow layers from (the far field, symmetry planes and the domain's outer "
+                           "box get none); name the patches with --layer-patches / LayerPatches; patches: " +
+                             available);
   return Status::success();
 }
 
@@ -390,6 +429,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
   status = buildWalls(s, checks, chosen, walls, wallIds, otherIds);
   if (!status.ok())
     return status;
+  const WallSkewness skewness = wallSkewness(s.points, walls.triangles);
   const std::vector<double> directions = layers_detail::marchingDirections(walls, options.normalSmoothing);
   const std::vector<double> offsets = layers_detail::layerOffsets(options);
   std::vector<int32_t> start, list;
@@ -435,6 +475,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
                              " is more than the domain allows: every layer column had "
                              "to be thinned");
   }
+  result.stats.wallSkewness = skewness;
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report.report(1, "Boundary layers: marching");
   return Status::success();

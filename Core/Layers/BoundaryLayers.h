@@ -19,6 +19,7 @@
 #include "Progress.h"
 #include "Status.h"
 #include "SurfaceMesh.h"
+#include "WallSkewness.h"
 
 #include <cstdint>
 #include <string>
@@ -66,6 +67,7 @@ struct LayerStatistics
   int iterations = 0;  // thinning rounds
   double minScale = 1; // smallest column factor
   double seconds = 0;
+  WallSkewness wallSkewness; // what the wall triangulation alone implies for checkMesh (WallSkewness.h)
   double coverage() const { return layeredTriangles ? double(fullTriangles) / double(layeredTriangles) : 0.0; }
 };
 

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -215,6 +216,61 @@ TEST(BoundaryLayers, LayersAlongACurvedOrSecondPatchAreRefused)
   st = growLayers(s, options(3, 0.01, 1.2), r);
   EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
   EXPECT_NE(st.message.find("also on patch"), std::string::npos) << st.message;
+}
+
+TEST(BoundaryLayers, UnnamedFarFieldAndBoxSidesGetNoLayersByDefault)
+{
+  // A far-field box with one unnamed patch per side around an unnamed unit sphere (a Medit file's references):
+  // only the sphere is a wall by default, whether the box is six patches or one.
+  SurfaceMesh s;
+  const double lo[3] = { -5, -5, -5 }, hi[3] = { 5, 5, 5 }, o[3] = { 0, 0, 0 };
+  testshapes::addBox(s, lo, hi);
+  for (int32_t t = 0; t < 12; ++t)
+    s.patchIds.push_back(1 + t / 2);
+  layertest::addIcosphere(s, o, 1.0, 2, 7);
+  LayerResult r;
+  Status st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 20 * 16);
+  std::fill(s.patchIds.begin(), s.patchIds.begin() + 12, 1);
+  st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 20 * 16);
+  // Named, the names decide: a box side called "wall" is layered too.
+  s.patchNames = { { 1, "wall" }, { 7, "body" } };
+  st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 20 * 16 + 12);
+  // A box alone, split into unnamed patches: every patch spans the domain, none is taken for a wall.
+  SurfaceMesh box;
+  testshapes::addBox(box, lo, hi);
+  box.patchIds.assign(12, 1);
+  box.patchIds[0] = box.patchIds[1] = 2;
+  st = growLayers(box, options(3, 0.01, 1.2), r);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("no wall patch"), std::string::npos) << st.message;
+  EXPECT_NE(st.message.find("--layer-patches"), std::string::npos) << st.message;
+}
+
+TEST(BoundaryLayers, WallSkewnessIsOpenFoamsFaceSkewnessInTheSurface)
+{
+  // Edge (0,0,0)-(1,0,0) between two triangles. Mirror-symmetric apexes: the centroid line crosses the edge
+  // at its midpoint (0). Both apexes at x = -10: it crosses at x = -3, 3.5 from the midpoint, over the
+  // face's half-extent 0.5 (more than 0.2 * |d| = 0.2 * 2/3): exactly 7, above checkMesh's 4.
+  const std::vector<int32_t> triangles = { 0, 1, 2, 1, 0, 3 };
+  const auto skew = [&](double ax, double bx)
+  {
+    const std::vector<double> points = { 0, 0, 0, 1, 0, 0, ax, 1, 0, bx, -1, 0 };
+    return wallSkewness(points, triangles);
+  };
+  EXPECT_NEAR(skew(0.5, 0.5).worst, 0.0, 1e-12);
+  EXPECT_EQ(skew(0.5, 0.5).edgesOverLimit, 0);
+  const WallSkewness sheared = skew(-10, -10);
+  EXPECT_NEAR(sheared.worst, 7.0, 1e-12);
+  EXPECT_EQ(sheared.edgesOverLimit, 1);
+  EXPECT_DOUBLE_EQ(sheared.worstPoint[0], 0.5);
+  // Sheared the opposite ways: centroids (-3, 1/3) and (4, -1/3), a line through the midpoint again.
+  EXPECT_NEAR(skew(-10, 11).worst, 0.0, 1e-12);
 }
 
 TEST(BoundaryLayers, FirstHeightFromYPlus)
