@@ -88,6 +88,13 @@ int64_t invertedCells(const LayeredMeshResult& r)
   int64_t bad = 0;
   for (size_t t = 0; t < r.tets.size(); t += 4)
     bad += predicates::orient3d(at(r.tets[t]), at(r.tets[t + 1]), at(r.tets[t + 2]), at(r.tets[t + 3])) > 0 ? 0 : 1;
+  for (size_t p = 0; p < r.pyramids.size(); p += 5)
+  {
+    int32_t split[8];
+    splitPyramid(r.pyramids.data() + p, split);
+    for (int t = 0; t < 8; t += 4)
+      bad += predicates::orient3d(at(split[t]), at(split[t + 1]), at(split[t + 2]), at(split[t + 3])) > 0 ? 0 : 1;
+  }
   for (size_t w = 0; w < r.wedges.size(); w += 6)
     bad += prismIsValid(at(r.wedges[w]), at(r.wedges[w + 1]), at(r.wedges[w + 2]), at(r.wedges[w + 3]),
                         at(r.wedges[w + 4]), at(r.wedges[w + 5]))
@@ -170,6 +177,8 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
     mesh.patchNames = r.patchNames;
     mesh.prisms = r.wedges;
     mesh.prismRegion.assign(r.wedges.size() / 6, 0);
+    mesh.pyramids = r.pyramids;
+    mesh.pyramidRegion.assign(r.pyramids.size() / 5, 0);
     if (!layers.splitPrisms)
     {
       mesh.quads = r.sideQuads;
@@ -182,22 +191,26 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
   const long long wedges = (long long)(r.wedges.size() / 6), tets = (long long)(r.tets.size() / 4);
   if (json)
     std::printf(
-      "{\"input\": %s, \"points\": %lld, \"wedges\": %lld, \"tets\": %lld, \"layers\": %d, \"first_height\": %.6g, "
-      "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"thinned_columns\": %lld, "
-      "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, "
+      "{\"input\": %s, \"points\": %lld, \"wedges\": %lld, \"pyramids\": %lld, \"tets\": %lld, \"layers\": %d, "
+      "\"first_height\": %.6g, "
+      "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"all_layers\": %.6f, "
+      "\"thinned_columns\": %lld, "
+      "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, \"collapsed_columns\": "
+      "%lld, "
       "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
       "\"wall_skew_edges\": %lld, \"wall_skewness_max\": %.6g, \"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
-      jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, tets, layers.layers,
-      layers.resolved().firstHeight, (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(),
-      (long long)l.thinnedColumns, (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3],
-      l.minScale, (long long)inverted, (long long)r.interfaceOnTets, (long long)l.wallSkewness.edgesOverLimit,
-      l.wallSkewness.worst, l.seconds, seconds);
+      jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, (long long)(r.pyramids.size() / 5),
+      tets, layers.layers, layers.resolved().firstHeight, (long long)l.layeredTriangles, (long long)l.fullTriangles,
+      l.coverage(), l.allLayersShare(), (long long)l.thinnedColumns, (long long)l.thinnedBy[1],
+      (long long)l.thinnedBy[2], (long long)l.thinnedBy[3], (long long)l.thinnedBy[4], l.minScale, (long long)inverted,
+      (long long)r.interfaceOnTets, (long long)l.wallSkewness.edgesOverLimit, l.wallSkewness.worst, l.seconds, seconds);
   else
-    std::printf("%s: %d layers on %lld faces (coverage %.2f%%, %lld thinned columns) -> %lld wedges, %lld tets on "
-                "%lld points, %lld inverted, in %.3f s\n",
-                surfaceName.c_str(), layers.layers, (long long)l.layeredTriangles, 100.0 * l.coverage(),
-                (long long)l.thinnedColumns, wedges, tets, (long long)(r.points.size() / 3), (long long)inverted,
-                seconds);
+    std::printf(
+      "%s: %d layers on %lld faces (full height on %.2f%%, every layer on %.2f%%, %lld thinned and %lld "
+      "collapsed columns) -> %lld wedges, %lld pyramids, %lld tets on %lld points, %lld inverted, in %.3f s\n",
+      surfaceName.c_str(), layers.layers, (long long)l.layeredTriangles, 100.0 * l.coverage(),
+      100.0 * l.allLayersShare(), (long long)l.thinnedColumns, (long long)l.thinnedBy[4], wedges,
+      (long long)(r.pyramids.size() / 5), tets, (long long)(r.points.size() / 3), (long long)inverted, seconds);
   return 0;
 }
 

@@ -244,8 +244,8 @@ public:
   ///@{
   /**
    * Boundary layers: the number of prism layers grown from the wall patches (0, the default: none).
-   * With layers, output 0 holds VTK_WEDGE cells in the layers and VTK_TETRA cells elsewhere (cell arrays
-   * LayerIndex, ThinnedReason, Region) and output 1 the boundary triangles and the prisms' side quads on
+   * With layers, output 0 holds VTK_WEDGE cells in the layers (VTK_PYRAMID and VTK_TETRA where a column
+   * collapsed onto the wall) and VTK_TETRA cells elsewhere (cell arrays LayerIndex, ThinnedReason, Region) and output 1 the boundary triangles and the prisms' side quads on
    * symmetry planes. Default and range: Core's OptionTable.h.
    */
   virtual void SetNumberOfLayers(int value); // clamped to the valid range of Core's OptionTable.h

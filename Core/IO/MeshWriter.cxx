@@ -113,18 +113,20 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
   std::vector<int32_t> patches = mesh.trianglePatch, regions = mesh.tetRegion;
   patches.insert(patches.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
   regions.insert(regions.end(), mesh.prismRegion.begin(), mesh.prismRegion.end());
+  regions.insert(regions.end(), mesh.pyramidRegion.begin(), mesh.pyramidRegion.end());
   if (!normalized(patches) || !normalized(regions) || mesh.tetRegion.size() != mesh.tets.size() / 4 ||
       mesh.trianglePatch.size() != mesh.triangles.size() / 3 || mesh.prismRegion.size() != mesh.prisms.size() / 6 ||
-      mesh.quadPatch.size() != mesh.quads.size() / 4)
+      mesh.quadPatch.size() != mesh.quads.size() / 4 || mesh.pyramidRegion.size() != mesh.pyramids.size() / 5)
   {
     SolverMesh copy = mesh;
     normalizeLabels(copy);
     return writeSolverMesh(path, copy, format, options);
   }
-  if ((!mesh.prisms.empty() || !mesh.quads.empty()) && format != MeshFormat::Gmsh41 && format != MeshFormat::Gmsh22)
+  if ((!mesh.prisms.empty() || !mesh.quads.empty() || !mesh.pyramids.empty()) && format != MeshFormat::Gmsh41 &&
+      format != MeshFormat::Gmsh22)
     return Status::failure(ErrorKind::InvalidOption,
                            "'" + path +
-                             "': prisms are written to gmsh .msh (and VTK) only; split "
+                             "': prisms and pyramids are written to gmsh .msh (and VTK) only; split "
                              "them into tets for this format");
   switch (format)
   {

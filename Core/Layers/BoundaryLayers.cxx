@@ -4,6 +4,7 @@
 #include "BoundaryLayersMarching.h"
 #include "MeshWriter.h"
 #include "PatchNames.h"
+#include "Predicates.h"
 #include "SurfaceChecks.h"
 
 #include <algorithm>
@@ -198,20 +199,32 @@ Status buildWalls(const SurfaceMesh& s, const SurfaceCheckReport& report, const 
 }
 
 // Halves the failing columns, then limits every column to 1.5 times its thinnest neighbour.
+// A column thinned below this fraction of its height collapses instead (ThinnedReason::Collapsed).
+constexpr double kCollapseBelow = 1.0 / 8;
+
+// Halves the bad columns (collapsing those that fall below kCollapseBelow, except on symmetry planes),
+// then limits every column to 1.5x its thinnest non-collapsed neighbour.
 void thin(const std::vector<int32_t>& bad, ThinnedReason why, const std::vector<int32_t>& start,
-          const std::vector<int32_t>& list, std::vector<double>& scale, std::vector<uint8_t>& reason)
+          const std::vector<int32_t>& list, layers_detail::Walls& walls, std::vector<double>& scale,
+          std::vector<uint8_t>& reason)
 {
   for (const int32_t c : bad)
   {
     scale[c] *= 0.5;
     if (reason[c] == uint8_t(ThinnedReason::None) || reason[c] == uint8_t(ThinnedReason::Neighbour))
       reason[c] = uint8_t(why);
+    if (scale[c] < kCollapseBelow && walls.slipAxis[c] < 0)
+    {
+      scale[c] = 0;
+      reason[c] = uint8_t(ThinnedReason::Collapsed);
+      walls.collapsed[c] = 1;
+    }
   }
   for (bool changed = true; changed;)
   {
     changed = false;
     for (size_t c = 0; c + 1 < start.size(); ++c)
-      for (int32_t k = start[c]; k < start[c + 1]; ++k)
+      for (int32_t k = start[c]; k < start[c + 1] && !walls.collapsed[c]; ++k)
         if (scale[list[k]] > 1.5 * scale[c])
         {
           scale[list[k]] = 1.5 * scale[c];
@@ -239,6 +252,8 @@ const char* thinnedReasonName(ThinnedReason reason)
       return "collision";
     case ThinnedReason::Neighbour:
       return "neighbour";
+    case ThinnedReason::Collapsed:
+      return "collapsed";
     default:
       return "none";
   }
@@ -293,13 +308,79 @@ Status validateLayerOptions(const LayerOptions& given)
 
 namespace
 {
+// The cell of layer k over wall triangle v: a prism, or with collapsed corners a pyramid (apex: the one
+// collapsed point) or a tet (two), or nothing (three). Pyramids and tets are oriented positive.
+void addLayerCell(const layers_detail::Walls& walls, const int32_t* v, int k, int layers, int32_t triangle, uint8_t why,
+                  LayerResult& r)
+{
+  int32_t q[6];
+  int collapsed = 0, flat = -1, standing = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    q[i] = layers_detail::layerPoint(walls, v[i], k - 1, layers);
+    q[i + 3] = layers_detail::layerPoint(walls, v[i], k, layers);
+    (q[i] == q[i + 3] ? flat : standing) = i;
+    collapsed += q[i] == q[i + 3];
+  }
+  const auto at = [&](int32_t id) { return r.points.data() + 3 * size_t(id); };
+  if (collapsed == 0)
+  {
+    r.prisms.insert(r.prisms.end(), q, q + 6);
+    r.prismLayer.push_back(k);
+    r.prismTriangle.push_back(triangle);
+    r.prismReason.push_back(why);
+  }
+  else if (collapsed == 1)
+  {
+    const int b = (flat + 1) % 3, c = (flat + 2) % 3;
+    int32_t p[5] = { q[b], q[c], q[c + 3], q[b + 3], q[flat] };
+    if (predicates::orient3d(at(p[0]), at(p[1]), at(p[2]), at(p[4])) < 0)
+      std::swap(p[1], p[3]);
+    r.pyramids.insert(r.pyramids.end(), p, p + 5);
+    r.pyramidLayer.push_back(k);
+    r.pyramidReason.push_back(why);
+  }
+  else if (collapsed == 2)
+  {
+    const int a = (standing + 1) % 3, b = (standing + 2) % 3;
+    int32_t t[4] = { q[a], q[b], q[standing], q[standing + 3] };
+    if (predicates::orient3d(at(t[0]), at(t[1]), at(t[2]), at(t[3])) < 0)
+      std::swap(t[0], t[1]);
+    r.tets.insert(r.tets.end(), t, t + 4);
+    r.tetLayer.push_back(k);
+    r.tetReason.push_back(why);
+  }
+}
+
+// Drops the points of collapsed columns (no cell uses them) and renumbers every list of point ids.
+void dropCollapsedPoints(const layers_detail::Walls& walls, int layers, LayerResult& r)
+{
+  const size_t base = walls.points->size() / 3;
+  std::vector<int32_t> newId(r.points.size() / 3);
+  int32_t next = 0;
+  for (size_t p = 0; p < newId.size(); ++p)
+  {
+    const bool dropped = p >= base && walls.collapsed[(p - base) / size_t(layers)];
+    newId[p] = dropped ? -1 : next;
+    if (!dropped)
+    {
+      std::copy(r.points.begin() + 3 * p, r.points.begin() + 3 * p + 3, r.points.begin() + 3 * size_t(next));
+      ++next;
+    }
+  }
+  r.points.resize(3 * size_t(next));
+  for (std::vector<int32_t>* ids : { &r.prisms, &r.pyramids, &r.tets, &r.sideQuads, &r.tetBoundaryPoint })
+    for (int32_t& id : *ids)
+      id = newId[id];
+}
+
 // Prisms, wall triangles and the tet region's boundary from the accepted columns.
 void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const layers_detail::Walls& walls,
               const std::vector<int32_t>& wallIds, const std::vector<int32_t>& otherIds, int layers,
               const std::vector<double>& scale, const std::vector<uint8_t>& reason, LayerResult& r)
 {
   const int32_t base = s.numberOfPoints();
-  const auto layerPoint = [&](int32_t v, int k) { return k < 0 ? v : base + walls.column[v] * layers + k; };
+  const auto layerPoint = [&](int32_t v, int k) { return layers_detail::layerPoint(walls, v, k, layers); };
   r.numSurfacePoints = base;
   r.pointScale.assign(base, 0.0);
   r.pointReason.assign(base, 0);
@@ -336,15 +417,7 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
         why = own;
     }
     for (int k = 0; k < layers; ++k)
-    {
-      for (int i = 0; i < 3; ++i)
-        r.prisms.push_back(layerPoint(v[i], k - 1));
-      for (int i = 0; i < 3; ++i)
-        r.prisms.push_back(layerPoint(v[i], k));
-      r.prismLayer.push_back(k);
-      r.prismTriangle.push_back(wallIds[w]);
-      r.prismReason.push_back(why);
-    }
+      addLayerCell(walls, v, k, layers, wallIds[w], why, r);
     const int32_t* input = s.triangle(wallIds[w]);
     r.wallTriangles.insert(r.wallTriangles.end(), input, input + 3);
     r.wallPatch.push_back(trianglePatch(s, report, wallIds[w]));
@@ -353,6 +426,8 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
     const bool full =
       scale[walls.column[v[0]]] == 1 && scale[walls.column[v[1]]] == 1 && scale[walls.column[v[2]]] == 1;
     r.stats.fullTriangles += full ? 1 : 0;
+    const auto isCollapsed = [&](int i) { return walls.collapsed[walls.column[v[i]]] != 0; };
+    r.stats.collapsedTriangles += isCollapsed(0) || isCollapsed(1) || isCollapsed(2) ? 1 : 0;
   }
   // The other patches, their layered corners moved to the last layer (symmetry planes), and the prisms'
   // side faces on those planes.
@@ -387,6 +462,9 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
   r.stats.layeredTriangles = static_cast<int64_t>(wallIds.size());
   r.stats.layeredPoints = static_cast<int64_t>(walls.layeredPoints.size());
   r.stats.prisms = static_cast<int64_t>(r.prismLayer.size());
+  r.stats.pyramids = static_cast<int64_t>(r.pyramidLayer.size());
+  r.stats.layerTets = static_cast<int64_t>(r.tetLayer.size());
+  dropCollapsedPoints(walls, layers, r);
   for (size_t c = 0; c < scale.size(); ++c)
   {
     r.stats.thinnedColumns += scale[c] < 1 ? 1 : 0;
@@ -437,6 +515,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
   const size_t nc = walls.layeredPoints.size();
   std::vector<double> scale(nc, 1.0);
   std::vector<uint8_t> reason(nc, 0);
+  walls.collapsed.assign(nc, 0);
   const int maxRounds = 12; // 1/2^12 of the height: below that a column is declared impossible
   for (int round = 0;; ++round)
   {
@@ -464,7 +543,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
                                pointText(s.point(p)) + ": the surface leaves no room for layers there",
                              { p });
     }
-    thin(bad, why, start, list, scale, reason);
+    thin(bad, why, start, list, walls, scale, reason);
   }
   assemble(s, checks, walls, wallIds, otherIds, options.layers, scale, reason, result);
   if (result.stats.fullTriangles == 0)

@@ -55,6 +55,34 @@ void mergeTets(const LayerResult& layers, const MesherResult& tets, LayeredMeshR
   for (size_t t = 0; t < out.interfaceTriangles.size(); t += 3)
     out.interfaceOnTets += onTets.count(sortedTriangle(out.interfaceTriangles.data() + t)) ? 1 : 0;
 }
+
+// The cells over triangles with collapsed corners: their tets, and their pyramids (or each pyramid's two
+// tets, its quad cut through its smallest id as the split prisms cut it).
+void addCollapsedCells(const LayerResult& layers, bool splitPrisms, LayeredMeshResult& result)
+{
+  const auto addTets = [&](const int32_t* v, size_t n, int32_t layer, uint8_t reason)
+  {
+    result.tets.insert(result.tets.end(), v, v + 4 * n);
+    result.tetRegion.insert(result.tetRegion.end(), n, 0);
+    result.tetLayer.insert(result.tetLayer.end(), n, layer);
+    result.tetReason.insert(result.tetReason.end(), n, reason);
+  };
+  for (size_t t = 0; t < layers.tetLayer.size(); ++t)
+    addTets(layers.tets.data() + 4 * t, 1, layers.tetLayer[t], layers.tetReason[t]);
+  if (!splitPrisms)
+  {
+    result.pyramids = layers.pyramids;
+    result.pyramidLayer = layers.pyramidLayer;
+    result.pyramidReason = layers.pyramidReason;
+    return;
+  }
+  for (size_t p = 0; p < layers.pyramidLayer.size(); ++p)
+  {
+    int32_t split[8];
+    splitPyramid(layers.pyramids.data() + 5 * p, split);
+    addTets(split, 2, layers.pyramidLayer[p], layers.pyramidReason[p]);
+  }
+}
 } // namespace
 
 Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& mesherOptions,
@@ -112,6 +140,7 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
     result.wedgeLayer = layers.prismLayer;
     result.wedgeReason = layers.prismReason;
   }
+  addCollapsedCells(layers, layerOptions.splitPrisms, result);
   result.layerStats = layers.stats;
   result.mesherStats = tets.stats;
   result.warnings = tets.warnings;

@@ -55,6 +55,49 @@ TEST(BoundaryLayers, PrismValidityIsExact)
   EXPECT_FALSE(prismIsValid(p[0], p[1], p[2], twisted[0], twisted[1], twisted[2]));
 }
 
+TEST(BoundaryLayers, CollapsedCornersMakePyramidsAndTetsCheckedExactly)
+{
+  // Points 0..2: the base; 3..5 above them; 6: below the base plane.
+  const double pts[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.1, 1, 0, 0.1, 0, 1, 0.1, 1, 0, -0.1 };
+  const int32_t prism[6] = { 0, 1, 2, 3, 4, 5 };
+  EXPECT_TRUE(layerCellIsValid(prism, pts));
+  const int32_t pyramid[6] = { 0, 1, 2, 0, 4, 5 }; // corner 0 collapsed
+  EXPECT_TRUE(layerCellIsValid(pyramid, pts));
+  const int32_t fallenPyramid[6] = { 0, 1, 2, 0, 6, 5 }; // corner 1's top below the base
+  EXPECT_FALSE(layerCellIsValid(fallenPyramid, pts));
+  const int32_t tet[6] = { 0, 1, 2, 0, 1, 5 };
+  EXPECT_TRUE(layerCellIsValid(tet, pts));
+  const int32_t fallenTet[6] = { 0, 1, 2, 0, 6, 2 }; // a tet standing below the base
+  EXPECT_FALSE(layerCellIsValid(fallenTet, pts));
+  const int32_t none[6] = { 0, 1, 2, 0, 1, 2 };
+  EXPECT_TRUE(layerCellIsValid(none, pts));
+  // The pyramid's quad (1, 2, 5, 4), cut through its smallest id, as the prism beside it cuts it.
+  int32_t p[5] = { 1, 2, 5, 4, 0 };
+  if (predicates::orient3d(pts + 3, pts + 6, pts + 15, pts) < 0)
+    std::swap(p[1], p[3]);
+  int32_t split[8], prismSplit[12];
+  splitPyramid(p, split);
+  splitPrism(prism, pts, prismSplit);
+  for (int t = 0; t < 8; t += 4)
+    EXPECT_GT(
+      predicates::orient3d(pts + 3 * split[t], pts + 3 * split[t + 1], pts + 3 * split[t + 2], pts + 3 * split[t + 3]),
+      0);
+  const auto hasEdge = [](const int32_t* tets, int n, int32_t a, int32_t b)
+  {
+    for (int t = 0; t < n; ++t)
+    {
+      const std::set<int32_t> v(tets + 4 * t, tets + 4 * t + 4);
+      if (v.count(a) && v.count(b))
+        return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(hasEdge(split, 2, 1, 5));
+  EXPECT_FALSE(hasEdge(split, 2, 2, 4));
+  EXPECT_EQ(hasEdge(prismSplit, 3, 1, 5), true);
+  EXPECT_EQ(hasEdge(prismSplit, 3, 2, 4), false);
+}
+
 TEST(BoundaryLayers, SplitAgreesAcrossSharedQuads)
 {
   // Two prisms sharing the quad (1,2,4,5) -> ids (1,2,5,6) in both; split each, the shared quad must be
