@@ -267,11 +267,43 @@ double firstHeightForYPlus(double yPlus, double reynolds, double length)
   return yPlus * length / (reynolds * std::sqrt(cf / 2));
 }
 
+namespace
+{
+// first * (1 + r + ... + r^(n-1)).
+double stackThickness(double first, double ratio, int n)
+{
+  return ratio == 1 ? first * n : first * (std::pow(ratio, n) - 1) / (ratio - 1);
+}
+
+// The ratio in [1, 10] that stacks n layers from `first` to `total` (bisection: the thickness grows with
+// the ratio), or 0 when none does.
+double growthForThickness(double first, double total, int n)
+{
+  if (!(first > 0) || !(total > 0) || n < 1 || total < stackThickness(first, 1, n) * (1 - 1e-12) ||
+      total > stackThickness(first, 10, n))
+    return 0;
+  double lo = 1, hi = 10;
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (stackThickness(first, mid, n) < total ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+} // namespace
+
 LayerOptions LayerOptions::resolved() const
 {
   LayerOptions o = *this;
   if (o.yPlus > 0 && o.firstHeight == 0)
     o.firstHeight = firstHeightForYPlus(o.yPlus, o.reynolds, o.referenceLength);
+  if (o.thickness > 0 && o.layers > 0)
+  {
+    if (o.firstHeight > 0)
+      o.growth = growthForThickness(o.firstHeight, o.thickness, o.layers);
+    else if (o.growth >= 1)
+      o.firstHeight = o.thickness / stackThickness(1, o.growth, o.layers);
+  }
   return o;
 }
 
@@ -291,7 +323,17 @@ Status validateLayerOptions(const LayerOptions& given)
     return Status::failure(ErrorKind::InvalidOption, "give the first layer height or a y+, not both");
   if (given.yPlus != 0 && !(given.yPlus > 0 && given.reynolds > 0 && given.referenceLength > 0))
     return Status::failure(ErrorKind::InvalidOption, "a y+ needs a positive y+, Reynolds number and reference length");
+  if (!(given.thickness >= 0) || !std::isfinite(given.thickness))
+    return Status::failure(ErrorKind::InvalidOption,
+                           "the total layer thickness must be positive and finite, not " +
+                             std::to_string(given.thickness));
   const LayerOptions o = given.resolved();
+  if (given.thickness > 0 && given.layers >= 1 && o.firstHeight > 0 && o.growth == 0)
+    return Status::failure(ErrorKind::InvalidOption,
+                           "no growth ratio in 1..10 stacks " + std::to_string(given.layers) +
+                             " layers from the first height " + std::to_string(o.firstHeight) +
+                             " to the total thickness " + std::to_string(given.thickness) +
+                             " (at least layers x first height)");
   if (o.layers < 1 || o.layers > 1000)
     return Status::failure(ErrorKind::InvalidOption,
                            "the number of layers must be 1..1000, not " + std::to_string(o.layers));

@@ -33,10 +33,13 @@ namespace volgrid
 
 struct LayerOptions
 {
-  // Defaults and valid ranges: OptionTable.h's layers, firstHeight, growth rows.
+  // Defaults and valid ranges: OptionTable.h's layers, firstHeight, growth, layerThickness rows.
   int layers = static_cast<int>(option::layers.defaultValue); // number of prism layers; 0 = no layers
   double firstHeight = option::firstHeight.defaultValue;      // height of the layer on the wall
   double growth = option::growth.defaultValue;                // ratio between consecutive layer heights
+  // Total thickness (0: not given). With firstHeight (or y+) it replaces growth, which is solved for;
+  // without, it gives the first height for this growth.
+  double thickness = option::layerThickness.defaultValue;
   std::vector<int32_t> patchIds;       // layered patches by id; with patchNames empty too: every wall patch
   std::vector<std::string> patchNames; // layered patches by name
   // Instead of firstHeight: the height of a target y+ at a Reynolds number on a reference length
@@ -46,7 +49,9 @@ struct LayerOptions
   bool splitPrisms = false; // output each prism as 3 tets (min-vertex-index rule)
   bool enabled() const { return layers > 0; }
   double totalThickness() const; // first * (1 + r + ... + r^(layers-1))
-  LayerOptions resolved() const; // firstHeight computed from yPlus when that is given
+  // firstHeight from yPlus when that is given; with a thickness, the growth (or the first height) that
+  // makes the layers that thick. Growth 0 when no ratio in [1, 10] does (validateLayerOptions says so).
+  LayerOptions resolved() const;
 };
 
 // Why a column is thinner than asked.

@@ -79,6 +79,12 @@ if r.returncode == 0 and os.path.exists("/usr/share/openfoam/etc/bashrc"):
     expect("Mesh OK." in c.stdout and re.search(r"prisms:\s+[1-9]", c.stdout) is not None,
            "gmshToFoam + checkMesh on the wedges: Mesh OK", c)
 
+# Ten layers from 1e-3 to a total thickness of 0.02: the growth ratio is solved for and reported.
+r = run([volgrid, "mesh", w("sis.off"), w("thick.vtu"), "--json", "--layers", "10", "--first-height", "1e-3",
+         "--layer-thickness", "0.02"])
+expect(r.returncode == 0 and abs(json.loads(r.stdout)["total_thickness"] / 0.02 - 1) < 1e-9
+       and 1.146 < json.loads(r.stdout)["growth"] < 1.148, "--layer-thickness solves the growth ratio", r)
+
 # The first height from a target y+ (flat plate, Re 1e6, length 1: 2.35288e-05).
 r = run([volgrid, "mesh", w("sis.off"), w("yplus.vtu"), "--json", "--layers", "3", "--y-plus", "1", "--reynolds", "1e6",
          "--reference-length", "1"])
@@ -88,6 +94,8 @@ bad = [(["--layers", "3", "--first-height", "1e-3", "--y-plus", "1", "--reynolds
         "not both"),
        (["--layers", "10", "--first-height", "-1e-3"], "--first-height is out of range"),
        (["--layers", "10", "--first-height", "1e-3", "--growth", "0.5"], "growth"),
+       (["--layers", "10", "--first-height", "1e-3", "--growth", "1.2", "--layer-thickness", "0.02"], "give two of"),
+       (["--layers", "10", "--first-height", "1e-3", "--layer-thickness", "0.005"], "no growth ratio"),
        (["--layers", "10", "--first-height", "5", "--growth", "1"], "more than the domain allows"),
        (["--first-height", "1e-3"], "need --layers"),
        (["--layers", "3", "--first-height", "1e-3", "--layer-patches", "wing"], "'wing' is not a patch")]

@@ -316,6 +316,40 @@ TEST(BoundaryLayers, WallSkewnessIsOpenFoamsFaceSkewnessInTheSurface)
   EXPECT_NEAR(skew(-10, 11).worst, 0.0, 1e-12);
 }
 
+TEST(BoundaryLayers, TotalThicknessGivesTheGrowthOrTheFirstHeight)
+{
+  // 10 layers from 1e-3 to a total of 0.02: the ratio r with 1e-3 (r^10 - 1) / (r - 1) = 0.02 (1.1469...).
+  LayerOptions o = options(10, 1e-3, 1.2);
+  o.thickness = 0.02;
+  const LayerOptions solved = o.resolved();
+  EXPECT_GT(solved.growth, 1.146);
+  EXPECT_LT(solved.growth, 1.148);
+  EXPECT_NEAR(solved.totalThickness() / 0.02, 1.0, 1e-12);
+  const SurfaceMesh s = layertest::sphereInSphere(2);
+  LayerResult r;
+  ASSERT_TRUE(growLayers(s, o, r).ok());
+  for (size_t p = 0; p < r.prismLayer.size(); ++p)
+    if (r.prismLayer[p] == 9)
+    {
+      const int32_t* v = r.prisms.data() + 6 * p;
+      ASSERT_NEAR(distance(at(r, v[0]), at(r, v[3])) / (1e-3 * std::pow(solved.growth, 9)), 1.0, 1e-9);
+    }
+  // Without a first height: the one that stacks 10 layers of ratio 1.2 to 0.02.
+  o.firstHeight = 0;
+  EXPECT_NEAR(o.resolved().firstHeight / (0.02 * 0.2 / (std::pow(1.2, 10) - 1)), 1.0, 1e-12);
+  EXPECT_TRUE(validateLayerOptions(o).ok());
+  // Thinner than 10 first layers, or thicker than ratio 10 allows: no ratio, a message.
+  o.firstHeight = 1e-3;
+  o.thickness = 0.009;
+  Status st = validateLayerOptions(o);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("no growth ratio"), std::string::npos) << st.message;
+  o.thickness = 1e8;
+  EXPECT_FALSE(validateLayerOptions(o).ok());
+  o.thickness = -1;
+  EXPECT_FALSE(validateLayerOptions(o).ok());
+}
+
 TEST(BoundaryLayers, FirstHeightFromYPlus)
 {
   // Re = 1e6, L = 1, y+ = 1: Cf = 0.026 / 1e6^(1/7) = 3.6126e-3, sqrt(Cf/2) = 4.2501e-2, y = 2.3529e-5.
