@@ -203,11 +203,12 @@ bool parseArguments(int argc, char** argv, Arguments& args)
       positional.push_back(a);
   }
   if (!args.layers.enabled() &&
-      (args.layers.firstHeight != 0 || args.layers.yPlus != 0 || !args.layers.patchNames.empty() ||
-       !args.layers.patchIds.empty() || args.layers.splitPrisms))
+      (args.layers.firstHeight != 0 || args.layers.yPlus != 0 || args.layers.thickness != 0 ||
+       !args.layers.patchNames.empty() || !args.layers.patchIds.empty() || args.layers.splitPrisms))
   {
     std::fprintf(stderr,
-                 "volgrid mesh: --first-height, --y-plus, --layer-patches and --split-prisms need --layers N\n");
+                 "volgrid mesh: --first-height, --y-plus, --layer-thickness, --layer-patches and --split-prisms "
+                 "need --layers N\n");
     return false;
   }
   if (positional.size() != 2)

@@ -27,9 +27,11 @@ const std::string kLayerUsage =
   "  --y-plus Y --reynolds RE --reference-length L\n"
   "                       instead of --first-height: the height of y+ = Y on a flat plate of length L at\n"
   "                       Reynolds number RE (Cf = 0.026 / RE^(1/7))\n" +
-  optionUsage(option::growth, "R") +
-  "  --layer-patches A,B  layered patches by name or id (default: every patch whose OpenFOAM type is wall)\n"
-  "  --split-prisms       each prism as 3 tets (for tet-only solvers; needed for the formats without prisms)\n";
+  optionUsage(option::growth, "R") + optionUsage(option::layerThickness, "T") +
+  "  --layer-patches A,B  layered patches by name or id (default: named patches whose OpenFOAM type is wall,\n"
+  "                       unnamed ones that neither span the domain's box nor enclose another surface)\n"
+  "  --split-prisms       each prism as 3 tets (for tet-only solvers; needed for the formats without prisms,\n"
+  "                       and for pyramids outside gmsh .msh)\n";
 
 int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
 {
@@ -40,8 +42,27 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
     return 1;
   }
   if (a != "--layers" && a != "--first-height" && a != "--growth" && a != "--layer-patches" && a != "--y-plus" &&
-      a != "--reynolds" && a != "--reference-length")
+      a != "--reynolds" && a != "--reference-length" && a != "--layer-thickness")
     return 0;
+  if (a == "--growth" || a == "--layer-thickness")
+  {
+    // Two of first height, growth and thickness decide the third: all three would contradict each other.
+    bool first = false, growth = false, thickness = false;
+    for (int k = 1; k < argc; ++k)
+    {
+      const std::string b = argv[k];
+      first = first || b == "--first-height" || b == "--y-plus";
+      growth = growth || b == "--growth";
+      thickness = thickness || b == "--layer-thickness";
+    }
+    if (first && growth && thickness)
+    {
+      std::fprintf(stderr,
+                   "volgrid mesh: give two of --first-height (or --y-plus), --growth and --layer-thickness; "
+                   "the third follows from them\n");
+      return -1;
+    }
+  }
   if (i + 1 >= argc)
   {
     std::fprintf(stderr, "volgrid mesh: %s needs a value\n", a.c_str());
@@ -68,6 +89,7 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
      : a == "--y-plus"           ? options.yPlus
      : a == "--reynolds"         ? options.reynolds
      : a == "--reference-length" ? options.referenceLength
+     : a == "--layer-thickness"  ? options.thickness
                                  : options.firstHeight) = x;
   return 1;
 }
@@ -88,6 +110,13 @@ int64_t invertedCells(const LayeredMeshResult& r)
   int64_t bad = 0;
   for (size_t t = 0; t < r.tets.size(); t += 4)
     bad += predicates::orient3d(at(r.tets[t]), at(r.tets[t + 1]), at(r.tets[t + 2]), at(r.tets[t + 3])) > 0 ? 0 : 1;
+  for (size_t p = 0; p < r.pyramids.size(); p += 5)
+  {
+    int32_t split[8];
+    splitPyramid(r.pyramids.data() + p, split);
+    for (int t = 0; t < 8; t += 4)
+      bad += predicates::orient3d(at(split[t]), at(split[t + 1]), at(split[t + 2]), at(split[t + 3])) > 0 ? 0 : 1;
+  }
   for (size_t w = 0; w < r.wedges.size(); w += 6)
     bad += prismIsValid(at(r.wedges[w]), at(r.wedges[w + 1]), at(r.wedges[w + 2]), at(r.wedges[w + 3]),
                         at(r.wedges[w + 4]), at(r.wedges[w + 5]))
@@ -168,6 +197,8 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
     mesh.patchNames = r.patchNames;
     mesh.prisms = r.wedges;
     mesh.prismRegion.assign(r.wedges.size() / 6, 0);
+    mesh.pyramids = r.pyramids;
+    mesh.pyramidRegion.assign(r.pyramids.size() / 5, 0);
     if (!layers.splitPrisms)
     {
       mesh.quads = r.sideQuads;
@@ -180,21 +211,27 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
   const long long wedges = (long long)(r.wedges.size() / 6), tets = (long long)(r.tets.size() / 4);
   if (json)
     std::printf(
-      "{\"input\": %s, \"points\": %lld, \"wedges\": %lld, \"tets\": %lld, \"layers\": %d, \"first_height\": %.6g, "
-      "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"thinned_columns\": %lld, "
-      "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, "
+      "{\"input\": %s, \"points\": %lld, \"wedges\": %lld, \"pyramids\": %lld, \"tets\": %lld, \"layers\": %d, "
+      "\"first_height\": %.6g, \"growth\": %.9g, \"total_thickness\": %.9g, "
+      "\"layered_faces\": %lld, \"full_faces\": %lld, \"coverage\": %.6f, \"all_layers\": %.6f, "
+      "\"thinned_columns\": %lld, "
+      "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, \"collapsed_columns\": "
+      "%lld, "
       "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
-      "\"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
-      jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, tets, layers.layers,
-      layers.resolved().firstHeight, (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(),
+      "\"wall_skew_edges\": %lld, \"wall_skewness_max\": %.6g, \"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
+      jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, (long long)(r.pyramids.size() / 5),
+      tets, layers.layers, layers.resolved().firstHeight, layers.resolved().growth, layers.resolved().totalThickness(),
+      (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(), l.allLayersShare(),
       (long long)l.thinnedColumns, (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3],
-      l.minScale, (long long)inverted, (long long)r.interfaceOnTets, l.seconds, seconds);
+      (long long)l.thinnedBy[4], l.minScale, (long long)inverted, (long long)r.interfaceOnTets,
+      (long long)l.wallSkewness.edgesOverLimit, l.wallSkewness.worst, l.seconds, seconds);
   else
-    std::printf("%s: %d layers on %lld faces (coverage %.2f%%, %lld thinned columns) -> %lld wedges, %lld tets on "
-                "%lld points, %lld inverted, in %.3f s\n",
-                surfaceName.c_str(), layers.layers, (long long)l.layeredTriangles, 100.0 * l.coverage(),
-                (long long)l.thinnedColumns, wedges, tets, (long long)(r.points.size() / 3), (long long)inverted,
-                seconds);
+    std::printf(
+      "%s: %d layers on %lld faces (full height on %.2f%%, every layer on %.2f%%, %lld thinned and %lld "
+      "collapsed columns) -> %lld wedges, %lld pyramids, %lld tets on %lld points, %lld inverted, in %.3f s\n",
+      surfaceName.c_str(), layers.layers, (long long)l.layeredTriangles, 100.0 * l.coverage(),
+      100.0 * l.allLayersShare(), (long long)l.thinnedColumns, (long long)l.thinnedBy[4], wedges,
+      (long long)(r.pyramids.size() / 5), tets, (long long)(r.points.size() / 3), (long long)inverted, seconds);
   return 0;
 }
 

@@ -1,5 +1,6 @@
 // volgrid mesh --layers: boundary-layer prisms on the wall patches plus tets (Core/Mesher/LayeredMesher.h),
-// written as one mixed mesh (VTK_WEDGE and VTK_TETRA, cell arrays LayerIndex, ThinnedReason, Region).
+// written as one mixed mesh (VTK_WEDGE, VTK_PYRAMID where a column collapsed, VTK_TETRA; cell arrays
+// LayerIndex, ThinnedReason, Region).
 #pragma once
 
 #include "BoundaryLayers.h"

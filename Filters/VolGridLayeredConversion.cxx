@@ -29,7 +29,8 @@ void VolGridFillFromLayeredResult(const volgrid::LayeredMeshResult& r, vtkUnstru
   volume->SetPoints(points);
   const vtkIdType wedges = static_cast<vtkIdType>(r.wedges.size() / 6);
   const vtkIdType tets = static_cast<vtkIdType>(r.tets.size() / 4);
-  volume->Allocate(wedges + tets);
+  const vtkIdType pyramids = static_cast<vtkIdType>(r.pyramids.size() / 5);
+  volume->Allocate(wedges + pyramids + tets);
   vtkNew<vtkIntArray> layer, region;
   vtkNew<vtkUnsignedCharArray> reason;
   layer->SetName("LayerIndex");
@@ -44,6 +45,16 @@ void VolGridFillFromLayeredResult(const volgrid::LayeredMeshResult& r, vtkUnstru
     volume->InsertNextCell(VTK_WEDGE, 6, ids);
     layer->InsertNextValue(r.wedgeLayer[w]);
     reason->InsertNextValue(r.wedgeReason[w]);
+    region->InsertNextValue(0);
+  }
+  for (vtkIdType p = 0; p < pyramids; ++p)
+  {
+    // Core's quad turns like a positive tet's base towards the apex, as VTK's pyramid base does.
+    const int32_t* v = r.pyramids.data() + 5 * p;
+    const vtkIdType ids[5] = { v[0], v[1], v[2], v[3], v[4] };
+    volume->InsertNextCell(VTK_PYRAMID, 5, ids);
+    layer->InsertNextValue(r.pyramidLayer[p]);
+    reason->InsertNextValue(r.pyramidReason[p]);
     region->InsertNextValue(0);
   }
   for (vtkIdType t = 0; t < tets; ++t)

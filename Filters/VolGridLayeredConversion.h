@@ -12,8 +12,8 @@ namespace volgrid
 struct LayeredMeshResult;
 }
 
-// The volume: VTK_WEDGE cells (the prisms, first) and VTK_TETRA cells, with the cell arrays LayerIndex
-// (-1 for the tets outside the layers), ThinnedReason (Core's ThinnedReason of the column) and Region,
+// The volume: VTK_WEDGE cells (the prisms, first), VTK_PYRAMID cells (over collapsed columns) and VTK_TETRA
+// cells, with the cell arrays LayerIndex (-1 for the tets outside the layers), ThinnedReason (Core's ThinnedReason of the column) and Region,
 // and PatchNames as field data. The boundary (may be null): the boundary triangles and the prisms' side
 // quads on symmetry planes, with PatchId and PatchNames. Replaces the data sets' points and cells.
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromLayeredResult(const volgrid::LayeredMeshResult& result,

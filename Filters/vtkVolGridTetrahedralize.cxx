@@ -60,6 +60,7 @@ vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
   this->NumberOfLayers = layerDefaults.layers;
   this->FirstLayerHeight = layerDefaults.firstHeight;
   this->LayerGrowthRatio = layerDefaults.growth;
+  this->TotalLayerThickness = layerDefaults.thickness;
   this->SplitPrisms = layerDefaults.splitPrisms;
 }
 
@@ -94,6 +95,7 @@ VOLGRID_OPTION_SETTER(MaxPasses, int, passes)
 VOLGRID_OPTION_SETTER(NumberOfLayers, int, layers)
 VOLGRID_OPTION_SETTER(FirstLayerHeight, double, firstHeight)
 VOLGRID_OPTION_SETTER(LayerGrowthRatio, double, growth)
+VOLGRID_OPTION_SETTER(TotalLayerThickness, double, layerThickness)
 #undef VOLGRID_OPTION_SETTER
 
 vtkVolGridTetrahedralize::~vtkVolGridTetrahedralize()
@@ -395,6 +397,7 @@ int vtkVolGridTetrahedralize::MeshWithLayers(const volgrid::SurfaceMesh& surface
   layers.layers = this->NumberOfLayers;
   layers.firstHeight = this->FirstLayerHeight;
   layers.growth = this->LayerGrowthRatio;
+  layers.thickness = this->TotalLayerThickness;
   layers.splitPrisms = this->SplitPrisms;
   if (this->LayerPatches)
     volgrid::addLayerPatches(this->LayerPatches, layers);
@@ -531,6 +534,7 @@ void vtkVolGridTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfLayers: " << this->NumberOfLayers << "\n";
   os << indent << "FirstLayerHeight: " << this->FirstLayerHeight << "\n";
   os << indent << "LayerGrowthRatio: " << this->LayerGrowthRatio << "\n";
+  os << indent << "TotalLayerThickness: " << this->TotalLayerThickness << "\n";
   os << indent << "LayerPatches: " << (this->LayerPatches ? this->LayerPatches : "(none)") << "\n";
   os << indent << "SplitPrisms: " << this->SplitPrisms << "\n";
 }

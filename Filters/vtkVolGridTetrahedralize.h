@@ -244,9 +244,9 @@ public:
   ///@{
   /**
    * Boundary layers: the number of prism layers grown from the wall patches (0, the default: none).
-   * With layers, output 0 holds VTK_WEDGE cells in the layers and VTK_TETRA cells elsewhere (cell arrays
-   * LayerIndex, ThinnedReason, Region) and output 1 the boundary triangles and the prisms' side quads on
-   * symmetry planes. Default and range: Core's OptionTable.h.
+   * With layers, output 0 holds VTK_WEDGE cells in the layers (VTK_PYRAMID and VTK_TETRA where a column
+   * collapsed onto the wall) and VTK_TETRA cells elsewhere (cell arrays LayerIndex, ThinnedReason, Region) and output 1
+   * the boundary triangles and the prisms' side quads on symmetry planes. Default and range: Core's OptionTable.h.
    */
   virtual void SetNumberOfLayers(int value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(NumberOfLayers, int);
@@ -262,6 +262,10 @@ public:
   /** Boundary layers: ratio between consecutive layer heights. Default: Core's OptionTable.h. */
   virtual void SetLayerGrowthRatio(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(LayerGrowthRatio, double);
+  // Total thickness of the layers (0: not given): with FirstLayerHeight the growth ratio is solved for
+  // (LayerGrowthRatio is then not used), without it the first height for LayerGrowthRatio.
+  virtual void SetTotalLayerThickness(double value); // clamped to the valid range of Core's OptionTable.h
+  vtkGetMacro(TotalLayerThickness, double);
   ///@}
 
   ///@{
@@ -317,9 +321,10 @@ protected:
   double TargetMinDihedral = 0; // the default: the constructor, from Core
   int MaxPasses = 0;            // the default: the constructor, from Core
   bool Smoothing = true;
-  int NumberOfLayers = 0;      // the default: the constructor, from Core
-  double FirstLayerHeight = 0; // the default: the constructor, from Core
-  double LayerGrowthRatio = 0; // the default: the constructor, from Core
+  int NumberOfLayers = 0;         // the default: the constructor, from Core
+  double FirstLayerHeight = 0;    // the default: the constructor, from Core
+  double LayerGrowthRatio = 0;    // the default: the constructor, from Core
+  double TotalLayerThickness = 0; // the default: the constructor, from Core
   char* LayerPatches = nullptr;
   bool SplitPrisms = false;
 

@@ -60,13 +60,14 @@ inline constexpr OptionSpec passes{ "passes",     "MaxPasses",         OptionTyp
 inline constexpr OptionSpec layers{ "layers",     "NumberOfLayers",    OptionType::Integer, 0,    0,   100,  true,  true,  0,   20,   "number of prism layers on the wall patches (0: none)" };
 inline constexpr OptionSpec firstHeight{ "first-height", "FirstLayerHeight", OptionType::Real, 0, 0,  kInf, false, false, 0,   kInf, "height of the layer on the wall (0: not given, --y-plus instead)" };
 inline constexpr OptionSpec growth{ "growth",     "LayerGrowthRatio",  OptionType::Real,    1.2,  1,   kInf, true,  false, 1,   2,    "ratio between consecutive layer heights" };
+inline constexpr OptionSpec layerThickness{ "layer-thickness", "TotalLayerThickness", OptionType::Real, 0, 0, kInf, true, false, 0, kInf, "total thickness of the layers (0: not given); with a first height the growth ratio is solved for, else the first height" };
 // clang-format on
 inline constexpr const OptionSpec* table[] = { &alpha,   &beta,      &sizeScale,   &gradation,
                                                &maxEdge, &maxVolume, &targetAngle, &passes };
 // The boundary-layer rows (LayerOptions' defaults, the CLI's --layers parsing, the filter's "Boundary
 // layers" properties and their Plugin XML placeholders). Apart from `table`, whose rows the mesh and
 // refine commands set on the improvement options (findOption).
-inline constexpr const OptionSpec* layerTable[] = { &layers, &firstHeight, &growth };
+inline constexpr const OptionSpec* layerTable[] = { &layers, &firstHeight, &growth, &layerThickness };
 } // namespace option
 
 // The row whose CLI name (flag without "--") is `name`, or nullptr.

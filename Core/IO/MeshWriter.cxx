@@ -119,9 +119,10 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
   std::vector<int32_t> patches = mesh.trianglePatch, regions = mesh.tetRegion;
   patches.insert(patches.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
   regions.insert(regions.end(), mesh.prismRegion.begin(), mesh.prismRegion.end());
+  regions.insert(regions.end(), mesh.pyramidRegion.begin(), mesh.pyramidRegion.end());
   if (!normalized(patches) || !normalized(regions) || mesh.tetRegion.size() != mesh.tets.size() / 4 ||
       mesh.trianglePatch.size() != mesh.triangles.size() / 3 || mesh.prismRegion.size() != mesh.prisms.size() / 6 ||
-      mesh.quadPatch.size() != mesh.quads.size() / 4)
+      mesh.quadPatch.size() != mesh.quads.size() / 4 || mesh.pyramidRegion.size() != mesh.pyramids.size() / 5)
   {
     SolverMesh copy = mesh;
     normalizeLabels(copy);
@@ -132,6 +133,10 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
       ErrorKind::InvalidOption,
       "'" + path + "': prisms are not written to " + meshFormatName(format) +
         " (gmsh, OpenFOAM, SU2, CGNS, Exodus II and VTK take them); split them into tets for this format");
+  if (!mesh.pyramids.empty() && format != MeshFormat::Gmsh41 && format != MeshFormat::Gmsh22)
+    return Status::failure(ErrorKind::InvalidOption,
+                           "'" + path + "': pyramids (where a layer column collapsed) are written to gmsh .msh (and "
+                                        "VTK) only; split the layers into tets for this format (--split-prisms)");
   switch (format)
   {
     case MeshFormat::Gmsh41:

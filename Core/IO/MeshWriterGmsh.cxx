@@ -1,7 +1,7 @@
 // gmsh .msh writers, ASCII 4.1 and 2.2. Each patch is a surface entity and each region a volume entity
 // whose tag equals its label, carrying one physical group of the same tag named in $PhysicalNames.
 // Node and element tags are 1-based; tets keep VolGrid's (and gmsh's) positive vertex order; prisms
-// (type 6) and boundary quads (type 3) of boundary layers are written when the mesh has them.
+// (type 6), pyramids (type 7) and boundary quads (type 3) of boundary layers are written when the mesh has them.
 #include "MeshWriter.h"
 #include "OutputFile.h"
 
@@ -73,13 +73,14 @@ void writeEntities(std::FILE* f, const SolverMesh& mesh, const std::vector<int32
   {
     entityBox(mesh, mesh.tets, 4, mesh.tetRegion, r, b);
     growBox(mesh, mesh.prisms, 6, mesh.prismRegion, r, b);
+    growBox(mesh, mesh.pyramids, 5, mesh.pyramidRegion, r, b);
     std::fprintf(f, "%d %.17g %.17g %.17g %.17g %.17g %.17g 1 %d 0\n", r, b[0], b[1], b[2], b[3], b[4], b[5], r);
   }
   std::fprintf(f, "$EndEntities\n");
 }
 
 // The elements carrying `label`, numbered from `next`; 2.2 lines also carry the physical and entity tags.
-// gmsh element types: 2 triangle, 3 quad, 4 tet, 6 prism.
+// gmsh element types: 2 triangle, 3 quad, 4 tet, 6 prism, 7 pyramid.
 void writeCells(std::FILE* f, const std::vector<int32_t>& cells, int nv, int type, const std::vector<int32_t>& labels,
                 int32_t label, int64_t& next, bool v22)
 {
@@ -107,6 +108,7 @@ Status writeGmsh(const std::string& path, const SolverMesh& mesh, bool v22)
   std::vector<int32_t> allPatches = mesh.trianglePatch, allRegions = mesh.tetRegion;
   allPatches.insert(allPatches.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
   allRegions.insert(allRegions.end(), mesh.prismRegion.begin(), mesh.prismRegion.end());
+  allRegions.insert(allRegions.end(), mesh.pyramidRegion.begin(), mesh.pyramidRegion.end());
   const std::vector<int32_t> patches = distinctLabels(allPatches);
   const std::vector<int32_t> regions = distinctLabels(allRegions);
   // One block per (entity, element type) that has elements (gmsh 4.1).
@@ -130,9 +132,10 @@ Status writeGmsh(const std::string& path, const SolverMesh& mesh, bool v22)
   add(2, patches, 3, 4, mesh.quads, mesh.quadPatch);
   add(3, regions, 4, 4, mesh.tets, mesh.tetRegion);
   add(3, regions, 6, 6, mesh.prisms, mesh.prismRegion);
+  add(3, regions, 7, 5, mesh.pyramids, mesh.pyramidRegion);
   const int64_t np = mesh.numberOfPoints(),
                 ne = mesh.numberOfTriangles() + mesh.numberOfTets() + static_cast<int64_t>(mesh.quads.size() / 4) +
-    static_cast<int64_t>(mesh.prisms.size() / 6);
+    static_cast<int64_t>(mesh.prisms.size() / 6) + static_cast<int64_t>(mesh.pyramids.size() / 5);
   writeHeader(f, v22 ? "2.2" : "4.1");
   writePhysicalNames(f, patches, regions, mesh);
   if (!v22)

@@ -4,6 +4,7 @@
 #include "BoundaryLayersMarching.h"
 #include "MeshWriter.h"
 #include "PatchNames.h"
+#include "Predicates.h"
 #include "SurfaceChecks.h"
 
 #include <algorithm>
@@ -37,6 +38,49 @@ std::string patchName(const SurfaceMesh& s, int32_t patch)
   return it != s.patchNames.end() ? it->second : (s.hasPatchIds() ? "patch" : "shell") + std::to_string(patch);
 }
 
+// The default layered patches. A named patch is a wall unless its name says otherwise (OpenFOAM's rule:
+// symmetry, farfield, inlet, outlet). An unnamed one (a Medit reference, an unnamed shell) is judged by
+// geometry: not a wall when it is on a shell around another shell (a far field around a body), or when it
+// reaches both ends of the whole surface's box along some axis (a far-field sphere, a symmetry plane
+// through the domain, a box side). A body, also one touching a symmetry plane, reaches neither.
+std::set<int32_t> defaultWalls(const SurfaceMesh& s, const SurfaceCheckReport& report, const std::set<int32_t>& present)
+{
+  std::vector<bool> enclosesAnother(report.shells.size(), false);
+  for (const SurfaceShell& shell : report.shells)
+    if (shell.parent >= 0)
+      enclosesAnother[shell.parent] = true;
+  BoundingBox all;
+  std::map<int32_t, BoundingBox> box;
+  std::set<int32_t> aroundAnother;
+  for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
+  {
+    const int32_t patch = trianglePatch(s, report, t), shell = report.triangleShell[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      all.add(s.point(s.triangles[3 * t + i]));
+      box[patch].add(s.point(s.triangles[3 * t + i]));
+    }
+    if (shell >= 0 && enclosesAnother[shell])
+      aroundAnother.insert(patch);
+  }
+  const auto spansTheDomain = [&](const BoundingBox& own)
+  {
+    for (int d = 0; d < 3; ++d)
+      if (own.min[d] == all.min[d] && own.max[d] == all.max[d] && all.max[d] > all.min[d])
+        return true;
+    return false;
+  };
+  std::set<int32_t> walls;
+  for (const int32_t patch : present)
+  {
+    const bool named = s.hasPatchIds() && s.patchNames.count(patch);
+    if (named ? defaultOpenFoamPatchType(s.patchNames.at(patch)) == "wall"
+              : present.size() == 1 || (!aroundAnother.count(patch) && !spansTheDomain(box[patch])))
+      walls.insert(patch);
+  }
+  return walls;
+}
+
 // The set of layered patch labels, or a Status naming what was asked for and not found.
 Status choosePatches(const SurfaceMesh& s, const SurfaceCheckReport& report, const LayerOptions& options,
                      std::set<int32_t>& chosen)
@@ -66,16 +110,12 @@ Status choosePatches(const SurfaceMesh& s, const SurfaceCheckReport& report, con
                              "layer patch '" + name + "' is not a patch of the surface; patches: " + available);
   }
   if (options.patchIds.empty() && options.patchNames.empty())
-    for (const int32_t p : present)
-    {
-      // Without patch ids a shell is a wall when another shell encloses it (a body in a far field).
-      const bool wall = s.hasPatchIds() ? defaultOpenFoamPatchType(patchName(s, p)) == "wall"
-                                        : (report.shells[p].depth > 0 || present.size() == 1);
-      if (wall)
-        chosen.insert(p);
-    }
+    chosen = defaultWalls(s, report, present);
   if (chosen.empty())
-    return Status::failure(ErrorKind::InvalidOption, "no wall patch to grow layers from; patches: " + available);
+    return Status::failure(ErrorKind::InvalidOption,
+                           "no wall patch to grow layers from (the far field, symmetry planes and the domain's outer "
+                           "box get none); name the patches with --layer-patches / LayerPatches; patches: " +
+                             available);
   return Status::success();
 }
 
@@ -159,20 +199,32 @@ Status buildWalls(const SurfaceMesh& s, const SurfaceCheckReport& report, const 
 }
 
 // Halves the failing columns, then limits every column to 1.5 times its thinnest neighbour.
+// A column thinned below this fraction of its height collapses instead (ThinnedReason::Collapsed).
+constexpr double kCollapseBelow = 1.0 / 8;
+
+// Halves the bad columns (collapsing those that fall below kCollapseBelow, except on symmetry planes),
+// then limits every column to 1.5x its thinnest non-collapsed neighbour.
 void thin(const std::vector<int32_t>& bad, ThinnedReason why, const std::vector<int32_t>& start,
-          const std::vector<int32_t>& list, std::vector<double>& scale, std::vector<uint8_t>& reason)
+          const std::vector<int32_t>& list, layers_detail::Walls& walls, std::vector<double>& scale,
+          std::vector<uint8_t>& reason)
 {
   for (const int32_t c : bad)
   {
     scale[c] *= 0.5;
     if (reason[c] == uint8_t(ThinnedReason::None) || reason[c] == uint8_t(ThinnedReason::Neighbour))
       reason[c] = uint8_t(why);
+    if (scale[c] < kCollapseBelow && walls.slipAxis[c] < 0)
+    {
+      scale[c] = 0;
+      reason[c] = uint8_t(ThinnedReason::Collapsed);
+      walls.collapsed[c] = 1;
+    }
   }
   for (bool changed = true; changed;)
   {
     changed = false;
     for (size_t c = 0; c + 1 < start.size(); ++c)
-      for (int32_t k = start[c]; k < start[c + 1]; ++k)
+      for (int32_t k = start[c]; k < start[c + 1] && !walls.collapsed[c]; ++k)
         if (scale[list[k]] > 1.5 * scale[c])
         {
           scale[list[k]] = 1.5 * scale[c];
@@ -200,6 +252,8 @@ const char* thinnedReasonName(ThinnedReason reason)
       return "collision";
     case ThinnedReason::Neighbour:
       return "neighbour";
+    case ThinnedReason::Collapsed:
+      return "collapsed";
     default:
       return "none";
   }
@@ -213,11 +267,43 @@ double firstHeightForYPlus(double yPlus, double reynolds, double length)
   return yPlus * length / (reynolds * std::sqrt(cf / 2));
 }
 
+namespace
+{
+// first * (1 + r + ... + r^(n-1)).
+double stackThickness(double first, double ratio, int n)
+{
+  return ratio == 1 ? first * n : first * (std::pow(ratio, n) - 1) / (ratio - 1);
+}
+
+// The ratio in [1, 10] that stacks n layers from `first` to `total` (bisection: the thickness grows with
+// the ratio), or 0 when none does.
+double growthForThickness(double first, double total, int n)
+{
+  if (!(first > 0) || !(total > 0) || n < 1 || total < stackThickness(first, 1, n) * (1 - 1e-12) ||
+      total > stackThickness(first, 10, n))
+    return 0;
+  double lo = 1, hi = 10;
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (stackThickness(first, mid, n) < total ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+} // namespace
+
 LayerOptions LayerOptions::resolved() const
 {
   LayerOptions o = *this;
   if (o.yPlus > 0 && o.firstHeight == 0)
     o.firstHeight = firstHeightForYPlus(o.yPlus, o.reynolds, o.referenceLength);
+  if (o.thickness > 0 && o.layers > 0)
+  {
+    if (o.firstHeight > 0)
+      o.growth = growthForThickness(o.firstHeight, o.thickness, o.layers);
+    else if (o.growth >= 1)
+      o.firstHeight = o.thickness / stackThickness(1, o.growth, o.layers);
+  }
   return o;
 }
 
@@ -237,7 +323,17 @@ Status validateLayerOptions(const LayerOptions& given)
     return Status::failure(ErrorKind::InvalidOption, "give the first layer height or a y+, not both");
   if (given.yPlus != 0 && !(given.yPlus > 0 && given.reynolds > 0 && given.referenceLength > 0))
     return Status::failure(ErrorKind::InvalidOption, "a y+ needs a positive y+, Reynolds number and reference length");
+  if (!(given.thickness >= 0) || !std::isfinite(given.thickness))
+    return Status::failure(ErrorKind::InvalidOption,
+                           "the total layer thickness must be positive and finite, not " +
+                             std::to_string(given.thickness));
   const LayerOptions o = given.resolved();
+  if (given.thickness > 0 && given.layers >= 1 && o.firstHeight > 0 && o.growth == 0)
+    return Status::failure(ErrorKind::InvalidOption,
+                           "no growth ratio in 1..10 stacks " + std::to_string(given.layers) +
+                             " layers from the first height " + std::to_string(o.firstHeight) +
+                             " to the total thickness " + std::to_string(given.thickness) +
+                             " (at least layers x first height)");
   if (o.layers < 1 || o.layers > 1000)
     return Status::failure(ErrorKind::InvalidOption,
                            "the number of layers must be 1..1000, not " + std::to_string(o.layers));
@@ -254,13 +350,79 @@ Status validateLayerOptions(const LayerOptions& given)
 
 namespace
 {
+// The cell of layer k over wall triangle v: a prism, or with collapsed corners a pyramid (apex: the one
+// collapsed point) or a tet (two), or nothing (three). Pyramids and tets are oriented positive.
+void addLayerCell(const layers_detail::Walls& walls, const int32_t* v, int k, int layers, int32_t triangle, uint8_t why,
+                  LayerResult& r)
+{
+  int32_t q[6];
+  int collapsed = 0, flat = -1, standing = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    q[i] = layers_detail::layerPoint(walls, v[i], k - 1, layers);
+    q[i + 3] = layers_detail::layerPoint(walls, v[i], k, layers);
+    (q[i] == q[i + 3] ? flat : standing) = i;
+    collapsed += q[i] == q[i + 3];
+  }
+  const auto at = [&](int32_t id) { return r.points.data() + 3 * size_t(id); };
+  if (collapsed == 0)
+  {
+    r.prisms.insert(r.prisms.end(), q, q + 6);
+    r.prismLayer.push_back(k);
+    r.prismTriangle.push_back(triangle);
+    r.prismReason.push_back(why);
+  }
+  else if (collapsed == 1)
+  {
+    const int b = (flat + 1) % 3, c = (flat + 2) % 3;
+    int32_t p[5] = { q[b], q[c], q[c + 3], q[b + 3], q[flat] };
+    if (predicates::orient3d(at(p[0]), at(p[1]), at(p[2]), at(p[4])) < 0)
+      std::swap(p[1], p[3]);
+    r.pyramids.insert(r.pyramids.end(), p, p + 5);
+    r.pyramidLayer.push_back(k);
+    r.pyramidReason.push_back(why);
+  }
+  else if (collapsed == 2)
+  {
+    const int a = (standing + 1) % 3, b = (standing + 2) % 3;
+    int32_t t[4] = { q[a], q[b], q[standing], q[standing + 3] };
+    if (predicates::orient3d(at(t[0]), at(t[1]), at(t[2]), at(t[3])) < 0)
+      std::swap(t[0], t[1]);
+    r.tets.insert(r.tets.end(), t, t + 4);
+    r.tetLayer.push_back(k);
+    r.tetReason.push_back(why);
+  }
+}
+
+// Drops the points of collapsed columns (no cell uses them) and renumbers every list of point ids.
+void dropCollapsedPoints(const layers_detail::Walls& walls, int layers, LayerResult& r)
+{
+  const size_t base = walls.points->size() / 3;
+  std::vector<int32_t> newId(r.points.size() / 3);
+  int32_t next = 0;
+  for (size_t p = 0; p < newId.size(); ++p)
+  {
+    const bool dropped = p >= base && walls.collapsed[(p - base) / size_t(layers)];
+    newId[p] = dropped ? -1 : next;
+    if (!dropped)
+    {
+      std::copy(r.points.begin() + 3 * p, r.points.begin() + 3 * p + 3, r.points.begin() + 3 * size_t(next));
+      ++next;
+    }
+  }
+  r.points.resize(3 * size_t(next));
+  for (std::vector<int32_t>* ids : { &r.prisms, &r.pyramids, &r.tets, &r.sideQuads, &r.tetBoundaryPoint })
+    for (int32_t& id : *ids)
+      id = newId[id];
+}
+
 // Prisms, wall triangles and the tet region's boundary from the accepted columns.
 void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const layers_detail::Walls& walls,
               const std::vector<int32_t>& wallIds, const std::vector<int32_t>& otherIds, int layers,
               const std::vector<double>& scale, const std::vector<uint8_t>& reason, LayerResult& r)
 {
   const int32_t base = s.numberOfPoints();
-  const auto layerPoint = [&](int32_t v, int k) { return k < 0 ? v : base + walls.column[v] * layers + k; };
+  const auto layerPoint = [&](int32_t v, int k) { return layers_detail::layerPoint(walls, v, k, layers); };
   r.numSurfacePoints = base;
   r.pointScale.assign(base, 0.0);
   r.pointReason.assign(base, 0);
@@ -297,15 +459,7 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
         why = own;
     }
     for (int k = 0; k < layers; ++k)
-    {
-      for (int i = 0; i < 3; ++i)
-        r.prisms.push_back(layerPoint(v[i], k - 1));
-      for (int i = 0; i < 3; ++i)
-        r.prisms.push_back(layerPoint(v[i], k));
-      r.prismLayer.push_back(k);
-      r.prismTriangle.push_back(wallIds[w]);
-      r.prismReason.push_back(why);
-    }
+      addLayerCell(walls, v, k, layers, wallIds[w], why, r);
     const int32_t* input = s.triangle(wallIds[w]);
     r.wallTriangles.insert(r.wallTriangles.end(), input, input + 3);
     r.wallPatch.push_back(trianglePatch(s, report, wallIds[w]));
@@ -314,6 +468,8 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
     const bool full =
       scale[walls.column[v[0]]] == 1 && scale[walls.column[v[1]]] == 1 && scale[walls.column[v[2]]] == 1;
     r.stats.fullTriangles += full ? 1 : 0;
+    const auto isCollapsed = [&](int i) { return walls.collapsed[walls.column[v[i]]] != 0; };
+    r.stats.collapsedTriangles += isCollapsed(0) || isCollapsed(1) || isCollapsed(2) ? 1 : 0;
   }
   // The other patches, their layered corners moved to the last layer (symmetry planes), and the prisms'
   // side faces on those planes.
@@ -348,6 +504,9 @@ void assemble(const SurfaceMesh& s, const SurfaceCheckReport& report, const laye
   r.stats.layeredTriangles = static_cast<int64_t>(wallIds.size());
   r.stats.layeredPoints = static_cast<int64_t>(walls.layeredPoints.size());
   r.stats.prisms = static_cast<int64_t>(r.prismLayer.size());
+  r.stats.pyramids = static_cast<int64_t>(r.pyramidLayer.size());
+  r.stats.layerTets = static_cast<int64_t>(r.tetLayer.size());
+  dropCollapsedPoints(walls, layers, r);
   for (size_t c = 0; c < scale.size(); ++c)
   {
     r.stats.thinnedColumns += scale[c] < 1 ? 1 : 0;
@@ -390,6 +549,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
   status = buildWalls(s, checks, chosen, walls, wallIds, otherIds);
   if (!status.ok())
     return status;
+  const WallSkewness skewness = wallSkewness(s.points, walls.triangles);
   const std::vector<double> directions = layers_detail::marchingDirections(walls, options.normalSmoothing);
   const std::vector<double> offsets = layers_detail::layerOffsets(options);
   std::vector<int32_t> start, list;
@@ -397,6 +557,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
   const size_t nc = walls.layeredPoints.size();
   std::vector<double> scale(nc, 1.0);
   std::vector<uint8_t> reason(nc, 0);
+  walls.collapsed.assign(nc, 0);
   const int maxRounds = 12; // 1/2^12 of the height: below that a column is declared impossible
   for (int round = 0;; ++round)
   {
@@ -424,7 +585,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
                                pointText(s.point(p)) + ": the surface leaves no room for layers there",
                              { p });
     }
-    thin(bad, why, start, list, scale, reason);
+    thin(bad, why, start, list, walls, scale, reason);
   }
   assemble(s, checks, walls, wallIds, otherIds, options.layers, scale, reason, result);
   if (result.stats.fullTriangles == 0)
@@ -435,6 +596,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
                              " is more than the domain allows: every layer column had "
                              "to be thinned");
   }
+  result.stats.wallSkewness = skewness;
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report.report(1, "Boundary layers: marching");
   return Status::success();

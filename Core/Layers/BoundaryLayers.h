@@ -10,15 +10,19 @@
 //
 // Where a wall meets a flat non-layered patch (a symmetry plane normal to a coordinate axis), its points
 // march in that plane and the plane's triangles are moved with them to the last layer (kept only when
-// none flips: exact orient2d; else the column is thinned). Limits of this first version: any other
-// non-layered patch a wall touches gets a Status naming it and the point; one marching direction per
-// vertex (no fans at sharp convex edges); every column has all the layers (thinning scales heights).
+// none flips: exact orient2d; else the column is thinned). A column that would need thinning below
+// 1/8 of its height (a knife edge, a needle tip: no direction sees all its faces well) collapses instead:
+// its layers shrink onto the wall point, so the cells over its triangles become pyramids (one collapsed
+// corner) or tets (two), conformal with the prisms around, and its neighbours keep their height.
+// Limits: any other non-layered patch a wall touches gets a Status naming it and the point; one marching
+// direction per vertex (no fans at sharp convex edges); points on a symmetry plane never collapse.
 #pragma once
 
 #include "OptionTable.h"
 #include "Progress.h"
 #include "Status.h"
 #include "SurfaceMesh.h"
+#include "WallSkewness.h"
 
 #include <cstdint>
 #include <string>
@@ -29,10 +33,13 @@ namespace volgrid
 
 struct LayerOptions
 {
-  // Defaults and valid ranges: OptionTable.h's layers, firstHeight, growth rows.
+  // Defaults and valid ranges: OptionTable.h's layers, firstHeight, growth, layerThickness rows.
   int layers = static_cast<int>(option::layers.defaultValue); // number of prism layers; 0 = no layers
   double firstHeight = option::firstHeight.defaultValue;      // height of the layer on the wall
   double growth = option::growth.defaultValue;                // ratio between consecutive layer heights
+  // Total thickness (0: not given). With firstHeight (or y+) it replaces growth, which is solved for;
+  // without, it gives the first height for this growth.
+  double thickness = option::layerThickness.defaultValue;
   std::vector<int32_t> patchIds;       // layered patches by id; with patchNames empty too: every wall patch
   std::vector<std::string> patchNames; // layered patches by name
   // Instead of firstHeight: the height of a target y+ at a Reynolds number on a reference length
@@ -42,7 +49,9 @@ struct LayerOptions
   bool splitPrisms = false; // output each prism as 3 tets (min-vertex-index rule)
   bool enabled() const { return layers > 0; }
   double totalThickness() const; // first * (1 + r + ... + r^(layers-1))
-  LayerOptions resolved() const; // firstHeight computed from yPlus when that is given
+  // firstHeight from yPlus when that is given; with a thickness, the growth (or the first height) that
+  // makes the layers that thick. Growth 0 when no ratio in [1, 10] does (validateLayerOptions says so).
+  LayerOptions resolved() const;
 };
 
 // Why a column is thinner than asked.
@@ -51,7 +60,8 @@ enum class ThinnedReason : uint8_t
   None = 0,
   Inversion = 1, // a prism of the column would have a non-positive tet decomposition
   Collision = 2, // the last layer's surface would cross itself, the walls or another patch
-  Neighbour = 3  // limited so that its height varies smoothly from a thinned neighbour
+  Neighbour = 3, // limited so that its height varies smoothly from a thinned neighbour
+  Collapsed = 4  // no height at all: the layers shrink onto the wall point (pyramids and tets around it)
 };
 const char* thinnedReasonName(ThinnedReason reason);
 
@@ -61,24 +71,43 @@ struct LayerStatistics
   int64_t fullTriangles = 0; // layered triangles whose three columns have their full height
   int64_t layeredPoints = 0;
   int64_t thinnedColumns = 0;
-  int64_t thinnedBy[4] = { 0, 0, 0, 0 }; // columns per ThinnedReason
+  int64_t thinnedBy[5] = { 0, 0, 0, 0, 0 }; // columns per ThinnedReason (Collapsed included)
   int64_t prisms = 0;
+  int64_t pyramids = 0;
+  int64_t layerTets = 0;
   int iterations = 0;  // thinning rounds
   double minScale = 1; // smallest column factor
   double seconds = 0;
+  WallSkewness wallSkewness;      // what the wall triangulation alone implies for checkMesh (WallSkewness.h)
+  int64_t collapsedTriangles = 0; // layered triangles with a collapsed corner: fewer than all the layers
+  // Share of layered triangles with their full height (strict; thinned columns count against it).
   double coverage() const { return layeredTriangles ? double(fullTriangles) / double(layeredTriangles) : 0.0; }
+  // Share of layered triangles that have every layer, thinned or not (no collapsed corner).
+  double allLayersShare() const
+  {
+    return layeredTriangles ? double(layeredTriangles - collapsedTriangles) / double(layeredTriangles) : 0.0;
+  }
 };
 
 struct LayerResult
 {
   // The input surface's points (after exact merging: point i of the merged surface) first, then per
-  // layered point its `layers` offset points (layer 0 nearest the wall).
+  // layered point that did not collapse its `layers` offset points (layer 0 nearest the wall).
   std::vector<double> points;
   int32_t numSurfacePoints = 0;
-  std::vector<int32_t> prisms;           // 6 per prism: base a,b,c then top a',b',c' (a' above a)
-  std::vector<int32_t> prismLayer;       // 0 at the wall
-  std::vector<int32_t> prismTriangle;    // merged input triangle the prism stands on
-  std::vector<uint8_t> prismReason;      // ThinnedReason of the column (the worst of its three points)
+  std::vector<int32_t> prisms;        // 6 per prism: base a,b,c then top a',b',c' (a' above a)
+  std::vector<int32_t> prismLayer;    // 0 at the wall
+  std::vector<int32_t> prismTriangle; // merged input triangle the prism stands on
+  std::vector<uint8_t> prismReason;   // ThinnedReason of the column (the worst of its three points)
+  // Over triangles with collapsed corners: pyramids (5 ids: the quad, then the apex: the collapsed wall
+  // point; oriented as a positive tet: orient3d(q0, q1, q2, apex) > 0) and tets (4 ids, positive), with
+  // the same per-cell arrays as the prisms.
+  std::vector<int32_t> pyramids;
+  std::vector<int32_t> pyramidLayer;
+  std::vector<uint8_t> pyramidReason;
+  std::vector<int32_t> tets;
+  std::vector<int32_t> tetLayer;
+  std::vector<uint8_t> tetReason;
   std::vector<double> pointScale;        // per surface point: column factor (1 = full; 0 = not layered)
   std::vector<uint8_t> pointReason;      // per surface point: ThinnedReason
   std::vector<int32_t> wallTriangles;    // layered triangles, 3 each, as in the input (orientation kept)
@@ -112,6 +141,15 @@ Status growLayers(const SurfaceMesh& surface, const LayerOptions& options, Layer
 // True when every tet of every decomposition of the prism (base a,b,c; top d,e,f above them) has
 // positive orientation, with the base (a,b,c) counter-clockwise seen from the top (exact).
 bool prismIsValid(const double* a, const double* b, const double* c, const double* d, const double* e, const double* f);
+
+// A prism whose top points may repeat base points (a collapsed column: v[i] == v[i + 3]) is valid when every
+// tet of every decomposition of the prism with four distinct points is positive: the prism itself, a
+// pyramid under both diagonals of its quad, or a tet. All three collapsed: no cell, valid.
+bool layerCellIsValid(const int32_t v[6], const double* points);
+
+// The two tets of pyramid v[5] (quad v0..v3, apex v4; orient3d(v0, v1, v2, v4) > 0), the quad cut through
+// its smallest id as splitPrism cuts it, so that the pyramid and a prism sharing the quad agree.
+void splitPyramid(const int32_t v[5], int32_t tets[8]);
 
 // The three tets of prism v[6] (base v0..v2, top v3..v5) by the minimum-vertex-index rule: each quad face
 // is cut through its smallest id, so two prisms sharing a quad cut it alike. Tets are positively oriented

@@ -206,22 +206,32 @@ void placeLayerPoints(const Walls& walls, const std::vector<double>& directions,
   }
 }
 
-namespace
-{
-// Point id of column c's layer k (k = -1: the wall point).
 int32_t layerPoint(const Walls& walls, int32_t surfacePoint, int k, int layers)
 {
-  if (k < 0)
+  const int32_t c = walls.column[surfacePoint];
+  if (k < 0 || (!walls.collapsed.empty() && walls.collapsed[c]))
     return surfacePoint;
   const int32_t base = static_cast<int32_t>(walls.points->size() / 3);
-  return base + walls.column[surfacePoint] * layers + k;
+  return base + c * layers + k;
+}
+
+namespace
+{
+// Marks the columns of surface points v[0..2] as bad, except collapsed ones (they cannot go lower).
+void markColumns(const Walls& walls, const int32_t* v, std::vector<char>& bad)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    const int32_t c = walls.column[v[i]];
+    if (walls.collapsed.empty() || !walls.collapsed[c])
+      bad[c] = 1;
+  }
 }
 } // namespace
 
 std::vector<int32_t> invertedColumns(const Walls& walls, const std::vector<double>& points, int layers)
 {
   std::vector<char> bad(walls.layeredPoints.size(), 0);
-  const auto at = [&](int32_t id) { return points.data() + 3 * size_t(id); };
   for (size_t t = 0; t < walls.triangles.size(); t += 3)
   {
     const int32_t* v = walls.triangles.data() + t;
@@ -233,10 +243,9 @@ std::vector<int32_t> invertedColumns(const Walls& walls, const std::vector<doubl
         q[i] = layerPoint(walls, v[i], k - 1, layers);
         q[i + 3] = layerPoint(walls, v[i], k, layers);
       }
-      if (!prismIsValid(at(q[0]), at(q[1]), at(q[2]), at(q[3]), at(q[4]), at(q[5])))
+      if (!layerCellIsValid(q, points.data()))
       {
-        for (int i = 0; i < 3; ++i)
-          bad[walls.column[v[i]]] = 1;
+        markColumns(walls, v, bad);
         break;
       }
     }
@@ -289,8 +298,17 @@ std::vector<int32_t> collidingColumns(const Walls& walls, const std::vector<doub
   const size_t firstOther = check.triangles.size() / 3;
   check.triangles.insert(check.triangles.end(), moved.begin(), moved.end());
   const size_t firstTop = check.triangles.size() / 3;
-  for (const int32_t v : walls.triangles)
-    check.triangles.push_back(layerPoint(walls, v, layers - 1, layers));
+  std::vector<size_t> topWall; // the wall triangle under each top triangle checked
+  for (size_t t = 0; t < walls.triangles.size(); t += 3)
+  {
+    int32_t top[3];
+    for (int i = 0; i < 3; ++i)
+      top[i] = layerPoint(walls, walls.triangles[t + i], layers - 1, layers);
+    if (top[0] == walls.triangles[t] && top[1] == walls.triangles[t + 1] && top[2] == walls.triangles[t + 2])
+      continue; // every corner collapsed: the top is the wall triangle itself
+    check.triangles.insert(check.triangles.end(), top, top + 3);
+    topWall.push_back(t);
+  }
   SurfaceCheckOptions options;
   options.nesting = false;
   options.threads = threads;
@@ -301,8 +319,7 @@ std::vector<int32_t> collidingColumns(const Walls& walls, const std::vector<doub
       markMoved(3 * (t - firstOther));
   for (size_t t = firstTop; t < report.triangleFlags.size(); ++t)
     if (report.triangleFlags[t] & crossing)
-      for (int i = 0; i < 3; ++i)
-        bad[walls.column[walls.triangles[3 * (t - firstTop) + i]]] = 1;
+      markColumns(walls, walls.triangles.data() + topWall[t - firstTop], bad);
   std::vector<int32_t> out;
   for (size_t c = 0; c < bad.size(); ++c)
     if (bad[c])

@@ -21,6 +21,7 @@ struct Walls
   std::vector<int32_t> column;                 // surface point -> index in layeredPoints, or -1
   std::vector<int32_t> otherTriangles;         // 3 per triangle of the other patches
   std::vector<int8_t> slipAxis;                // per column: the axis normal to the symmetry plane it marches in, or -1
+  std::vector<uint8_t> collapsed;              // per column: 1 when its layers collapse onto the wall point
 };
 
 // Unit marching direction per column (3 each): angle-weighted face normals, smoothed `passes` times,
@@ -34,7 +35,10 @@ std::vector<double> layerOffsets(const LayerOptions& options);
 void placeLayerPoints(const Walls& walls, const std::vector<double>& directions, const std::vector<double>& offsets,
                       const std::vector<double>& scale, std::vector<double>& points);
 
-// Columns (by index) of the prisms that are not valid (prismIsValid) with the points placed.
+// Point id of column c's layer k (k = -1: the wall point; a collapsed column: the wall point at every k).
+int32_t layerPoint(const Walls& walls, int32_t surfacePoint, int k, int layers);
+
+// Columns (by index, never collapsed ones) of the layer cells that are not valid (layerCellIsValid).
 std::vector<int32_t> invertedColumns(const Walls& walls, const std::vector<double>& points, int layers);
 
 // The other patches' triangles with their layered points replaced by the last layer's (symmetry planes).

@@ -46,6 +46,33 @@ struct ReferenceSigns
 };
 } // namespace
 
+bool layerCellIsValid(const int32_t v[6], const double* points)
+{
+  static const ReferenceSigns reference;
+  const auto at = [&](int k) { return points + 3 * size_t(v[k]); };
+  for (int r = 0; r < 6; ++r)
+  {
+    const std::array<int, 6> l = relabelling(r % 3, r >= 3);
+    for (int t = 0; t < 5; ++t)
+    {
+      const int a = l[kApexTets[t][0]], b = l[kApexTets[t][1]], c = l[kApexTets[t][2]], d = l[kApexTets[t][3]];
+      if (v[a] == v[b] || v[a] == v[c] || v[a] == v[d] || v[b] == v[c] || v[b] == v[d] || v[c] == v[d])
+        continue;
+      if (predicates::orient3d(at(a), at(b), at(c), at(d)) != reference.sign[r][t])
+        return false;
+    }
+  }
+  return true;
+}
+
+void splitPyramid(const int32_t v[5], int32_t tets[8])
+{
+  const int m = static_cast<int>(std::min_element(v, v + 4) - v);
+  const int32_t a = v[m], b = v[(m + 1) % 4], c = v[(m + 2) % 4], d = v[(m + 3) % 4];
+  const int32_t split[8] = { a, b, c, v[4], a, c, d, v[4] };
+  std::copy(split, split + 8, tets);
+}
+
 bool prismIsValid(const double* a, const double* b, const double* c, const double* d, const double* e, const double* f)
 {
   static const ReferenceSigns reference;

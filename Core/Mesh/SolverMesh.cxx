@@ -38,6 +38,7 @@ void normalizeLabels(SolverMesh& mesh)
   mesh.trianglePatch.resize(mesh.triangles.size() / 3, 0);
   mesh.prismRegion.resize(mesh.prisms.size() / 6, 0);
   mesh.quadPatch.resize(mesh.quads.size() / 4, 0);
+  mesh.pyramidRegion.resize(mesh.pyramids.size() / 5, 0);
   // Triangles and quads share the patch labels, tets and prisms the region labels.
   const auto together = [](std::vector<int32_t>& a, std::vector<int32_t>& b, NameTable& names, const char* prefix)
   {
@@ -48,7 +49,13 @@ void normalizeLabels(SolverMesh& mesh)
     a.resize(na);
   };
   together(mesh.trianglePatch, mesh.quadPatch, mesh.patchNames, "patch");
-  together(mesh.tetRegion, mesh.prismRegion, mesh.regionNames, "region");
+  std::vector<int32_t> layerCells = mesh.prismRegion; // prisms and pyramids
+  layerCells.insert(layerCells.end(), mesh.pyramidRegion.begin(), mesh.pyramidRegion.end());
+  together(mesh.tetRegion, layerCells, mesh.regionNames, "region");
+  std::copy(layerCells.begin(), layerCells.begin() + static_cast<std::ptrdiff_t>(mesh.prismRegion.size()),
+            mesh.prismRegion.begin());
+  std::copy(layerCells.begin() + static_cast<std::ptrdiff_t>(mesh.prismRegion.size()), layerCells.end(),
+            mesh.pyramidRegion.begin());
 }
 
 std::vector<int64_t> labelCounts(const std::vector<int32_t>& labels, const std::vector<int32_t>& distinct)

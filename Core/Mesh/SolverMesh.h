@@ -28,6 +28,10 @@ struct SolverMesh
   std::vector<int32_t> prismRegion;
   std::vector<int32_t> quads;
   std::vector<int32_t> quadPatch;
+  // Pyramids where a layer column collapsed: 5 each, quad then apex, the quad turning towards the apex
+  // (gmsh's and VTK's order), with a region label each. Only the gmsh writers take them too.
+  std::vector<int32_t> pyramids;
+  std::vector<int32_t> pyramidRegion;
   NameTable patchNames;  // patch label -> name
   NameTable regionNames; // region label -> name
   // Point fields by name, one value per point (a solver's target size, ...): kept by the formats that

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdio>
 #include <set>
 
 namespace volgrid
@@ -53,6 +54,34 @@ void mergeTets(const LayerResult& layers, const MesherResult& tets, LayeredMeshR
   }
   for (size_t t = 0; t < out.interfaceTriangles.size(); t += 3)
     out.interfaceOnTets += onTets.count(sortedTriangle(out.interfaceTriangles.data() + t)) ? 1 : 0;
+}
+
+// The cells over triangles with collapsed corners: their tets, and their pyramids (or each pyramid's two
+// tets, its quad cut through its smallest id as the split prisms cut it).
+void addCollapsedCells(const LayerResult& layers, bool splitPrisms, LayeredMeshResult& result)
+{
+  const auto addTets = [&](const int32_t* v, size_t n, int32_t layer, uint8_t reason)
+  {
+    result.tets.insert(result.tets.end(), v, v + 4 * n);
+    result.tetRegion.insert(result.tetRegion.end(), n, 0);
+    result.tetLayer.insert(result.tetLayer.end(), n, layer);
+    result.tetReason.insert(result.tetReason.end(), n, reason);
+  };
+  for (size_t t = 0; t < layers.tetLayer.size(); ++t)
+    addTets(layers.tets.data() + 4 * t, 1, layers.tetLayer[t], layers.tetReason[t]);
+  if (!splitPrisms)
+  {
+    result.pyramids = layers.pyramids;
+    result.pyramidLayer = layers.pyramidLayer;
+    result.pyramidReason = layers.pyramidReason;
+    return;
+  }
+  for (size_t p = 0; p < layers.pyramidLayer.size(); ++p)
+  {
+    int32_t split[8];
+    splitPyramid(layers.pyramids.data() + 5 * p, split);
+    addTets(split, 2, layers.pyramidLayer[p], layers.pyramidReason[p]);
+  }
 }
 } // namespace
 
@@ -111,9 +140,23 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
     result.wedgeLayer = layers.prismLayer;
     result.wedgeReason = layers.prismReason;
   }
+  addCollapsedCells(layers, layerOptions.splitPrisms, result);
   result.layerStats = layers.stats;
   result.mesherStats = tets.stats;
   result.warnings = tets.warnings;
+  const WallSkewness& skew = layers.stats.wallSkewness;
+  if (skew.edgesOverLimit > 0)
+  {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%lld wall edge(s) have a skewness above 4 in the surface itself (worst %.3g at (%.6g, %.6g, %.6g), "
+                  "between two triangles whose centroids miss the edge): every prism side face over such an edge "
+                  "inherits it, so OpenFOAM's checkMesh reports highly skew faces whatever the layers; refine the "
+                  "wall triangulation there",
+                  (long long)skew.edgesOverLimit, skew.worst, skew.worstPoint[0], skew.worstPoint[1],
+                  skew.worstPoint[2]);
+    result.warnings.push_back(text);
+  }
   if (result.interfaceOnTets != static_cast<int64_t>(result.interfaceTriangles.size() / 3) ||
       result.tetBoundaryOnInterface != result.interfaceOnTets)
   {

@@ -19,11 +19,14 @@ struct LayeredMeshResult
   std::vector<double> points;     // the merged input surface's points first, then the layers', then the tets'
   std::vector<int32_t> tets;      // 4 per tet, positively oriented (split prisms included)
   std::vector<int32_t> tetRegion; // region label (split prisms: 0)
-  std::vector<int32_t> tetLayer;  // -1 for the tet region, the layer index for a split prism
+  std::vector<int32_t> tetLayer;  // -1 for the tet region, the layer index for a layer tet or split prism
   std::vector<uint8_t> tetReason; // ThinnedReason of a split prism's column, 0 for the tet region
   std::vector<int32_t> wedges;    // 6 per prism: base a,b,c (normal towards the top), top a',b',c'
   std::vector<int32_t> wedgeLayer;
   std::vector<uint8_t> wedgeReason;
+  std::vector<int32_t> pyramids; // 5 per pyramid over collapsed columns: quad, apex (orient3d(q0,q1,q2,apex) > 0)
+  std::vector<int32_t> pyramidLayer;
+  std::vector<uint8_t> pyramidReason;
   std::vector<int32_t> wallTriangles; // the layered input triangles, 3 each (also in boundaryTriangles)
   // The domain's boundary: walls, the other patches, and with split prisms the prisms' side quads on
   // symmetry planes (each as two triangles cut through its smallest id, as the split prisms' faces are).

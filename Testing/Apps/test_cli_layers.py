@@ -1,5 +1,6 @@
 """volgrid mesh --layers: a sphere in a sphere gets every layer (wedges, coverage, no inverted cell, the
-interface shared exactly), bad parameters are refused with nothing written, and layers that touch a
+interface shared exactly), the straight wing's tip corners collapse into pyramids that OpenFOAM accepts,
+bad parameters are refused with nothing written, and layers that touch a
 non-layered patch other than a flat symmetry plane are refused with a message naming it; the ONERA M6
 wing gets its 15 layers, marching in the symmetry plane at the root.
 usage: test_cli_layers.py VOLGRID DATA_DIR [SHARED_REAL_DATA_DIR]"""
@@ -181,6 +182,12 @@ if r.returncode == 0:
         expect(close(q["TotalVolume"], ref["tet_volume"] + ref["wedge_volume"]),
                "quality: TotalVolume %s = the .vtu's tets + wedges %s" % (q["TotalVolume"], ref))
 
+# Ten layers from 1e-3 to a total thickness of 0.02: the growth ratio is solved for and reported.
+r = run([volgrid, "mesh", w("sis.off"), w("thick.vtu"), "--json", "--layers", "10", "--first-height", "1e-3",
+         "--layer-thickness", "0.02"])
+expect(r.returncode == 0 and abs(json.loads(r.stdout)["total_thickness"] / 0.02 - 1) < 1e-9
+       and 1.146 < json.loads(r.stdout)["growth"] < 1.148, "--layer-thickness solves the growth ratio", r)
+
 # The first height from a target y+ (flat plate, Re 1e6, length 1: 2.35288e-05).
 r = run([volgrid, "mesh", w("sis.off"), w("yplus.vtu"), "--json", "--layers", "3", "--y-plus", "1", "--reynolds", "1e6",
          "--reference-length", "1"])
@@ -190,6 +197,8 @@ bad = [(["--layers", "3", "--first-height", "1e-3", "--y-plus", "1", "--reynolds
         "not both"),
        (["--layers", "10", "--first-height", "-1e-3"], "--first-height is out of range"),
        (["--layers", "10", "--first-height", "1e-3", "--growth", "0.5"], "growth"),
+       (["--layers", "10", "--first-height", "1e-3", "--growth", "1.2", "--layer-thickness", "0.02"], "give two of"),
+       (["--layers", "10", "--first-height", "1e-3", "--layer-thickness", "0.005"], "no growth ratio"),
        (["--layers", "10", "--first-height", "5", "--growth", "1"], "more than the domain allows"),
        (["--first-height", "1e-3"], "need --layers"),
        (["--layers", "3", "--first-height", "1e-3", "--layer-patches", "wing"], "'wing' is not a patch")]
@@ -200,6 +209,39 @@ for extra, message in bad:
 r = run([volgrid, "mesh", w("sis.off"), w("bad.node")] + layers)
 expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("bad.node")),
        "prisms in a tet-only format (TetGen) need --split-prisms", r)
+
+# The straight wing of `make demo`: its tip corners, where the thin leading and trailing edges meet the
+# tip cap, leave no marching direction that every face there sees well. Those columns collapse onto the
+# wall (pyramids and tets around them) instead of failing the run or thinning half the wing; checked by
+# OpenFOAM (gmshToFoam + checkMesh): the same cells by type, valid pyramids and volumes, closed boundary.
+r = run([volgrid, "prep", os.path.join(sys.argv[2], "straight_wing.stl"), w("wing.off"), "--enclosure", "sphere",
+         "--enclosure-scale", "10"])
+assert r.returncode == 0, r.describe()
+r = run([volgrid, "mesh", w("wing.off"), w("wing.msh"), "--format", "gmsh22", "--json", "--layers", "10",
+         "--first-height", "1e-4", "--growth", "1.2"])
+expect(r.returncode == 0, "straight wing with 10 layers", r)
+if r.returncode == 0:
+    j = json.loads(r.stdout.strip().splitlines()[-1])
+    print("straight wing:", j)
+    expect(j["collapsed_columns"] > 0 and j["pyramids"] > 0 and j["inverted_cells"] == 0,
+           "straight wing: collapsed columns give pyramids, none inverted: %s" % j)
+    expect(j["all_layers"] >= 0.98 and j["coverage"] >= 0.85,
+           "straight wing: 98%% of the faces keep every layer, 85%% their full height: %s" % j)
+    expect(j["interface_faces_shared"] == j["layered_faces"], "straight wing: the tets share the layers' surface")
+    os.makedirs(w("wing_gmsh"), exist_ok=True)
+    c = check_mesh(w("wing_gmsh"), "gmshToFoam ../wing.msh >/dev/null &&")
+    if c is not None:
+        counts = {kind: int(n) for kind, n in re.findall(r"^\s+(prisms|pyramids|tetrahedra):\s+(\d+)", c.stdout, re.M)}
+        expect(counts == {"prisms": j["wedges"], "pyramids": j["pyramids"], "tetrahedra": j["tets"]},
+               "straight wing: checkMesh counts our cells: %s" % counts, c)
+        expect(re.search(r"Boundary openness .* OK", c.stdout) is not None, "straight wing: closed boundary", c)
+        for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK",
+                     "Number of regions: 1 (OK)"):
+            expect(line in c.stdout, "straight wing: checkMesh: " + line, c)
+    # Pyramids go to gmsh and VTK only; another solver format asks for --split-prisms, nothing written.
+    r = run([volgrid, "mesh", w("wing.off"), w("wing.su2"), "--layers", "10", "--first-height", "1e-4"])
+    expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.su2")),
+           "straight wing: pyramids to SU2 refused with a message", r)
 
 m6 = os.path.join(shared, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
 if shared and os.path.exists(m6):
@@ -214,6 +256,28 @@ if shared and os.path.exists(m6):
         expect(j["coverage"] >= 0.98 and j["inverted_cells"] == 0 and j["wedges"] >= 0.98 * 15 * j["layered_faces"],
                "M6: at least 98%% of the wing faces get all 15 layers, none inverted: %s" % j)
         expect(j["interface_faces_shared"] == j["layered_faces"], "M6: the tets share the layers' surface: %s" % j)
+        wing = j
+        # Without --layer-patches the wing is chosen alone: the unnamed far field and symmetry plane span the
+        # domain's box and get no layers.
+        r = run([volgrid, "mesh", m6, w("m6default.msh"), "--format", "gmsh22", "--json", "--layers", "15",
+                 "--first-height", "1e-4", "--growth", "1.2"], timeout=600)
+        expect(r.returncode == 0, "M6: the default layer patches", r)
+        if r.returncode == 0:
+            j = json.loads(r.stdout.strip().splitlines()[-1])
+            expect(j["layered_faces"] == wing["layered_faces"] and j["wedges"] == wing["wedges"],
+                   "M6: by default the wing patches only: %s" % j)
+            # One input wing edge (the root of the leading edge, between two long fan triangles) has an
+            # OpenFOAM skewness of 8.19 in the surface itself: the mesher says so, and checkMesh finds exactly
+            # that: one skew face per layer there, nothing else failing.
+            expect(j["wall_skew_edges"] == 1 and "skewness above 4" in r.stderr, "M6: the skewed wall edge is reported", r)
+            os.makedirs(w("m6_default"), exist_ok=True)
+            c = check_mesh(w("m6_default"), "gmshToFoam ../m6default.msh >/dev/null &&") if j["wall_skew_edges"] == 1 else None
+            if c is not None:
+                m = re.search(r"Max skewness = ([0-9.e+-]+), (\d+) highly skew faces", c.stdout)
+                expect(m is not None and int(m.group(2)) == 15 and abs(float(m.group(1)) / j["wall_skewness_max"] - 1) < 0.01
+                       and "Failed 1 mesh checks" in c.stdout,
+                       "M6: checkMesh fails on the 15 faces over the reported edge only (predicted %.4g)"
+                       % j["wall_skewness_max"], c)
     # checkMesh on the direct OpenFOAM output agrees with gmsh 2.2 -> gmshToFoam: the same counts, cell shapes,
     # failed checks and skew faces (one input edge of the wing gives 15 faces of skewness 8.19 either way).
     m6_layers = ["--layers", "15", "--first-height", "1e-4", "--growth", "1.2", "--layer-patches",

@@ -83,6 +83,19 @@ check(first_layer and second_layer and 1.1 < sum(second_layer) / sum(first_layer
 check(boundary.GetNumberOfCells() == surface.GetNumberOfCells(), "the boundary is not the input triangles")
 check(boundary.GetCellData().GetArray("PatchId") is not None, "no PatchId on the boundary")
 
+# TotalLayerThickness with a first height: the growth ratio is solved for (1.5 here, not LayerGrowthRatio's 1.2).
+mesher.TotalLayerThickness = FIRST * (1.5 ** LAYERS - 1) / 0.5
+mesher.UpdatePipeline()
+thick = servermanager.Fetch(CellSize(Input=mesher, ComputeArea=0, ComputeLength=0, ComputeVertexCount=0))
+thick_types = [thick.GetCellType(c) for c in range(thick.GetNumberOfCells())]
+thick_layer = thick.GetCellData().GetArray("LayerIndex")
+thick_vol = thick.GetCellData().GetArray("Volume")
+per_layer = [sum(thick_vol.GetValue(c) for c, t in enumerate(thick_types) if t == 13 and int(thick_layer.GetValue(c)) == k)
+             for k in range(2)]
+check(per_layer[0] > 0 and 1.4 < per_layer[1] / per_layer[0] < 1.6,
+      f"TotalLayerThickness: layer volumes {per_layer}, not a ratio of about 1.5")
+mesher.TotalLayerThickness = 0
+
 mesher.SplitPrisms = 1
 mesher.UpdatePipeline()
 split = servermanager.Fetch(mesher, idx=0)

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -52,6 +53,49 @@ TEST(BoundaryLayers, PrismValidityIsExact)
   // Twisted top (Schoenhardt-like): some decomposition has a negative tet although the base tets are positive.
   const double twisted[3][3] = { { 0.9, 0.1, 0.05 }, { 0.1, 0.9, 0.05 }, { -0.2, -0.2, 0.05 } };
   EXPECT_FALSE(prismIsValid(p[0], p[1], p[2], twisted[0], twisted[1], twisted[2]));
+}
+
+TEST(BoundaryLayers, CollapsedCornersMakePyramidsAndTetsCheckedExactly)
+{
+  // Points 0..2: the base; 3..5 above them; 6: below the base plane.
+  const double pts[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.1, 1, 0, 0.1, 0, 1, 0.1, 1, 0, -0.1 };
+  const int32_t prism[6] = { 0, 1, 2, 3, 4, 5 };
+  EXPECT_TRUE(layerCellIsValid(prism, pts));
+  const int32_t pyramid[6] = { 0, 1, 2, 0, 4, 5 }; // corner 0 collapsed
+  EXPECT_TRUE(layerCellIsValid(pyramid, pts));
+  const int32_t fallenPyramid[6] = { 0, 1, 2, 0, 6, 5 }; // corner 1's top below the base
+  EXPECT_FALSE(layerCellIsValid(fallenPyramid, pts));
+  const int32_t tet[6] = { 0, 1, 2, 0, 1, 5 };
+  EXPECT_TRUE(layerCellIsValid(tet, pts));
+  const int32_t fallenTet[6] = { 0, 1, 2, 0, 6, 2 }; // a tet standing below the base
+  EXPECT_FALSE(layerCellIsValid(fallenTet, pts));
+  const int32_t none[6] = { 0, 1, 2, 0, 1, 2 };
+  EXPECT_TRUE(layerCellIsValid(none, pts));
+  // The pyramid's quad (1, 2, 5, 4), cut through its smallest id, as the prism beside it cuts it.
+  int32_t p[5] = { 1, 2, 5, 4, 0 };
+  if (predicates::orient3d(pts + 3, pts + 6, pts + 15, pts) < 0)
+    std::swap(p[1], p[3]);
+  int32_t split[8], prismSplit[12];
+  splitPyramid(p, split);
+  splitPrism(prism, pts, prismSplit);
+  for (int t = 0; t < 8; t += 4)
+    EXPECT_GT(
+      predicates::orient3d(pts + 3 * split[t], pts + 3 * split[t + 1], pts + 3 * split[t + 2], pts + 3 * split[t + 3]),
+      0);
+  const auto hasEdge = [](const int32_t* tets, int n, int32_t a, int32_t b)
+  {
+    for (int t = 0; t < n; ++t)
+    {
+      const std::set<int32_t> v(tets + 4 * t, tets + 4 * t + 4);
+      if (v.count(a) && v.count(b))
+        return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(hasEdge(split, 2, 1, 5));
+  EXPECT_FALSE(hasEdge(split, 2, 2, 4));
+  EXPECT_EQ(hasEdge(prismSplit, 3, 1, 5), true);
+  EXPECT_EQ(hasEdge(prismSplit, 3, 2, 4), false);
 }
 
 TEST(BoundaryLayers, SplitAgreesAcrossSharedQuads)
@@ -215,6 +259,95 @@ TEST(BoundaryLayers, LayersAlongACurvedOrSecondPatchAreRefused)
   st = growLayers(s, options(3, 0.01, 1.2), r);
   EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
   EXPECT_NE(st.message.find("also on patch"), std::string::npos) << st.message;
+}
+
+TEST(BoundaryLayers, UnnamedFarFieldAndBoxSidesGetNoLayersByDefault)
+{
+  // A far-field box with one unnamed patch per side around an unnamed unit sphere (a Medit file's references):
+  // only the sphere is a wall by default, whether the box is six patches or one.
+  SurfaceMesh s;
+  const double lo[3] = { -5, -5, -5 }, hi[3] = { 5, 5, 5 }, o[3] = { 0, 0, 0 };
+  testshapes::addBox(s, lo, hi);
+  for (int32_t t = 0; t < 12; ++t)
+    s.patchIds.push_back(1 + t / 2);
+  layertest::addIcosphere(s, o, 1.0, 2, 7);
+  LayerResult r;
+  Status st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 20 * 16);
+  std::fill(s.patchIds.begin(), s.patchIds.begin() + 12, 1);
+  st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 20 * 16);
+  // Named, the names decide: a box side called "wall" is layered too.
+  s.patchNames = { { 1, "wall" }, { 7, "body" } };
+  st = growLayers(s, options(3, 0.01, 1.2), r);
+  ASSERT_TRUE(st.ok()) << st.message;
+  EXPECT_EQ(r.stats.layeredTriangles, 20 * 16 + 12);
+  // A box alone, split into unnamed patches: every patch spans the domain, none is taken for a wall.
+  SurfaceMesh box;
+  testshapes::addBox(box, lo, hi);
+  box.patchIds.assign(12, 1);
+  box.patchIds[0] = box.patchIds[1] = 2;
+  st = growLayers(box, options(3, 0.01, 1.2), r);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("no wall patch"), std::string::npos) << st.message;
+  EXPECT_NE(st.message.find("--layer-patches"), std::string::npos) << st.message;
+}
+
+TEST(BoundaryLayers, WallSkewnessIsOpenFoamsFaceSkewnessInTheSurface)
+{
+  // Edge (0,0,0)-(1,0,0) between two triangles. Mirror-symmetric apexes: the centroid line crosses the edge
+  // at its midpoint (0). Both apexes at x = -10: it crosses at x = -3, 3.5 from the midpoint, over the
+  // face's half-extent 0.5 (more than 0.2 * |d| = 0.2 * 2/3): exactly 7, above checkMesh's 4.
+  const std::vector<int32_t> triangles = { 0, 1, 2, 1, 0, 3 };
+  const auto skew = [&](double ax, double bx)
+  {
+    const std::vector<double> points = { 0, 0, 0, 1, 0, 0, ax, 1, 0, bx, -1, 0 };
+    return wallSkewness(points, triangles);
+  };
+  EXPECT_NEAR(skew(0.5, 0.5).worst, 0.0, 1e-12);
+  EXPECT_EQ(skew(0.5, 0.5).edgesOverLimit, 0);
+  const WallSkewness sheared = skew(-10, -10);
+  EXPECT_NEAR(sheared.worst, 7.0, 1e-12);
+  EXPECT_EQ(sheared.edgesOverLimit, 1);
+  EXPECT_DOUBLE_EQ(sheared.worstPoint[0], 0.5);
+  // Sheared the opposite ways: centroids (-3, 1/3) and (4, -1/3), a line through the midpoint again.
+  EXPECT_NEAR(skew(-10, 11).worst, 0.0, 1e-12);
+}
+
+TEST(BoundaryLayers, TotalThicknessGivesTheGrowthOrTheFirstHeight)
+{
+  // 10 layers from 1e-3 to a total of 0.02: the ratio r with 1e-3 (r^10 - 1) / (r - 1) = 0.02 (1.1469...).
+  LayerOptions o = options(10, 1e-3, 1.2);
+  o.thickness = 0.02;
+  const LayerOptions solved = o.resolved();
+  EXPECT_GT(solved.growth, 1.146);
+  EXPECT_LT(solved.growth, 1.148);
+  EXPECT_NEAR(solved.totalThickness() / 0.02, 1.0, 1e-12);
+  const SurfaceMesh s = layertest::sphereInSphere(2);
+  LayerResult r;
+  ASSERT_TRUE(growLayers(s, o, r).ok());
+  for (size_t p = 0; p < r.prismLayer.size(); ++p)
+    if (r.prismLayer[p] == 9)
+    {
+      const int32_t* v = r.prisms.data() + 6 * p;
+      ASSERT_NEAR(distance(at(r, v[0]), at(r, v[3])) / (1e-3 * std::pow(solved.growth, 9)), 1.0, 1e-9);
+    }
+  // Without a first height: the one that stacks 10 layers of ratio 1.2 to 0.02.
+  o.firstHeight = 0;
+  EXPECT_NEAR(o.resolved().firstHeight / (0.02 * 0.2 / (std::pow(1.2, 10) - 1)), 1.0, 1e-12);
+  EXPECT_TRUE(validateLayerOptions(o).ok());
+  // Thinner than 10 first layers, or thicker than ratio 10 allows: no ratio, a message.
+  o.firstHeight = 1e-3;
+  o.thickness = 0.009;
+  Status st = validateLayerOptions(o);
+  EXPECT_EQ(st.kind, ErrorKind::InvalidOption);
+  EXPECT_NE(st.message.find("no growth ratio"), std::string::npos) << st.message;
+  o.thickness = 1e8;
+  EXPECT_FALSE(validateLayerOptions(o).ok());
+  o.thickness = -1;
+  EXPECT_FALSE(validateLayerOptions(o).ok());
 }
 
 TEST(BoundaryLayers, FirstHeightFromYPlus)
