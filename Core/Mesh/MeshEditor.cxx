@@ -2,9 +2,9 @@
 // removal, constrained vertex insertion, point location), shared by recovery and Steiner removal.
 #include "MeshEditor.h"
 
-#include "IntervalTriangulation.h"
 #include "Predicates.h"
 #include "Quality.h"
+#include "RingTriangulation.h"
 
 #include <algorithm>
 #include <limits>
@@ -317,8 +317,6 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
   const double* X = mesh.point(x);
   const double* Y = mesh.point(y);
   const double kInvalid = -std::numeric_limits<double>::infinity();
-  std::vector<double> best(static_cast<size_t>(n * n), kInvalid);
-  std::vector<int> choice(static_cast<size_t>(n * n), -1);
   auto chordOk = [&](int i, int j)
   { return j == i + 1 || (i == 0 && j == n - 1) || !bc->forbiddenEdge(ring[i], ring[j]); };
   // A required chord (positions ci < cj in the ring): no chord of the triangulation may cross it.
@@ -340,7 +338,7 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
     const bool atI = i == ci || j == ci, atJ = i == cj || j == cj;
     return !atI && !atJ && inI != inJ;
   };
-  auto triQ = [&](int i, int k, int j) -> double
+  auto triQ = [&](int i, int k, int j, double) -> double
   {
     if (bc && (!chordOk(i, k) || !chordOk(k, j) || !chordOk(i, j)))
       return kInvalid;
@@ -351,41 +349,12 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
       return kInvalid;
     return std::min(quality::tetShapeMeasure(A, B, C, Y), quality::tetShapeMeasure(A, C, B, X));
   };
-  for (int len = 1; len < n; ++len)
-    for (int i = 0; i + len < n; ++i)
-    {
-      const int j = i + len;
-      if (len == 1)
-      {
-        best[i * n + j] = std::numeric_limits<double>::infinity();
-        continue;
-      }
-      double bq = kInvalid;
-      int bk = -1;
-      for (int k = i + 1; k < j; ++k)
-      {
-        const double sub = std::min(best[i * n + k], best[k * n + j]);
-        if (!(sub > bq))
-          continue;
-        const double q = std::min(sub, triQ(i, k, j));
-        if (q > bq)
-        {
-          bq = q;
-          bk = k;
-        }
-      }
-      best[i * n + j] = bq;
-      choice[i * n + j] = bk;
-    }
-  if (!(best[n - 1] > kInvalid))
+  std::vector<double> best;
+  std::vector<int> choice;
+  if (!maxMinTriangulation(n, kInvalid, best, choice, triQ))
     return false;
   tmpNew_.clear();
-  forEachChosenTriangle(choice, n,
-                        [&](int i, int k, int j)
-                        {
-                          tmpNew_.push_back({ { ring[i], ring[k], ring[j], y } });
-                          tmpNew_.push_back({ { ring[i], ring[j], ring[k], x } });
-                        });
+  appendRingTets(choice, ring, x, y, ChordOrder::PieceAfterApexFirst, tmpNew_);
   lastRemoved.clear();
   for (int32_t u : tets)
     lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
