@@ -15,101 +15,8 @@ namespace volgrid
 using predicates::orient3d;
 
 MeshEditor::MeshEditor(TetMesh& m)
-  : mesh(m)
+  : MeshNavigator(m, StaleEntries::Rescan)
 {
-  rebuildVertexMap();
-}
-
-void MeshEditor::rebuildVertexMap()
-{
-  vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
-  mesh.forEachTet(
-    [&](int32_t t)
-    {
-      const int32_t* v = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
-        if (v[i] >= 0)
-          vertTet_[v[i]] = t;
-    });
-}
-
-int32_t MeshEditor::tetOf(int32_t v)
-{
-  if (v < 0)
-    return -1;
-  if (static_cast<size_t>(v) >= vertTet_.size())
-    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
-  const int32_t t = vertTet_[v];
-  if (t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t) && mesh.localIndex(t, v) >= 0)
-    return t;
-  // Stale entry (should not happen: every edit refreshes the vertices it touches): rescan.
-  rebuildVertexMap();
-  return vertTet_[v];
-}
-
-void MeshEditor::ensureStamp()
-{
-  tetStamp.ensure(mesh.tetCapacity());
-}
-
-uint32_t MeshEditor::newStamp()
-{
-  return tetStamp.next(mesh.tetCapacity());
-}
-
-void MeshEditor::star(int32_t v, std::vector<int32_t>& out)
-{
-  out.clear();
-  const int32_t t0 = tetOf(v);
-  if (t0 < 0)
-    return;
-  const uint32_t s = newStamp();
-  out.push_back(t0);
-  tetStamp[t0] = s;
-  for (size_t k = 0; k < out.size(); ++k)
-  {
-    const int32_t t = out[k];
-    const int li = mesh.localIndex(t, v);
-    for (int i = 0; i < 4; ++i)
-    {
-      if (i == li)
-        continue;
-      const int32_t u = mesh.neighbor(t, i);
-      if (u >= 0 && tetStamp[u] != s)
-      {
-        tetStamp[u] = s;
-        out.push_back(u);
-      }
-    }
-  }
-}
-
-int32_t MeshEditor::findEdge(int32_t a, int32_t b)
-{
-  star(a, tmpTets_);
-  for (int32_t t : tmpTets_)
-    if (mesh.localIndex(t, b) >= 0)
-      return t;
-  return -1;
-}
-
-int32_t MeshEditor::findFace(int32_t a, int32_t b, int32_t c, int* face)
-{
-  star(a, tmpTets_);
-  for (int32_t t : tmpTets_)
-  {
-    if (mesh.localIndex(t, b) < 0 || mesh.localIndex(t, c) < 0)
-      continue;
-    if (face)
-    {
-      const int32_t* v = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
-        if (v[i] != a && v[i] != b && v[i] != c)
-          *face = i;
-    }
-    return t;
-  }
-  return -1;
 }
 
 static int permutationSign(int a, int b, int c, int d)
@@ -240,9 +147,7 @@ bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<
     tmpTets_[n] = mesh.newTet(q[0], q[1], q[2], q[3]);
     for (int i = 0; i < 4; ++i)
     {
-      if (static_cast<size_t>(q[i]) >= vertTet_.size())
-        vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
-      vertTet_[q[i]] = tmpTets_[n];
+      mapVertex(q[i], tmpTets_[n]);
     }
   }
   for (size_t i = 0; i < nfaces_.size();)
@@ -460,8 +365,6 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
   const int32_t t0 = locate(p, start);
   if (t0 < 0)
     return false;
-  if (vertTet_.size() < static_cast<size_t>(mesh.numVertices()))
-    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
   int32_t f[3];
   // Roots: tets whose closure contains p.
   std::vector<int32_t> roots = { t0 };
