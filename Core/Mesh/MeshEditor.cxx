@@ -19,56 +19,10 @@ MeshEditor::MeshEditor(TetMesh& m)
 {
 }
 
-static int permutationSign(int a, int b, int c, int d)
-{
-  const int p[4] = { a, b, c, d };
-  int inv = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if (p[i] > p[j])
-        ++inv;
-  return (inv & 1) ? -1 : 1;
-}
-
 bool MeshEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets)
 {
-  ring.clear();
-  tets.clear();
-  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
-  if (ix < 0 || iy < 0)
-    return false;
-  int k = -1, l = -1;
-  for (int i = 0; i < 4; ++i)
-    if (i != ix && i != iy)
-      (k < 0 ? k : l) = i;
-  const int32_t* v = mesh.vertices(t);
-  int32_t r0 = v[k], r1 = v[l];
-  if (permutationSign(ix, iy, k, l) < 0)
-    std::swap(r0, r1);
-  int32_t cur = t, ra = r0, rb = r1;
-  for (int guard = 0; guard < 4096; ++guard)
-  {
-    ring.push_back(ra);
-    tets.push_back(cur);
-    // Next tet: across the face of cur opposite ra (it contains x, y, rb).
-    const int ia = mesh.localIndex(cur, ra);
-    const int32_t nxt = mesh.neighbor(cur, ia);
-    if (nxt < 0)
-      return false;
-    if (nxt == t)
-      return true;
-    const int32_t* w = mesh.vertices(nxt);
-    int32_t rc = -1;
-    for (int i = 0; i < 4; ++i)
-      if (w[i] != x && w[i] != y && w[i] != rb)
-        rc = w[i];
-    if (rc < 0 || mesh.localIndex(nxt, x) < 0 || mesh.localIndex(nxt, y) < 0)
-      return false;
-    cur = nxt;
-    ra = rb;
-    rb = rc;
-  }
-  return false;
+  constexpr int kMaxRingTets = 4096; // a guard against a broken adjacency, not a limit met in practice
+  return walkEdgeRing(t, x, y, ring, tets, kMaxRingTets, [this](int32_t c, int f) { return mesh.neighbor(c, f) < 0; });
 }
 
 bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,

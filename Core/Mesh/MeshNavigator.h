@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace volgrid
@@ -49,6 +50,13 @@ public:
   int32_t findEdge(int32_t a, int32_t b);
   // A tet having abc as a face (face index in *face), -1 if none.
   int32_t findFace(int32_t a, int32_t b, int32_t c, int* face = nullptr);
+  // The ring around edge xy given a live tet t containing it: ring vertices r_i and tets {x,y,r_i,r_i+1}
+  // with orient3d(x,y,r_i,r_i+1) > 0. False when a face around the edge is blocked (blocked(tet, face):
+  // the hull for recovery, every constrained face for the improvement stages), when the ring has more
+  // than maxTets tets, or when the adjacency around the edge is inconsistent.
+  template<class Blocked>
+  bool walkEdgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
+                    int maxTets, Blocked&& blocked) const;
 
   // Per tet slot marks: newStamp() gives a value no slot holds yet (resized on demand).
   uint32_t newStamp();
@@ -69,5 +77,60 @@ private:
   std::vector<int32_t> findScratch_;
   StaleEntries stale_;
 };
+
+template<class Blocked>
+bool MeshNavigator::walkEdgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring,
+                                 std::vector<int32_t>& tets, int maxTets, Blocked&& blocked) const
+{
+  ring.clear();
+  tets.clear();
+  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
+  if (ix < 0 || iy < 0)
+    return false;
+  int ia = -1, ib = -1;
+  for (int i = 0; i < 4; ++i)
+    if (i != ix && i != iy)
+      (ia < 0 ? ia : ib) = i;
+  // Parity of the permutation (ix, iy, ia, ib) of (0,1,2,3): an odd one flips the orientation.
+  const int perm[4] = { ix, iy, ia, ib };
+  int inv = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      inv += perm[i] > perm[j];
+  if (inv & 1)
+    std::swap(ia, ib);
+  const int32_t* v = mesh.vertices(t);
+  ring.push_back(v[ia]);
+  ring.push_back(v[ib]);
+  tets.push_back(t);
+  int32_t cur = t;
+  int32_t prevR = v[ia]; // the ring vertex whose opposite face leads on
+  while (true)
+  {
+    // Across the face of cur opposite prevR (it contains x, y and the last ring vertex).
+    const int f = mesh.localIndex(cur, prevR);
+    if (blocked(cur, f))
+      return false;
+    const int32_t next = mesh.neighbor(cur, f);
+    const int32_t last = ring.back();
+    if (next == t)
+      break;
+    if (next < 0 || mesh.localIndex(next, x) < 0 || mesh.localIndex(next, y) < 0)
+      return false;
+    const int32_t* w = mesh.vertices(next);
+    int32_t r = -1;
+    for (int i = 0; i < 4; ++i)
+      if (w[i] != x && w[i] != y && w[i] != last)
+        r = w[i];
+    if (r < 0 || static_cast<int>(tets.size()) >= maxTets)
+      return false;
+    tets.push_back(next);
+    if (r != ring.front()) // the closing tet (x, y, r_n-1, r_0) adds no vertex
+      ring.push_back(r);
+    prevR = last;
+    cur = next;
+  }
+  return ring.size() == tets.size() && ring.size() >= 3;
+}
 
 } // namespace volgrid

@@ -167,54 +167,7 @@ void TetEditor::neighbors(int32_t v, const std::vector<int32_t>& starTets, std::
 bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
                          int maxRing) const
 {
-  ring.clear();
-  tets.clear();
-  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
-  if (ix < 0 || iy < 0)
-    return false;
-  int ia = -1, ib = -1;
-  for (int i = 0; i < 4; ++i)
-    if (i != ix && i != iy)
-      (ia < 0 ? ia : ib) = i;
-  // Parity of the permutation (ix, iy, ia, ib) of (0,1,2,3): an odd one flips the orientation.
-  const int perm[4] = { ix, iy, ia, ib };
-  int inv = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      inv += perm[i] > perm[j];
-  if (inv & 1)
-    std::swap(ia, ib);
-  const int32_t* v = mesh.vertices(t);
-  ring.push_back(v[ia]);
-  ring.push_back(v[ib]);
-  tets.push_back(t);
-  int32_t cur = t;
-  int32_t prevR = v[ia]; // the ring vertex whose opposite face leads on
-  while (true)
-  {
-    // Across the face of cur opposite prevR (it contains x, y and the last ring vertex).
-    const int f = mesh.localIndex(cur, prevR);
-    if (isConstrainedFace(cur, f))
-      return false;
-    const int32_t next = mesh.neighbor(cur, f);
-    const int32_t last = ring.back();
-    if (next == t)
-      break;
-    const int32_t* w = mesh.vertices(next);
-    int32_t r = -1;
-    for (int i = 0; i < 4; ++i)
-      if (w[i] != x && w[i] != y && w[i] != last)
-        r = w[i];
-    if (r < 0 || static_cast<int>(tets.size()) >= maxRing)
-      return false;
-    tets.push_back(next);
-    if (r != ring.front())
-      ring.push_back(r);
-    prevR = last;
-    cur = next;
-  }
-  // The loop added the first ring vertex again? No: the closing tet is t itself, so ring has n entries.
-  return ring.size() == tets.size() && ring.size() >= 3;
+  return walkEdgeRing(t, x, y, ring, tets, maxRing, [this](int32_t c, int f) { return isConstrainedFace(c, f); });
 }
 
 bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
