@@ -284,33 +284,7 @@ bool MeshEditor::removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryC
 
 int32_t MeshEditor::locate(const double* p, int32_t start)
 {
-  int32_t t = start;
-  if (t < 0 || mesh.isFree(t))
-    return -1;
-  int32_t f[3];
-  uint32_t rot = 0;
-  const int64_t limit = 4 * static_cast<int64_t>(mesh.numTets()) + 100;
-  for (int64_t step = 0; step < limit; ++step)
-  {
-    int next = -1;
-    const int r = static_cast<int>(rot++ & 3);
-    for (int k = 0; k < 4; ++k)
-    {
-      const int i = (k + r) & 3;
-      mesh.faceVertices(t, i, f);
-      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) < 0)
-      {
-        next = i;
-        break;
-      }
-    }
-    if (next < 0)
-      return t;
-    t = mesh.neighbor(t, next);
-    if (t < 0)
-      return -1;
-  }
-  return -1;
+  return walk(p, start, WalkOrder::Rotating);
 }
 
 bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)

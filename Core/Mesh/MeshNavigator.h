@@ -58,6 +58,17 @@ public:
   bool walkEdgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
                     int maxTets, Blocked&& blocked) const;
 
+  // How a walk picks the first face it tries in each tet. It decides which tet a point on a shared face
+  // or edge lands in (and so the mesh), so each editor keeps its own.
+  enum class WalkOrder
+  {
+    Rotating, // faces 0, 1, 2, 3 first in turn; at most 4 n + 100 steps (recovery: MeshEditor)
+    Random    // a pseudo-random face seeded by the start tet; at most 4 n + 64 steps (TetEditor)
+  };
+  // Visibility walk from `start` to a tet whose closure contains p (exact orient3d); -1 if the walk leaves
+  // the mesh (p outside, or behind a boundary concavity) or does not converge.
+  int32_t walk(const double* p, int32_t start, WalkOrder order) const;
+
   // Per tet slot marks: newStamp() gives a value no slot holds yet (resized on demand).
   uint32_t newStamp();
   void ensureStamp();

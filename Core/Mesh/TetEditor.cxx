@@ -302,35 +302,7 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
 
 int32_t TetEditor::locate(const double* p, int32_t start) const
 {
-  if (start < 0 || start >= mesh.tetCapacity() || mesh.isFree(start))
-    return -1;
-  int32_t t = start;
-  uint32_t rng = 0x9E3779B9u ^ static_cast<uint32_t>(start);
-  const int64_t maxSteps = 4 * static_cast<int64_t>(mesh.numTets()) + 64;
-  for (int64_t step = 0; step < maxSteps; ++step)
-  {
-    rng = rng * 1664525u + 1013904223u;
-    const int first = static_cast<int>((rng >> 16) & 3);
-    int exitFace = -1;
-    for (int k = 0; k < 4; ++k)
-    {
-      const int i = (first + k) & 3;
-      int32_t f[3];
-      mesh.faceVertices(t, i, f);
-      if (predicates::orient3dInline(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) < 0)
-      {
-        exitFace = i;
-        break;
-      }
-    }
-    if (exitFace < 0)
-      return t;
-    const int32_t u = mesh.neighbor(t, exitFace);
-    if (u < 0)
-      return -1;
-    t = u;
-  }
-  return -1;
+  return walk(p, start, WalkOrder::Random);
 }
 
 int32_t TetEditor::locateRobust(const double* p, int32_t start) const
