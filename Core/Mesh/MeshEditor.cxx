@@ -100,9 +100,7 @@ bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<
     const auto& q = newTets[n];
     tmpTets_[n] = mesh.newTet(q[0], q[1], q[2], q[3]);
     for (int i = 0; i < 4; ++i)
-    {
       mapVertex(q[i], tmpTets_[n]);
-    }
   }
   for (size_t i = 0; i < nfaces_.size();)
   {
