@@ -2,6 +2,8 @@
 #include "MeshScan.h"
 #include "ParallelFor.h"
 
+#include "RingTriangulation.h"
+
 #include "Predicates.h"
 #include "PredicatesInline.h"
 #include "Quality.h"
@@ -56,17 +58,6 @@ Scratch& scratch()
   return s;
 }
 
-void emit(const std::vector<int32_t>& r, const std::vector<int>& K, int n, int i, int j, int32_t x, int32_t y,
-          std::vector<std::array<int32_t, 4>>& out)
-{
-  if (j - i < 2)
-    return;
-  const int k = K[i * n + j];
-  out.push_back({ r[i], r[k], r[j], y });
-  out.push_back({ r[i], r[j], r[k], x });
-  emit(r, K, n, i, k, x, y, out);
-  emit(r, K, n, k, j, x, y, out);
-}
 } // namespace
 
 namespace
@@ -139,44 +130,21 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
   double qOld = 2;
   for (int32_t u : s.tets)
     qOld = std::min(qOld, tetQ(m, u));
-  s.Q.assign(static_cast<size_t>(n * n), 2.0);
-  s.K.assign(static_cast<size_t>(n * n), -1);
   const std::vector<int32_t>& r = s.ring;
-  // Only a triangulation better than `floor` is used, so every sub-polygon starts at floor: a split
-  // that cannot beat it is skipped without its second tet. A sub-polygon that beats floor gets the same
-  // value and split as without the bound (the first best one); one that cannot keeps floor and no split,
-  // and then no polygon containing it beats floor either.
+  // Only a triangulation better than the old star is used: the DP's floor. A split that cannot beat the
+  // chord's best so far is skipped without its second tet.
   const double floor = std::max(qOld, 0.0);
-  for (int len = 2; len < n; ++len)
-    for (int i = 0; i + len < n; ++i)
-    {
-      const int j = i + len;
-      double best = floor;
-      int bestK = -1;
-      for (int k = i + 1; k < j; ++k)
-      {
-        const double sub = std::min(s.Q[i * n + k], s.Q[k * n + j]);
-        if (sub <= best)
-          continue;
-        const double q1 = tetQ(m, r[i], r[k], r[j], y);
-        if (std::min(sub, q1) <= best)
-          continue;
-        const double q2 = tetQ(m, r[i], r[j], r[k], x);
-        const double v = std::min(sub, std::min(q1, q2));
-        if (v > best)
-        {
-          best = v;
-          bestK = k;
-        }
-      }
-      s.Q[i * n + j] = best;
-      s.K[i * n + j] = bestK;
-    }
-  const double qNew = s.Q[n - 1];
-  if (!(qNew > floor) || s.K[n - 1] < 0)
+  auto score = [&](int i, int k, int j, double bound)
+  {
+    const double q1 = tetQ(m, r[i], r[k], r[j], y);
+    if (!(q1 > bound))
+      return q1;
+    return std::min(q1, tetQ(m, r[i], r[j], r[k], x));
+  };
+  if (!maxMinTriangulation(n, floor, s.Q, s.K, score))
     return false;
   s.newTets.clear();
-  emit(r, s.K, n, 0, n - 1, x, y, s.newTets);
+  appendRingTets(s.K, r, x, y, ChordOrder::PieceBeforeApexFirst, s.newTets);
   for (const auto& q : s.newTets)
     if (!positive(m, q))
       return false;

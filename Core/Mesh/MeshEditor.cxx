@@ -2,9 +2,9 @@
 // removal, constrained vertex insertion, point location), shared by recovery and Steiner removal.
 #include "MeshEditor.h"
 
-#include "IntervalTriangulation.h"
 #include "Predicates.h"
 #include "Quality.h"
+#include "RingTriangulation.h"
 
 #include <algorithm>
 #include <limits>
@@ -15,153 +15,14 @@ namespace volgrid
 using predicates::orient3d;
 
 MeshEditor::MeshEditor(TetMesh& m)
-  : mesh(m)
+  : MeshNavigator(m, StaleEntries::Rescan)
 {
-  rebuildVertexMap();
-}
-
-void MeshEditor::rebuildVertexMap()
-{
-  vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
-  mesh.forEachTet(
-    [&](int32_t t)
-    {
-      const int32_t* v = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
-        if (v[i] >= 0)
-          vertTet_[v[i]] = t;
-    });
-}
-
-int32_t MeshEditor::tetOf(int32_t v)
-{
-  if (v < 0)
-    return -1;
-  if (static_cast<size_t>(v) >= vertTet_.size())
-    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
-  const int32_t t = vertTet_[v];
-  if (t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t) && mesh.localIndex(t, v) >= 0)
-    return t;
-  // Stale entry (should not happen: every edit refreshes the vertices it touches): rescan.
-  rebuildVertexMap();
-  return vertTet_[v];
-}
-
-void MeshEditor::ensureStamp()
-{
-  tetStamp.ensure(mesh.tetCapacity());
-}
-
-uint32_t MeshEditor::newStamp()
-{
-  return tetStamp.next(mesh.tetCapacity());
-}
-
-void MeshEditor::star(int32_t v, std::vector<int32_t>& out)
-{
-  out.clear();
-  const int32_t t0 = tetOf(v);
-  if (t0 < 0)
-    return;
-  const uint32_t s = newStamp();
-  out.push_back(t0);
-  tetStamp[t0] = s;
-  for (size_t k = 0; k < out.size(); ++k)
-  {
-    const int32_t t = out[k];
-    const int li = mesh.localIndex(t, v);
-    for (int i = 0; i < 4; ++i)
-    {
-      if (i == li)
-        continue;
-      const int32_t u = mesh.neighbor(t, i);
-      if (u >= 0 && tetStamp[u] != s)
-      {
-        tetStamp[u] = s;
-        out.push_back(u);
-      }
-    }
-  }
-}
-
-int32_t MeshEditor::findEdge(int32_t a, int32_t b)
-{
-  star(a, tmpTets_);
-  for (int32_t t : tmpTets_)
-    if (mesh.localIndex(t, b) >= 0)
-      return t;
-  return -1;
-}
-
-int32_t MeshEditor::findFace(int32_t a, int32_t b, int32_t c, int* face)
-{
-  star(a, tmpTets_);
-  for (int32_t t : tmpTets_)
-  {
-    if (mesh.localIndex(t, b) < 0 || mesh.localIndex(t, c) < 0)
-      continue;
-    if (face)
-    {
-      const int32_t* v = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
-        if (v[i] != a && v[i] != b && v[i] != c)
-          *face = i;
-    }
-    return t;
-  }
-  return -1;
-}
-
-static int permutationSign(int a, int b, int c, int d)
-{
-  const int p[4] = { a, b, c, d };
-  int inv = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if (p[i] > p[j])
-        ++inv;
-  return (inv & 1) ? -1 : 1;
 }
 
 bool MeshEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets)
 {
-  ring.clear();
-  tets.clear();
-  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
-  if (ix < 0 || iy < 0)
-    return false;
-  int k = -1, l = -1;
-  for (int i = 0; i < 4; ++i)
-    if (i != ix && i != iy)
-      (k < 0 ? k : l) = i;
-  const int32_t* v = mesh.vertices(t);
-  int32_t r0 = v[k], r1 = v[l];
-  if (permutationSign(ix, iy, k, l) < 0)
-    std::swap(r0, r1);
-  int32_t cur = t, ra = r0, rb = r1;
-  for (int guard = 0; guard < 4096; ++guard)
-  {
-    ring.push_back(ra);
-    tets.push_back(cur);
-    // Next tet: across the face of cur opposite ra (it contains x, y, rb).
-    const int ia = mesh.localIndex(cur, ra);
-    const int32_t nxt = mesh.neighbor(cur, ia);
-    if (nxt < 0)
-      return false;
-    if (nxt == t)
-      return true;
-    const int32_t* w = mesh.vertices(nxt);
-    int32_t rc = -1;
-    for (int i = 0; i < 4; ++i)
-      if (w[i] != x && w[i] != y && w[i] != rb)
-        rc = w[i];
-    if (rc < 0 || mesh.localIndex(nxt, x) < 0 || mesh.localIndex(nxt, y) < 0)
-      return false;
-    cur = nxt;
-    ra = rb;
-    rb = rc;
-  }
-  return false;
+  constexpr int kMaxRingTets = 4096; // a guard against a broken adjacency, not a limit met in practice
+  return walkEdgeRing(t, x, y, ring, tets, kMaxRingTets, [this](int32_t c, int f) { return mesh.neighbor(c, f) < 0; });
 }
 
 bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
@@ -239,11 +100,7 @@ bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<
     const auto& q = newTets[n];
     tmpTets_[n] = mesh.newTet(q[0], q[1], q[2], q[3]);
     for (int i = 0; i < 4; ++i)
-    {
-      if (static_cast<size_t>(q[i]) >= vertTet_.size())
-        vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
-      vertTet_[q[i]] = tmpTets_[n];
-    }
+      mapVertex(q[i], tmpTets_[n]);
   }
   for (size_t i = 0; i < nfaces_.size();)
   {
@@ -317,8 +174,6 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
   const double* X = mesh.point(x);
   const double* Y = mesh.point(y);
   const double kInvalid = -std::numeric_limits<double>::infinity();
-  std::vector<double> best(static_cast<size_t>(n * n), kInvalid);
-  std::vector<int> choice(static_cast<size_t>(n * n), -1);
   auto chordOk = [&](int i, int j)
   { return j == i + 1 || (i == 0 && j == n - 1) || !bc->forbiddenEdge(ring[i], ring[j]); };
   // A required chord (positions ci < cj in the ring): no chord of the triangulation may cross it.
@@ -340,7 +195,7 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
     const bool atI = i == ci || j == ci, atJ = i == cj || j == cj;
     return !atI && !atJ && inI != inJ;
   };
-  auto triQ = [&](int i, int k, int j) -> double
+  auto triQ = [&](int i, int k, int j, double) -> double
   {
     if (bc && (!chordOk(i, k) || !chordOk(k, j) || !chordOk(i, j)))
       return kInvalid;
@@ -351,41 +206,12 @@ bool MeshEditor::removeEdge(int32_t t, int32_t x, int32_t y, const BoundaryConst
       return kInvalid;
     return std::min(quality::tetShapeMeasure(A, B, C, Y), quality::tetShapeMeasure(A, C, B, X));
   };
-  for (int len = 1; len < n; ++len)
-    for (int i = 0; i + len < n; ++i)
-    {
-      const int j = i + len;
-      if (len == 1)
-      {
-        best[i * n + j] = std::numeric_limits<double>::infinity();
-        continue;
-      }
-      double bq = kInvalid;
-      int bk = -1;
-      for (int k = i + 1; k < j; ++k)
-      {
-        const double sub = std::min(best[i * n + k], best[k * n + j]);
-        if (!(sub > bq))
-          continue;
-        const double q = std::min(sub, triQ(i, k, j));
-        if (q > bq)
-        {
-          bq = q;
-          bk = k;
-        }
-      }
-      best[i * n + j] = bq;
-      choice[i * n + j] = bk;
-    }
-  if (!(best[n - 1] > kInvalid))
+  std::vector<double> best;
+  std::vector<int> choice;
+  if (!maxMinTriangulation(n, kInvalid, best, choice, triQ))
     return false;
   tmpNew_.clear();
-  forEachChosenTriangle(choice, n,
-                        [&](int i, int k, int j)
-                        {
-                          tmpNew_.push_back({ { ring[i], ring[k], ring[j], y } });
-                          tmpNew_.push_back({ { ring[i], ring[j], ring[k], x } });
-                        });
+  appendRingTets(choice, ring, x, y, ChordOrder::PieceAfterApexFirst, tmpNew_);
   lastRemoved.clear();
   for (int32_t u : tets)
     lastRemoved.push_back({ { mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3) } });
@@ -456,33 +282,7 @@ bool MeshEditor::removeEdgeDeep(int32_t t, int32_t x, int32_t y, const BoundaryC
 
 int32_t MeshEditor::locate(const double* p, int32_t start)
 {
-  int32_t t = start;
-  if (t < 0 || mesh.isFree(t))
-    return -1;
-  int32_t f[3];
-  uint32_t rot = 0;
-  const int64_t limit = 4 * static_cast<int64_t>(mesh.numTets()) + 100;
-  for (int64_t step = 0; step < limit; ++step)
-  {
-    int next = -1;
-    const int r = static_cast<int>(rot++ & 3);
-    for (int k = 0; k < 4; ++k)
-    {
-      const int i = (k + r) & 3;
-      mesh.faceVertices(t, i, f);
-      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) < 0)
-      {
-        next = i;
-        break;
-      }
-    }
-    if (next < 0)
-      return t;
-    t = mesh.neighbor(t, next);
-    if (t < 0)
-      return -1;
-  }
-  return -1;
+  return walk(p, start, WalkOrder::Rotating);
 }
 
 bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
@@ -491,8 +291,6 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
   const int32_t t0 = locate(p, start);
   if (t0 < 0)
     return false;
-  if (vertTet_.size() < static_cast<size_t>(mesh.numVertices()))
-    vertTet_.resize(static_cast<size_t>(mesh.numVertices()), -1);
   int32_t f[3];
   // Roots: tets whose closure contains p.
   std::vector<int32_t> roots = { t0 };

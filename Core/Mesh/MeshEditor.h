@@ -3,8 +3,8 @@
 #pragma once
 
 #include "BoundaryConstraints.h"
+#include "MeshNavigator.h"
 #include "TetMesh.h"
-#include "TetStamps.h"
 #include "VertexKeys.h"
 
 #include <array>
@@ -17,21 +17,12 @@ namespace volgrid
 // Local topological edits on a TetMesh without ghost tets, with a vertex -> incident tet map.
 // Every edit goes through replace(): old tets out, new (positively oriented) tets in, adjacency rebuilt
 // from the old tets' outer faces. Used by recovery, Steiner insertion and Steiner removal.
-class MeshEditor
+// The vertex map, star, findEdge/findFace and stamps are MeshNavigator's (shared with TetEditor; a stale map
+// entry is repaired by a rescan).
+class MeshEditor : public MeshNavigator
 {
 public:
   explicit MeshEditor(TetMesh& mesh);
-  TetMesh& mesh;
-
-  void rebuildVertexMap();
-  // A live tet incident to v, or -1 (v used by no tet).
-  int32_t tetOf(int32_t v);
-  // All live tets incident to v (BFS over faces containing v).
-  void star(int32_t v, std::vector<int32_t>& out);
-  // A tet containing edge ab (-1 if none).
-  int32_t findEdge(int32_t a, int32_t b);
-  // A tet having abc as a face (face index in *face), -1 if none.
-  int32_t findFace(int32_t a, int32_t b, int32_t c, int* face = nullptr);
   // The ring around edge xy given a tet t containing it: ring vertices r_i and tets {x,y,r_i,r_i+1}
   // with orient3d(x,y,r_i,r_i+1) > 0. False when the ring is open (edge on the hull).
   bool edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets);
@@ -74,14 +65,7 @@ public:
   std::vector<std::array<int32_t, 4>> lastRemoved;
   std::vector<int32_t> lastRemovedIds;
 
-  // Scratch helpers shared by the stages.
-  uint32_t newStamp();
-  TetStamps tetStamp; // per tet slot (resized on demand)
-  void ensureStamp();
-
 private:
-  std::vector<int32_t> vertTet_;
-  uint32_t stamp_ = 0;
   // replace() scratch
   struct BFace
   {

@@ -122,41 +122,17 @@ double sineQualityToDegrees(double q)
 
 // ---------------------------------------------------------------------------------------------------------
 TetEditor::TetEditor(TetMesh& m, const FaceConstraints* c, std::vector<int32_t>* l)
-  : mesh(m)
+  : MeshNavigator(m, StaleEntries::Trust)
   , constraints(c)
   , labels(l)
 {
-  rebuildVertexMap();
-}
-
-void TetEditor::rebuildVertexMap()
-{
-  vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
-  mesh.forEachTet(
-    [&](int32_t t)
-    {
-      const int32_t* v = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
-        if (v[i] >= 0)
-          vertTet_[v[i]] = t;
-    });
-}
-
-void TetEditor::ensureStamp()
-{
-  stamp_.ensure(mesh.tetCapacity());
-}
-
-uint32_t TetEditor::newStamp()
-{
-  return stamp_.next(mesh.tetCapacity());
 }
 
 std::vector<uint8_t> TetEditor::lockedVertices() const
 {
   std::vector<uint8_t> locked(static_cast<size_t>(mesh.numVertices()), 0);
   for (int32_t v = 0; v < mesh.numVertices(); ++v)
-    if (tetOf(v) < 0)
+    if (mappedTet(v) < 0)
       locked[v] = 1;
   mesh.forEachTet(
     [&](int32_t t)
@@ -172,32 +148,6 @@ std::vector<uint8_t> TetEditor::lockedVertices() const
         }
     });
   return locked;
-}
-
-void TetEditor::star(int32_t v, std::vector<int32_t>& out)
-{
-  out.clear();
-  const int32_t t0 = tetOf(v);
-  if (t0 < 0)
-    return;
-  const uint32_t s = newStamp();
-  stamp_[t0] = s;
-  out.push_back(t0);
-  for (size_t k = 0; k < out.size(); ++k)
-  {
-    const int32_t t = out[k];
-    const int iv = mesh.localIndex(t, v);
-    for (int i = 0; i < 4; ++i)
-    {
-      if (i == iv)
-        continue;
-      const int32_t u = mesh.neighbor(t, i);
-      if (u < 0 || stamp_[u] == s)
-        continue;
-      stamp_[u] = s;
-      out.push_back(u);
-    }
-  }
 }
 
 void TetEditor::neighbors(int32_t v, const std::vector<int32_t>& starTets, std::vector<int32_t>& out)
@@ -217,54 +167,7 @@ void TetEditor::neighbors(int32_t v, const std::vector<int32_t>& starTets, std::
 bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
                          int maxRing) const
 {
-  ring.clear();
-  tets.clear();
-  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
-  if (ix < 0 || iy < 0)
-    return false;
-  int ia = -1, ib = -1;
-  for (int i = 0; i < 4; ++i)
-    if (i != ix && i != iy)
-      (ia < 0 ? ia : ib) = i;
-  // Parity of the permutation (ix, iy, ia, ib) of (0,1,2,3): an odd one flips the orientation.
-  const int perm[4] = { ix, iy, ia, ib };
-  int inv = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      inv += perm[i] > perm[j];
-  if (inv & 1)
-    std::swap(ia, ib);
-  const int32_t* v = mesh.vertices(t);
-  ring.push_back(v[ia]);
-  ring.push_back(v[ib]);
-  tets.push_back(t);
-  int32_t cur = t;
-  int32_t prevR = v[ia]; // the ring vertex whose opposite face leads on
-  while (true)
-  {
-    // Across the face of cur opposite prevR (it contains x, y and the last ring vertex).
-    const int f = mesh.localIndex(cur, prevR);
-    if (isConstrainedFace(cur, f))
-      return false;
-    const int32_t next = mesh.neighbor(cur, f);
-    const int32_t last = ring.back();
-    if (next == t)
-      break;
-    const int32_t* w = mesh.vertices(next);
-    int32_t r = -1;
-    for (int i = 0; i < 4; ++i)
-      if (w[i] != x && w[i] != y && w[i] != last)
-        r = w[i];
-    if (r < 0 || static_cast<int>(tets.size()) >= maxRing)
-      return false;
-    tets.push_back(next);
-    if (r != ring.front())
-      ring.push_back(r);
-    prevR = last;
-    cur = next;
-  }
-  // The loop added the first ring vertex again? No: the closing tet is t itself, so ring has n entries.
-  return ring.size() == tets.size() && ring.size() >= 3;
+  return walkEdgeRing(t, x, y, ring, tets, maxRing, [this](int32_t c, int f) { return isConstrainedFace(c, f); });
 }
 
 bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
@@ -274,7 +177,7 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
     return false;
   const uint32_t s = newStamp();
   for (int32_t t : oldTets)
-    stamp_[t] = s;
+    tetStamp[t] = s;
   faces_.clear();
   auto sortKey = [](int32_t* k)
   {
@@ -289,7 +192,7 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
     for (int i = 0; i < 4; ++i)
     {
       const int32_t c = mesh.neighborCode(t, i);
-      if (c >= 0 && stamp_[c >> 2] == s)
+      if (c >= 0 && tetStamp[c >> 2] == s)
         continue;
       FaceEntry e;
       mesh.faceVertices(t, i, e.key);
@@ -362,9 +265,7 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
     for (int i = 0; i < 4; ++i)
       if (q[i] >= 0)
       {
-        if (static_cast<size_t>(q[i]) >= vertTet_.size())
-          vertTet_.resize(static_cast<size_t>(q[i]) + 1, -1);
-        vertTet_[q[i]] = t;
+        mapVertex(q[i], t);
       }
   }
   if (labels)
@@ -401,35 +302,7 @@ bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<s
 
 int32_t TetEditor::locate(const double* p, int32_t start) const
 {
-  if (start < 0 || start >= mesh.tetCapacity() || mesh.isFree(start))
-    return -1;
-  int32_t t = start;
-  uint32_t rng = 0x9E3779B9u ^ static_cast<uint32_t>(start);
-  const int64_t maxSteps = 4 * static_cast<int64_t>(mesh.numTets()) + 64;
-  for (int64_t step = 0; step < maxSteps; ++step)
-  {
-    rng = rng * 1664525u + 1013904223u;
-    const int first = static_cast<int>((rng >> 16) & 3);
-    int exitFace = -1;
-    for (int k = 0; k < 4; ++k)
-    {
-      const int i = (first + k) & 3;
-      int32_t f[3];
-      mesh.faceVertices(t, i, f);
-      if (predicates::orient3dInline(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) < 0)
-      {
-        exitFace = i;
-        break;
-      }
-    }
-    if (exitFace < 0)
-      return t;
-    const int32_t u = mesh.neighbor(t, exitFace);
-    if (u < 0)
-      return -1;
-    t = u;
-  }
-  return -1;
+  return walk(p, start, WalkOrder::Random);
 }
 
 int32_t TetEditor::locateRobust(const double* p, int32_t start) const
@@ -485,7 +358,7 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   uint32_t s = newStamp();
   cavity_.clear();
   cavity_.push_back(start);
-  stamp_[start] = s;
+  tetStamp[start] = s;
   const uint32_t sOut = newStamp(); // tets tested and found not in conflict
   for (size_t k = 0; k < cavity_.size(); ++k)
   {
@@ -495,18 +368,18 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
       if (isConstrainedFace(t, i))
         continue;
       const int32_t u = mesh.neighbor(t, i);
-      if (stamp_[u] == s || stamp_[u] == sOut)
+      if (tetStamp[u] == s || tetStamp[u] == sOut)
         continue;
       const int32_t* w = mesh.vertices(u);
       const int c = predicates::insphereSoSInline(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]),
                                                   mesh.point(w[3]), p, w[0], w[1], w[2], w[3], v);
       if (c > 0)
       {
-        stamp_[u] = s;
+        tetStamp[u] = s;
         cavity_.push_back(u);
       }
       else
-        stamp_[u] = sOut;
+        tetStamp[u] = sOut;
     }
   }
   // 2. Shrink until star-shaped from p: a cavity tet with a boundary face that does not see p strictly is
@@ -516,12 +389,12 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
     bool changed = false;
     for (int32_t t : cavity_)
     {
-      if (stamp_[t] != s)
+      if (tetStamp[t] != s)
         continue;
       for (int i = 0; i < 4; ++i)
       {
         const int32_t u = mesh.neighbor(t, i);
-        const bool boundary = isConstrainedFace(t, i) || stamp_[u] != s;
+        const bool boundary = isConstrainedFace(t, i) || tetStamp[u] != s;
         if (!boundary)
           continue;
         if (faceSide(t, i) <= 0)
@@ -530,11 +403,11 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
           {
             // p lies on this face and the tet beyond cannot join: reject.
             for (int32_t c : cavity_)
-              if (stamp_[c] == s)
-                stamp_[c] = 0;
+              if (tetStamp[c] == s)
+                tetStamp[c] = 0;
             return InsertStatus::NoCavity;
           }
-          stamp_[t] = 0;
+          tetStamp[t] = 0;
           changed = true;
           break;
         }
@@ -546,7 +419,7 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
     const uint32_t s2 = newStamp();
     queue_.clear();
     queue_.push_back(start);
-    stamp_[start] = s2;
+    tetStamp[start] = s2;
     for (size_t k = 0; k < queue_.size(); ++k)
     {
       const int32_t t = queue_[k];
@@ -555,16 +428,16 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
         if (isConstrainedFace(t, i))
           continue;
         const int32_t u = mesh.neighbor(t, i);
-        if (stamp_[u] == s)
+        if (tetStamp[u] == s)
         {
-          stamp_[u] = s2;
+          tetStamp[u] = s2;
           queue_.push_back(u);
         }
       }
     }
     for (int32_t t : cavity_)
-      if (stamp_[t] == s)
-        stamp_[t] = 0;
+      if (tetStamp[t] == s)
+        tetStamp[t] = 0;
     cavity_.swap(queue_);
     s = s2; // the cavity marker from now on
   }
@@ -581,13 +454,13 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
     for (int i = 0; i < 4; ++i)
     {
       const int32_t u = mesh.neighbor(t, i);
-      const bool boundary = isConstrainedFace(t, i) || stamp_[u] != s;
+      const bool boundary = isConstrainedFace(t, i) || tetStamp[u] != s;
       if (!boundary)
         continue;
       if (faceSide(t, i) <= 0)
       {
         for (int32_t c : cavity_)
-          stamp_[c] = 0;
+          tetStamp[c] = 0;
         return InsertStatus::NoCavity;
       }
       std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
@@ -626,16 +499,16 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   if (lost)
   {
     for (int32_t c : cavity_)
-      stamp_[c] = 0;
+      tetStamp[c] = 0;
     return InsertStatus::NoCavity;
   }
   if (best < minDistance || best == 0)
   {
     for (int32_t c : cavity_)
-      stamp_[c] = 0;
+      tetStamp[c] = 0;
     return InsertStatus::TooClose;
   }
-  commitInsertion(v, created);
+  commitInsertion(created);
   return InsertStatus::Inserted;
 }
 
@@ -653,7 +526,7 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
   {
     const uint32_t seen = newStamp();
     bfsTets_.assign(1, { start, -1 });
-    stamp_[start] = seen;
+    tetStamp[start] = seen;
     int32_t found = -1;
     for (size_t k = 0, levelEnd = 1, depth = 0; k < bfsTets_.size() && found < 0; ++k)
     {
@@ -669,9 +542,9 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
         if (isConstrainedFace(t, i))
           continue;
         const int32_t u = mesh.neighbor(t, i);
-        if (stamp_[u] == seen)
+        if (tetStamp[u] == seen)
           continue;
-        stamp_[u] = seen;
+        tetStamp[u] = seen;
         bfsTets_.push_back({ u, static_cast<int32_t>(k) });
         if (u == mustReplace)
           found = static_cast<int32_t>(bfsTets_.size() - 1);
@@ -685,7 +558,7 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
   }
   const uint32_t s = newStamp();
   for (int32_t t : cavity_)
-    stamp_[t] = s;
+    tetStamp[t] = s;
   // The cone over the cavity's boundary faces, kept up to date as the cavity grows.
   cone_.clear();
   auto addFaces = [&](int32_t t)
@@ -694,7 +567,7 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
     for (int i = 0; i < 4; ++i)
     {
       const bool constrained = isConstrainedFace(t, i);
-      if (!constrained && stamp_[mesh.neighbor(t, i)] == s)
+      if (!constrained && tetStamp[mesh.neighbor(t, i)] == s)
         continue;
       std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
       q[i] = v;
@@ -760,17 +633,17 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
       break;
     // Grow across the worst unconstrained face.
     const int32_t u = mesh.neighbor(cone_[growK].tet, cone_[growK].face);
-    stamp_[u] = s;
+    tetStamp[u] = s;
     cavity_.push_back(u);
     size_t kept = 0;
     for (size_t k = 0; k < cone_.size(); ++k)
-      if (cone_[k].constrained || stamp_[mesh.neighbor(cone_[k].tet, cone_[k].face)] != s)
+      if (cone_[k].constrained || tetStamp[mesh.neighbor(cone_[k].tet, cone_[k].face)] != s)
         cone_[kept++] = cone_[k];
     cone_.resize(kept);
     addFaces(u);
   }
   for (int32_t t : cavity_)
-    stamp_[t] = 0;
+    tetStamp[t] = 0;
   if (bestQ == -3)
     return -3;
   double qOld = 2;
@@ -791,7 +664,7 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
     const uint32_t c = newStamp();
     cavity_ = bestCavity_;
     for (int32_t t : cavity_)
-      stamp_[t] = c;
+      tetStamp[t] = c;
     newTets_.clear();
     outerCode_.clear();
     outerFace_.clear();
@@ -800,7 +673,7 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
       const int32_t* w = mesh.vertices(t);
       for (int i = 0; i < 4; ++i)
       {
-        if (!isConstrainedFace(t, i) && stamp_[mesh.neighbor(t, i)] == c)
+        if (!isConstrainedFace(t, i) && tetStamp[mesh.neighbor(t, i)] == c)
           continue;
         std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
         q[i] = v;
@@ -809,12 +682,12 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
         outerFace_.push_back(i);
       }
     }
-    commitInsertion(v, created);
+    commitInsertion(created);
   }
   return bestQ;
 }
 
-void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
+void TetEditor::commitInsertion(std::vector<int32_t>* created)
 {
   // The cone from v over the cavity boundary: new tet k replaces v at position outerFace_[k] of a cavity
   // tet, so its face outerFace_[k] is the old boundary face (linked to the old outer neighbour) and its
@@ -831,8 +704,6 @@ void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
   std::vector<int32_t>& ids = queue_;
   ids.resize(n);
   edgeSlots_.clear();
-  if (static_cast<size_t>(v) >= vertTet_.size())
-    vertTet_.resize(static_cast<size_t>(v) + 1, -1);
   for (size_t k = 0; k < n; ++k)
   {
     const auto& q = newTets_[k];
@@ -849,7 +720,7 @@ void TetEditor::commitInsertion(int32_t v, std::vector<int32_t>* created)
     }
     for (int j = 0; j < 4; ++j)
     {
-      vertTet_[q[j]] = t;
+      mapVertex(q[j], t);
       if (j == i)
         continue;
       // Face j contains v (at position i) and the two vertices other than positions i and j.

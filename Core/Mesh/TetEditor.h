@@ -25,8 +25,8 @@
 #pragma once
 
 #include "EditJournal.h"
+#include "MeshNavigator.h"
 #include "TetMesh.h"
-#include "TetStamps.h"
 #include "VertexKeys.h"
 
 #include <array>
@@ -62,28 +62,19 @@ double tetSineQuality(const double* a, const double* b, const double* c, const d
 // min(theta_min, 180 - theta_max) in degrees from a sine quality (asin clamp).
 double sineQualityToDegrees(double q);
 
-class TetEditor
+// The vertex map, star, findEdge/findFace and stamps are MeshNavigator's (shared with MeshEditor; stale map
+// entries are trusted: the edits and forgetVertex keep them exact).
+class TetEditor : public MeshNavigator
 {
 public:
   // constraints and labels may be null. labels (one entry per tet slot) is resized as tets are created.
   TetEditor(TetMesh& mesh, const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr);
 
-  TetMesh& mesh;
   const FaceConstraints* constraints;
   std::vector<int32_t>* labels;
   // Optional undo log: when set, every tet slot is saved in it before replace() or an insertion writes
   // it (EditJournal.h). Points are the caller's to save before it moves them.
   EditJournal* journal = nullptr;
-
-  // Vertex -> one incident live tet. Rebuilt from scratch; edits keep it up to date.
-  void rebuildVertexMap();
-  int32_t tetOf(int32_t v) const { return v < static_cast<int32_t>(vertTet_.size()) ? vertTet_[v] : -1; }
-  // After an edit that leaves v in no tet (a vertex removal): tetOf(v) = -1 from then on.
-  void forgetVertex(int32_t v)
-  {
-    if (v >= 0 && v < static_cast<int32_t>(vertTet_.size()))
-      vertTet_[v] = -1;
-  }
 
   bool isConstrainedFace(int32_t t, int i) const
   {
@@ -99,8 +90,6 @@ public:
   // Per-vertex lock flags: 1 for vertices of constrained faces and for vertices used by no tet.
   std::vector<uint8_t> lockedVertices() const;
 
-  // All live tets incident to v.
-  void star(int32_t v, std::vector<int32_t>& out);
   // The distinct vertices adjacent to v (sharing an edge), from its star.
   void neighbors(int32_t v, const std::vector<int32_t>& starTets, std::vector<int32_t>& out);
 
@@ -149,15 +138,11 @@ public:
   uint64_t replacements = 0;
 
 private:
-  void ensureStamp();
   void journalTet(int32_t t)
   {
     if (journal && t >= 0)
       journal->saveTet(mesh, labels, t);
   }
-  uint32_t newStamp();
-  std::vector<int32_t> vertTet_;
-  TetStamps stamp_;
   // scratch
   struct FaceEntry
   {
@@ -180,7 +165,7 @@ private:
   std::vector<std::array<int32_t, 4>> newTets_;
   std::vector<int32_t> outerCode_, outerFace_;
   std::vector<std::pair<uint64_t, int32_t>> edgeSlots_;
-  void commitInsertion(int32_t v, std::vector<int32_t>* created);
+  void commitInsertion(std::vector<int32_t>* created);
 };
 
 } // namespace volgrid

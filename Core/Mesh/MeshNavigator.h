@@ -1,0 +1,147 @@
+// MeshNavigator: what both mesh editors stand on (MeshEditor for recovery, TetEditor for refinement and
+// improvement): the vertex -> incident tet map, the tet stamps, the star of a vertex and the tets holding
+// an edge or a face. The editors add their edits (replace, flips, insertion) on top and keep the map up to
+// date through mapVertex().
+#pragma once
+
+#include "TetMesh.h"
+#include "TetStamps.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace volgrid
+{
+
+class MeshNavigator
+{
+public:
+  // What tetOf() does with a map entry that does not hold its vertex. Each editor keeps its own rule:
+  // a rescan rebuilds every entry, which changes the tets stars start from, and so the output mesh.
+  enum class StaleEntries
+  {
+    Rescan, // rebuild the map (recovery: MeshEditor)
+    Trust   // return the entry (the improvement stages: TetEditor, whose edits and forgetVertex keep it exact)
+  };
+  MeshNavigator(TetMesh& mesh, StaleEntries rule);
+  TetMesh& mesh;
+
+  // Vertex -> one incident live tet, rebuilt from scratch.
+  void rebuildVertexMap();
+  // The map's entry for v: -1 for a vertex in no tet or beyond the map.
+  int32_t mappedTet(int32_t v) const
+  {
+    return v >= 0 && static_cast<size_t>(v) < vertTet_.size() ? vertTet_[static_cast<size_t>(v)] : -1;
+  }
+  // A live tet incident to v, or -1 (v in no tet), under the StaleEntries rule.
+  int32_t tetOf(int32_t v);
+  // After an edit that leaves v in no tet (a vertex removal): tetOf(v) = -1 from then on.
+  void forgetVertex(int32_t v)
+  {
+    if (v >= 0 && static_cast<size_t>(v) < vertTet_.size())
+      vertTet_[static_cast<size_t>(v)] = -1;
+  }
+
+  // All live tets incident to v (breadth first over the faces containing v, from tetOf(v)).
+  void star(int32_t v, std::vector<int32_t>& out);
+  // A tet containing edge ab (-1 if none).
+  int32_t findEdge(int32_t a, int32_t b);
+  // A tet having abc as a face (face index in *face), -1 if none.
+  int32_t findFace(int32_t a, int32_t b, int32_t c, int* face = nullptr);
+  // The ring around edge xy given a live tet t containing it: ring vertices r_i and tets {x,y,r_i,r_i+1}
+  // with orient3d(x,y,r_i,r_i+1) > 0. False when a face around the edge is blocked (blocked(tet, face):
+  // the hull for recovery, every constrained face for the improvement stages), when the ring has more
+  // than maxTets tets, or when the adjacency around the edge is inconsistent.
+  template<class Blocked>
+  bool walkEdgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
+                    int maxTets, Blocked&& blocked) const;
+
+  // How a walk picks the first face it tries in each tet. It decides which tet a point on a shared face
+  // or edge lands in (and so the mesh), so each editor keeps its own.
+  enum class WalkOrder
+  {
+    Rotating, // faces 0, 1, 2, 3 first in turn; at most 4 n + 100 steps (recovery: MeshEditor)
+    Random    // a pseudo-random face seeded by the start tet; at most 4 n + 64 steps (TetEditor)
+  };
+  // Visibility walk from `start` to a tet whose closure contains p (exact orient3d); -1 if the walk leaves
+  // the mesh (p outside, or behind a boundary concavity) or does not converge.
+  int32_t walk(const double* p, int32_t start, WalkOrder order) const;
+
+  // Per tet slot marks: newStamp() gives a value no slot holds yet (resized on demand).
+  uint32_t newStamp();
+  void ensureStamp();
+  TetStamps tetStamp;
+
+protected:
+  // Records t as the tet of vertex v (the edits call it for every vertex of a new tet).
+  void mapVertex(int32_t v, int32_t t)
+  {
+    if (static_cast<size_t>(v) >= vertTet_.size())
+      vertTet_.resize(std::max(static_cast<size_t>(v) + 1, static_cast<size_t>(mesh.numVertices())), -1);
+    vertTet_[static_cast<size_t>(v)] = t;
+  }
+
+private:
+  std::vector<int32_t> vertTet_;
+  std::vector<int32_t> findScratch_;
+  StaleEntries stale_;
+};
+
+template<class Blocked>
+bool MeshNavigator::walkEdgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring,
+                                 std::vector<int32_t>& tets, int maxTets, Blocked&& blocked) const
+{
+  ring.clear();
+  tets.clear();
+  const int ix = mesh.localIndex(t, x), iy = mesh.localIndex(t, y);
+  if (ix < 0 || iy < 0)
+    return false;
+  int ia = -1, ib = -1;
+  for (int i = 0; i < 4; ++i)
+    if (i != ix && i != iy)
+      (ia < 0 ? ia : ib) = i;
+  // Parity of the permutation (ix, iy, ia, ib) of (0,1,2,3): an odd one flips the orientation.
+  const int perm[4] = { ix, iy, ia, ib };
+  int inv = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      inv += perm[i] > perm[j];
+  if (inv & 1)
+    std::swap(ia, ib);
+  const int32_t* v = mesh.vertices(t);
+  ring.push_back(v[ia]);
+  ring.push_back(v[ib]);
+  tets.push_back(t);
+  int32_t cur = t;
+  int32_t prevR = v[ia]; // the ring vertex whose opposite face leads on
+  while (true)
+  {
+    // Across the face of cur opposite prevR (it contains x, y and the last ring vertex).
+    const int f = mesh.localIndex(cur, prevR);
+    if (blocked(cur, f))
+      return false;
+    const int32_t next = mesh.neighbor(cur, f);
+    const int32_t last = ring.back();
+    if (next == t)
+      break;
+    if (next < 0 || mesh.localIndex(next, x) < 0 || mesh.localIndex(next, y) < 0)
+      return false;
+    const int32_t* w = mesh.vertices(next);
+    int32_t r = -1;
+    for (int i = 0; i < 4; ++i)
+      if (w[i] != x && w[i] != y && w[i] != last)
+        r = w[i];
+    if (r < 0 || static_cast<int>(tets.size()) >= maxTets)
+      return false;
+    tets.push_back(next);
+    if (r != ring.front()) // the closing tet (x, y, r_n-1, r_0) adds no vertex
+      ring.push_back(r);
+    prevR = last;
+    cur = next;
+  }
+  return ring.size() == tets.size() && ring.size() >= 3;
+}
+
+} // namespace volgrid
