@@ -22,14 +22,9 @@ def vtu(path):
     return [r.GetOutput()]
 
 
-def cgns(path):
-    """The zone's cells: every leaf block (boundary patches are not loaded)."""
-    r = vtkCGNSReader()
-    r.SetFileName(path)
-    r.UpdateInformation()
-    r.EnableAllBases()
-    r.Update()
-    it = r.GetOutput().NewTreeIterator()
+def leaves(tree):
+    """The leaf data sets of a multiblock reader's output."""
+    it = tree.NewTreeIterator()
     it.VisitOnlyLeavesOn()
     it.InitTraversal()
     grids = []
@@ -37,6 +32,16 @@ def cgns(path):
         grids.append(it.GetCurrentDataObject())
         it.GoToNextItem()
     return grids
+
+
+def cgns(path):
+    """The zone's cells: every leaf block (boundary patches are not loaded)."""
+    r = vtkCGNSReader()
+    r.SetFileName(path)
+    r.UpdateInformation()
+    r.EnableAllBases()
+    r.Update()
+    return leaves(r.GetOutput())
 
 
 def exodus(path):
@@ -47,14 +52,7 @@ def exodus(path):
     for k in range(r.GetNumberOfObjects(vtkExodusIIReader.ELEM_BLOCK)):
         r.SetObjectStatus(vtkExodusIIReader.ELEM_BLOCK, k, 1)
     r.Update()
-    it = r.GetOutput().NewTreeIterator()
-    it.VisitOnlyLeavesOn()
-    it.InitTraversal()
-    grids = []
-    while not it.IsDoneWithTraversal():
-        grids.append(it.GetCurrentDataObject())
-        it.GoToNextItem()
-    return grids
+    return leaves(r.GetOutput())
 
 
 def su2(path):
