@@ -165,6 +165,8 @@ Status QualityRounds::optimiseSplitFloor()
 // worst tet gets better).
 Status QualityRounds::withCollapseRerun()
 {
+  if (options.optimization.vertexRemoval && mesh.numTets() > kRerunMaxTets)
+    return withCollapsesLast();
   const bool removal = options.optimization.vertexRemoval;
   TetMesh startMesh;
   std::vector<int32_t> startRegion;
@@ -201,6 +203,27 @@ Status QualityRounds::withCollapseRerun()
     }
   }
   return Status::success();
+}
+
+// Above kRerunMaxTets a second run of the whole stage would cost as much as the first, for a few tets:
+// the collapses come after the first run instead, as optimisation passes over the tets below the target
+// (each collapse a strict improvement of its star), then the floor rounds again.
+Status QualityRounds::withCollapsesLast()
+{
+  Status s = optimiseSplitFloor();
+  if (!s.ok())
+    return s;
+  const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
+  if (!(worstSineDegrees(mesh, options.threads) < removalDegrees) ||
+      !hasUnlockedVertexBelow(mesh, fc_, clusterLock_, removalDegrees))
+    return Status::success();
+  one_.targetDegrees = options.optimization.targetDegrees;
+  one_.vertexRemoval = true;
+  s = optimise(3);
+  one_.vertexRemoval = false;
+  if (!s.ok())
+    return s;
+  return floorRounds();
 }
 
 // Small meshes (a few boundary triangles, few or no field points) often end as a tie with any
