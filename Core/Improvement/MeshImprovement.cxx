@@ -58,6 +58,9 @@ Status checkOptions(const ImprovementOptions& o)
                              " and maxPasses in " + option::passes.rangeText() + ".");
   return Status::success();
 }
+// The quality stage renumbers the mesh in space from this many tets on (about 7 MB of tet arrays).
+constexpr int32_t kReorderMinTets = 200000;
+
 // 1 for the vertices of live tets.
 std::vector<uint8_t> usedVertices(const TetMesh& mesh)
 {
@@ -166,9 +169,14 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       // The field points and the tets are scattered through memory by now: one renumbering in space
       // makes the sweeps and local edits below read mostly consecutive memory (SpatialReorder.h). The
       // vertices before the field points (input, boundary Steiner and cluster points) keep their numbers.
-      const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint);
-      renumberTetArray(renumbering, tetRegion, -1);
-      renumberVertexArray(renumbering, clusterLock, uint8_t{ 0 });
+      // Only for meshes too large for the caches: below, the arrays fit anyway and renumbering would
+      // only change which of several equal-quality choices the rounds make.
+      if (mesh.numTets() >= kReorderMinTets)
+      {
+        const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint);
+        renumberTetArray(renumbering, tetRegion, -1);
+        renumberVertexArray(renumbering, clusterLock, uint8_t{ 0 });
+      }
     }
     stats.secondsFieldPoints = since(t0);
   }
