@@ -31,8 +31,10 @@ public:
   Status run();
 
   // Up to maxPasses optimisation passes towards one_.targetDegrees: the first call of a series runs up
-  // to three passes, then one pass per call while a pass still pays.
-  Status optimise(int maxPasses);
+  // to three passes, then one pass per call while a pass still pays. below (optional): in, when not
+  // empty, the tets under the target in (quality, slot) order as a sweep would give them (no sweep then);
+  // out, the tets under the target after the passes, in the same order.
+  Status optimise(int maxPasses, std::vector<std::pair<double, int32_t>>* below = nullptr);
   Status floorRounds();
   Status optimiseSplitFloor();
   Status withCollapseRerun();
