@@ -50,6 +50,10 @@ struct OptimizationOptions
   bool flips = true;       // 2-3 flips
   bool edgeRemoval = true; // includes 3-2 flips
   int maxRing = 9;         // largest edge ring considered by edge removal
+  // From this many tets on, the smoothing step of a pass runs on all threads in colour classes
+  // (ColouredSmoothing.h: the same mesh at any thread count); below, one vertex after the other in vertex
+  // order, as small meshes always were (a different order gives a different, not a better, mesh).
+  int64_t parallelSmoothingMinTets = 200000;
   // Removal of unlocked vertices of the tets below vertexRemovalDegrees after the flips and moves of a
   // pass, by collapsing them onto a neighbour (see tryVertexCollapse); the removed vertex stays in
   // mesh.points, used by no tet (callers that write every point keep it off).
