@@ -25,26 +25,59 @@ std::vector<int32_t> vertexOrder(const TetMesh& mesh, int32_t firstVertex)
   return oldToNew;
 }
 
-// New tet slots: the live tets in Hilbert order of their centroids (ties by old slot), free slots -1.
-std::vector<int32_t> tetOrder(const TetMesh& mesh)
+// New tet slots: the live tets by the new number of their highest vertex (ties by old slot), free slots
+// -1. The vertices from firstVertex on are in Hilbert order and every tet but those spanned by earlier
+// vertices has its highest vertex among them, so the tets follow the curve too, at 8 bytes per tet of
+// scratch (centroids would cost 24).
+std::vector<int32_t> tetOrder(const TetMesh& mesh, const std::vector<int32_t>& vertexOldToNew)
 {
-  std::vector<double> centroids;
-  std::vector<int32_t> live, ids;
+  std::vector<std::pair<int32_t, int32_t>> keyed; // (highest new vertex, old slot)
+  keyed.reserve(static_cast<size_t>(mesh.numTets()));
   mesh.forEachTet(
     [&](int32_t t)
     {
       const int32_t* v = mesh.vertices(t);
-      for (int k = 0; k < 3; ++k)
-        centroids.push_back((mesh.point(v[0])[k] + mesh.point(v[1])[k] + mesh.point(v[2])[k] + mesh.point(v[3])[k]) /
-                            4);
-      ids.push_back(static_cast<int32_t>(live.size()));
-      live.push_back(t);
+      keyed.emplace_back(std::max(std::max(vertexOldToNew[v[0]], vertexOldToNew[v[1]]),
+                                  std::max(vertexOldToNew[v[2]], vertexOldToNew[v[3]])),
+                         t);
     });
-  hilbertSort(centroids.data(), ids); // stable: ties keep the old order
+  std::sort(keyed.begin(), keyed.end());
   std::vector<int32_t> oldToNew(static_cast<size_t>(mesh.tetCapacity()), -1);
-  for (size_t k = 0; k < ids.size(); ++k)
-    oldToNew[static_cast<size_t>(live[static_cast<size_t>(ids[k])])] = static_cast<int32_t>(k);
+  for (size_t k = 0; k < keyed.size(); ++k)
+    oldToNew[static_cast<size_t>(keyed[k].second)] = static_cast<int32_t>(k);
   return oldToNew;
+}
+
+// Applies the maps one array at a time (the extra memory is one array, not a second mesh).
+void permute(TetMesh& mesh, const SpatialRenumbering& r)
+{
+  std::vector<double> points(mesh.points.size());
+  for (size_t v = 0; v < r.vertexOldToNew.size(); ++v)
+    std::copy_n(mesh.points.data() + 3 * v, 3, points.data() + 3 * static_cast<size_t>(r.vertexOldToNew[v]));
+  mesh.points.swap(points);
+  std::vector<double>().swap(points);
+  const size_t live = static_cast<size_t>(mesh.numTets()), slots = static_cast<size_t>(mesh.tetCapacity());
+  std::vector<int32_t> words(4 * live);
+  for (size_t t = 0; t < slots; ++t)
+    if (r.tetOldToNew[t] >= 0)
+      for (int i = 0; i < 4; ++i)
+        words[4 * static_cast<size_t>(r.tetOldToNew[t]) + i] = r.vertexOldToNew[mesh.tetVertices[4 * t + i]];
+  mesh.tetVertices.swap(words);
+  words.assign(4 * live, TetMesh::kNoNeighbor);
+  for (size_t t = 0; t < slots; ++t)
+    if (r.tetOldToNew[t] >= 0)
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t c = mesh.tetNeighbors[4 * t + i];
+        if (c >= 0)
+          words[4 * static_cast<size_t>(r.tetOldToNew[t]) + i] = TetMesh::encode(r.tetOldToNew[c >> 2], c & 3);
+      }
+  mesh.tetNeighbors.swap(words);
+  std::vector<uint8_t> flags(live);
+  for (size_t t = 0; t < slots; ++t)
+    if (r.tetOldToNew[t] >= 0)
+      flags[static_cast<size_t>(r.tetOldToNew[t])] = mesh.tetFlags[t];
+  mesh.tetFlags.swap(flags);
 }
 } // namespace
 
@@ -54,31 +87,9 @@ SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex)
   if (mesh.numGhostTets() > 0 || mesh.numTets() == 0)
     return r;
   r.vertexOldToNew = vertexOrder(mesh, firstVertex);
-  r.tetOldToNew = tetOrder(mesh);
-  std::vector<double> points(mesh.points.size());
-  for (size_t v = 0; v < r.vertexOldToNew.size(); ++v)
-    std::copy_n(mesh.points.data() + 3 * v, 3, points.data() + 3 * static_cast<size_t>(r.vertexOldToNew[v]));
-  TetMesh out;
-  out.points.swap(points);
-  const int32_t live = mesh.numTets();
-  out.appendTets(live);
-  for (int32_t t = 0; t < mesh.tetCapacity(); ++t)
-  {
-    const int32_t n = r.tetOldToNew[static_cast<size_t>(t)];
-    if (n < 0)
-      continue;
-    const int32_t* v = mesh.vertices(t);
-    out.setTetVertices(n, r.vertexOldToNew[v[0]], r.vertexOldToNew[v[1]], r.vertexOldToNew[v[2]],
-                       r.vertexOldToNew[v[3]]);
-    for (int i = 0; i < 4; ++i)
-    {
-      const int32_t c = mesh.neighborCode(t, i);
-      out.tetNeighbors[4 * static_cast<size_t>(n) + i] =
-        c < 0 ? TetMesh::kNoNeighbor : TetMesh::encode(r.tetOldToNew[static_cast<size_t>(c >> 2)], c & 3);
-    }
-    out.tetFlags[static_cast<size_t>(n)] = mesh.tetFlags[static_cast<size_t>(t)];
-  }
-  mesh = std::move(out);
+  r.tetOldToNew = tetOrder(mesh, r.vertexOldToNew);
+  permute(mesh, r);
+  mesh.restoreBookkeeping({ -1, 0, 0 }); // compact: no free slot, no ghost
   return r;
 }
 

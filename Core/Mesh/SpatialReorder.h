@@ -8,7 +8,9 @@
 //
 // The vertices from `firstVertex` on are renumbered in Hilbert order of their points (those before keep
 // their numbers: input points, boundary Steiner points, anything the caller refers to by number). The live
-// tets are renumbered in Hilbert order of their centroids (free slots dropped, so the mesh is compact).
+// tets are renumbered by their highest new vertex number, so they follow the curve too (free slots
+// dropped, so the mesh is compact). The arrays are rewritten one at a time: the extra memory at the peak
+// is one array, not a second mesh.
 // The mesh is the same (same points, same tets with the same vertex order, same adjacency): only the
 // numbers change. Deterministic (no randomness, ties by old number).
 #pragma once
