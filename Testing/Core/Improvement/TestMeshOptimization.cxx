@@ -73,6 +73,21 @@ MeshCheckOptions noDelaunay()
   o.delaunay = false;
   return o;
 }
+
+// optimizeMesh, then the checks every optimisation must pass: a valid mesh with its boundary faces and
+// their coordinates unchanged.
+OptimizationReport optimiseAndCheck(TetMesh& mesh, const OptimizationOptions& oo)
+{
+  const auto faces0 = hullFaces(mesh);
+  const auto xyz0 = boundaryCoordinates(mesh, faces0);
+  OptimizationReport rep;
+  EXPECT_TRUE(optimizeMesh(mesh, nullptr, nullptr, nullptr, oo, nullptr, &rep).ok());
+  const MeshCheckReport check = checkMesh(mesh, noDelaunay());
+  EXPECT_TRUE(check.valid) << check.summary();
+  EXPECT_EQ(hullFaces(mesh), faces0);
+  EXPECT_EQ(boundaryCoordinates(mesh, faces0), xyz0);
+  return rep;
+}
 } // namespace
 
 TEST(MeshOptimization, ImprovesMinDihedralAndKeepsBoundary)
@@ -81,16 +96,8 @@ TEST(MeshOptimization, ImprovesMinDihedralAndKeepsBoundary)
   {
     TetMesh mesh;
     fieldMesh(shape, 0.15, mesh);
-    const auto faces0 = hullFaces(mesh);
-    const auto xyz0 = boundaryCoordinates(mesh, faces0);
     const int32_t nv = mesh.numVertices();
-    OptimizationOptions oo;
-    OptimizationReport rep;
-    ASSERT_TRUE(optimizeMesh(mesh, nullptr, nullptr, nullptr, oo, nullptr, &rep).ok());
-    const MeshCheckReport check = checkMesh(mesh, noDelaunay());
-    EXPECT_TRUE(check.valid) << check.summary();
-    EXPECT_EQ(hullFaces(mesh), faces0);
-    EXPECT_EQ(boundaryCoordinates(mesh, faces0), xyz0);
+    const OptimizationReport rep = optimiseAndCheck(mesh, OptimizationOptions());
     EXPECT_EQ(mesh.numVertices(), nv);
     EXPECT_LT(rep.before.minDihedral, 10.0); // the raw mesh has slivers
     EXPECT_GT(rep.after.minDihedral, rep.before.minDihedral);
@@ -331,8 +338,6 @@ TEST(MeshOptimization, SmoothingInColourClassesGivesTheSameMeshOnAnyThreadCount)
 {
   TetMesh start;
   fieldMesh(EnclosureShape::Sphere, 0.12, start);
-  const auto faces0 = hullFaces(start);
-  const auto xyz0 = boundaryCoordinates(start, faces0);
   OptimizationOptions oo;
   oo.targetDegrees = 35; // many tets below: neighbouring vertices move in the same pass
   OptimizationReport sequentialReport;
@@ -344,12 +349,7 @@ TEST(MeshOptimization, SmoothingInColourClassesGivesTheSameMeshOnAnyThreadCount)
   {
     oo.threads = threads;
     TetMesh mesh = start;
-    OptimizationReport rep;
-    ASSERT_TRUE(optimizeMesh(mesh, nullptr, nullptr, nullptr, oo, nullptr, &rep).ok());
-    const MeshCheckReport check = checkMesh(mesh, noDelaunay());
-    EXPECT_TRUE(check.valid) << check.summary();
-    EXPECT_EQ(hullFaces(mesh), faces0);
-    EXPECT_EQ(boundaryCoordinates(mesh, faces0), xyz0);
+    const OptimizationReport rep = optimiseAndCheck(mesh, oo);
     EXPECT_GT(rep.smoothMoves, 0);
     EXPECT_GE(rep.after.minDihedral, 15.0);
     EXPECT_GE(rep.after.minDihedral, sequentialReport.after.minDihedral - 3.0);
