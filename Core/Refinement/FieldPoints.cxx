@@ -1,5 +1,7 @@
 #include "FieldPoints.h"
 
+#include "SpatialSort.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -27,6 +29,31 @@ inline double volume(const double* a, const double* b, const double* c, const do
 double secondsSince(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+// From this many tets to examine, a pass visits them along the Hilbert curve of their centroids instead
+// of in slot order: consecutive insertions then work in the same part of the mesh, whose tets are still
+// in the caches (slot order jumps across the domain once insertions have recycled slots). Below, slot
+// order, as small meshes always were.
+constexpr int64_t kSpatialPassMinTets = 200000;
+
+void sortAlongHilbertCurve(const TetMesh& mesh, std::vector<int32_t>& tets)
+{
+  std::vector<double> centroids;
+  centroids.reserve(3 * tets.size());
+  for (int32_t t : tets)
+  {
+    const int32_t* v = mesh.vertices(t);
+    for (int k = 0; k < 3; ++k)
+      centroids.push_back((mesh.point(v[0])[k] + mesh.point(v[1])[k] + mesh.point(v[2])[k] + mesh.point(v[3])[k]) / 4);
+  }
+  std::vector<int32_t> order(tets.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    order[i] = static_cast<int32_t>(i);
+  hilbertSort(centroids.data(), order);
+  std::vector<int32_t> sorted(tets.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    sorted[i] = tets[static_cast<size_t>(order[i])];
+  tets.swap(sorted);
 }
 } // namespace
 
@@ -58,6 +85,8 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
         if (birth[t] == pass - 1)
           todo.push_back(t);
       });
+    if (static_cast<int64_t>(todo.size()) >= kSpatialPassMinTets)
+      sortAlongHilbertCurve(mesh, todo);
     int64_t insertedThisPass = 0;
     size_t k = 0;
     for (int32_t t : todo)
