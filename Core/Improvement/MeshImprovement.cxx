@@ -1,4 +1,5 @@
 #include "MeshImprovement.h"
+#include "LargeMesh.h"
 #include "SpatialReorder.h"
 
 #include "DomainSizing.h"
@@ -58,9 +59,6 @@ Status checkOptions(const ImprovementOptions& o)
                              " and maxPasses in " + option::passes.rangeText() + ".");
   return Status::success();
 }
-// The quality stage renumbers the mesh in space from this many tets on (about 7 MB of tet arrays).
-constexpr int32_t kReorderMinTets = 200000;
-
 // 1 for the vertices of live tets.
 std::vector<uint8_t> usedVertices(const TetMesh& mesh)
 {
@@ -169,9 +167,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       // The field points and the tets are scattered through memory by now: one renumbering in space
       // makes the sweeps and local edits below read mostly consecutive memory (SpatialReorder.h). The
       // vertices before the field points (input, boundary Steiner and cluster points) keep their numbers.
-      // Only for meshes too large for the caches: below, the arrays fit anyway and renumbering would
-      // only change which of several equal-quality choices the rounds make.
-      if (mesh.numTets() >= kReorderMinTets)
+      // Only for meshes too large for the caches (LargeMesh.h).
+      if (mesh.numTets() >= kLargeMeshTets)
       {
         const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint);
         renumberTetArray(renumbering, tetRegion, -1);

@@ -421,6 +421,8 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     queue.clear();
     for (const auto& b : bad)
       queue.push_back(b.second);
+    if (mesh.numTets() >= options.largeMeshTets)
+      std::sort(queue.begin(), queue.end());
     for (size_t k = 0; k < queue.size(); ++k)
     {
       const int32_t t = queue[k];
@@ -453,7 +455,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
         touched.insert(touched.end(), star.begin(), star.end());
         changed(star);
       };
-      if (mesh.numTets() >= options.parallelSmoothingMinTets)
+      if (mesh.numTets() >= options.largeMeshTets)
         smoothInColourClasses(editor, verts, lock, unmoved, options, moved);
       else
         for (int32_t v : verts)

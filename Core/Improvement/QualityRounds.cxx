@@ -2,6 +2,7 @@
 
 #include "BadTetSplitting.h"
 #include "InsertionImprovement.h"
+#include "LargeMesh.h"
 #include "MeshScan.h"
 
 #include <algorithm>
@@ -207,7 +208,7 @@ Status QualityRounds::optimiseSplitFloor()
 // worst tet gets better).
 Status QualityRounds::withCollapseRerun()
 {
-  if (options.optimization.vertexRemoval && mesh.numTets() > kRerunMaxTets)
+  if (options.optimization.vertexRemoval && mesh.numTets() >= kLargeMeshTets)
     return withCollapsesLast();
   const bool removal = options.optimization.vertexRemoval;
   TetMesh startMesh;
@@ -247,7 +248,7 @@ Status QualityRounds::withCollapseRerun()
   return Status::success();
 }
 
-// Above kRerunMaxTets a second run of the whole stage would cost as much as the first, for a few tets:
+// From kLargeMeshTets (LargeMesh.h) a second run of the whole stage would cost as much as the first, for a few tets:
 // the collapses come after the first run instead, as optimisation passes over the tets below the target
 // (each collapse a strict improvement of its star), then the floor rounds again.
 Status QualityRounds::withCollapsesLast()

@@ -3,8 +3,8 @@
 //   optimise            flips, edge removal, smoothing (MeshOptimization.h) while a pass pays
 //   optimiseSplitFloor  optimisation, splitting of what it cannot fix (BadTetSplitting.h), floor rounds
 //   withCollapseRerun   optimiseSplitFloor, and again from the same start with vertex collapses when the
-//                       worst tet stays low; the better mesh is kept (up to kRerunMaxTets tets; above,
-//                       withCollapsesLast: the collapses as passes after the first run)
+//                       worst tet stays low; the better mesh is kept (below kLargeMeshTets tets, LargeMesh.h; from
+//                       there on, withCollapsesLast: the collapses as passes after the first run)
 //   speculativeRounds   small meshes: a point for the worst tet, kept only when the worst tet improves
 //   insertionRounds     vertex insertion for the worst tets (InsertionImprovement.h)
 // run() is all of them in that order. Every round changes only unconstrained faces and moves no vertex of
@@ -39,9 +39,6 @@ public:
   Status optimiseSplitFloor();
   Status withCollapseRerun();
   Status withCollapsesLast();
-
-  // Above this many tets the quality stage is not run a second time from a copy (withCollapseRerun).
-  static constexpr int64_t kRerunMaxTets = 250000;
   Status speculativeRounds();
   void insertionRounds();
 

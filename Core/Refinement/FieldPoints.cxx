@@ -1,5 +1,6 @@
 #include "FieldPoints.h"
 
+#include "LargeMesh.h"
 #include "SpatialSort.h"
 
 #include <algorithm>
@@ -30,12 +31,6 @@ double secondsSince(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-// From this many tets to examine, a pass visits them along the Hilbert curve of their centroids instead
-// of in slot order: consecutive insertions then work in the same part of the mesh, whose tets are still
-// in the caches (slot order jumps across the domain once insertions have recycled slots). Below, slot
-// order, as small meshes always were.
-constexpr int64_t kSpatialPassMinTets = 200000;
-
 void sortAlongHilbertCurve(const TetMesh& mesh, std::vector<int32_t>& tets)
 {
   std::vector<double> centroids;
@@ -85,7 +80,9 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
         if (birth[t] == pass - 1)
           todo.push_back(t);
       });
-    if (static_cast<int64_t>(todo.size()) >= kSpatialPassMinTets)
+    // Many tets to examine (LargeMesh.h): along the Hilbert curve, so that consecutive insertions work in the
+    // same part of the mesh, whose tets are still in the caches (slot order jumps across the domain).
+    if (static_cast<int64_t>(todo.size()) >= kLargeMeshTets)
       sortAlongHilbertCurve(mesh, todo);
     int64_t insertedThisPass = 0;
     size_t k = 0;

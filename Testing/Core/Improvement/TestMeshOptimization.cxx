@@ -331,7 +331,7 @@ TEST(MeshOptimization, VertexCollapseRemovesAnInteriorPointSqueezedAgainstAFace)
   EXPECT_FALSE(tryVertexCollapse(editor, p, nullptr));           // in no tet any more
 }
 
-// Large meshes smooth in colour classes on all threads (parallelSmoothingMinTets, forced here on a small
+// Large meshes smooth in colour classes on all threads (largeMeshTets, forced here on a small
 // mesh): the result is the same mesh at 1, 2 and 8 threads, valid, with the boundary untouched, and as
 // good as the one-by-one order's.
 TEST(MeshOptimization, SmoothingInColourClassesGivesTheSameMeshOnAnyThreadCount)
@@ -343,7 +343,7 @@ TEST(MeshOptimization, SmoothingInColourClassesGivesTheSameMeshOnAnyThreadCount)
   OptimizationReport sequentialReport;
   TetMesh sequential = start;
   ASSERT_TRUE(optimizeMesh(sequential, nullptr, nullptr, nullptr, oo, nullptr, &sequentialReport).ok());
-  oo.parallelSmoothingMinTets = 0;
+  oo.largeMeshTets = 0;
   std::vector<TetMesh> results;
   for (int threads : { 1, 2, 8 })
   {
