@@ -61,7 +61,8 @@ double triangleNormal(const double* a, const double* b, const double* c, double 
 } // namespace
 
 int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels, double degrees,
-                     int64_t maxPoints, bool speculative, size_t skip)
+                     int64_t maxPoints, bool speculative, size_t skip,
+                     const std::vector<std::pair<double, int32_t>>* below)
 {
   TetEditor editor(mesh, constraints, labels);
   editor.rebuildVertexMap();
@@ -73,14 +74,19 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     return tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
   };
   std::vector<std::pair<double, int32_t>> bad;
-  mesh.forEachTet(
-    [&](int32_t t)
-    {
-      const double q = quality(t);
-      if (q < qT)
-        bad.emplace_back(q, t);
-    });
-  std::sort(bad.begin(), bad.end());
+  if (below)
+    bad = *below;
+  else
+  {
+    mesh.forEachTet(
+      [&](int32_t t)
+      {
+        const double q = quality(t);
+        if (q < qT)
+          bad.emplace_back(q, t);
+      });
+    std::sort(bad.begin(), bad.end());
+  }
   bad.erase(bad.begin(), bad.begin() + static_cast<std::ptrdiff_t>(std::min(skip, bad.size())));
   int64_t inserted = 0;
   std::vector<std::array<double, 3>> cand;

@@ -20,14 +20,18 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace volgrid
 {
 
 // Tets below `degrees` (of min(theta_min, 180 - theta_max)), worst first after skipping `skip` of them;
-// at most maxPoints points. labels (per tet slot, optional) follow the new tets.
+// at most maxPoints points. labels (per tet slot, optional) follow the new tets. below (optional): the tets
+// under `degrees` in (quality, slot) order, exactly what the sweep of the mesh would collect (e.g. an
+// optimisation worklist), so that no sweep is needed.
 int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels, double degrees,
-                     int64_t maxPoints, bool speculative = false, size_t skip = 0);
+                     int64_t maxPoints, bool speculative = false, size_t skip = 0,
+                     const std::vector<std::pair<double, int32_t>>* below = nullptr);
 
 } // namespace volgrid

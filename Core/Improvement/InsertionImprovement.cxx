@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 namespace volgrid
@@ -42,6 +43,79 @@ double degreesToQuality(double degrees)
 {
   return std::sin(std::min(90.0, degrees) * 3.14159265358979323846 / 180.0);
 }
+
+// One sweep per round instead of four: every tet under `limit` (sine quality), worst first. A tet outside
+// has every dihedral angle in [asin(limit), 180 - asin(limit)], so the mesh's worst quality, the tets
+// under a smaller limit, its smallest angle and its dihedral range follow exactly from these tets whenever
+// the extreme lies among them; otherwise (rare: a mesh with no tet that bad) a sweep as before.
+class LowTets
+{
+public:
+  LowTets(const TetMesh& mesh, double limit, int threads)
+    : mesh_(mesh)
+    , limit_(limit)
+    , threads_(threads)
+  {
+    collectSineBelow(mesh, limit, threads, tets_);
+    std::sort(tets_.begin(), tets_.end());
+  }
+
+  double worstQuality() const { return tets_.empty() ? minSineQuality(mesh_, threads_) : tets_.front().first; }
+
+  // The tets under q, in (quality, slot) order.
+  void below(double q, std::vector<std::pair<double, int32_t>>& out) const
+  {
+    if (q > limit_)
+    {
+      collectSineBelow(mesh_, q, threads_, out);
+      std::sort(out.begin(), out.end());
+      return;
+    }
+    out.clear();
+    for (const auto& t : tets_)
+      if (t.first < q)
+        out.push_back(t);
+  }
+
+  // The mesh's smallest dihedral angle (of the six angles of each tet).
+  double smallestAngle() const
+  {
+    double m = 180;
+    for (const auto& t : tets_)
+      m = std::min(m, minDihedral(mesh_, t.second));
+    if (m < boundDegrees())
+      return m;
+    mesh_.forEachTet([&](int32_t t) { m = std::min(m, minDihedral(mesh_, t)); });
+    return m;
+  }
+
+  // dihedralRange() of the mesh.
+  std::pair<double, double> range() const
+  {
+    double lo = 180, hi = 0;
+    for (const auto& t : tets_)
+    {
+      const int32_t* v = mesh_.vertices(t.second);
+      double a, b;
+      quality::tetDihedralExtremes(mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]), a, b);
+      lo = std::min(lo, a);
+      hi = std::max(hi, b);
+    }
+    if (lo < boundDegrees() && hi > 180 - boundDegrees())
+      return { lo, hi };
+    return dihedralRange(mesh_, threads_);
+  }
+
+private:
+  // Angles outside [bound, 180 - bound] occur only among the collected tets (the margin is far above the
+  // rounding difference between the angle and the sine measures).
+  double boundDegrees() const { return std::asin(std::min(1.0, limit_)) * 180 / 3.14159265358979323846 - 1e-6; }
+
+  const TetMesh& mesh_;
+  double limit_;
+  int threads_;
+  std::vector<std::pair<double, int32_t>> tets_;
+};
 
 // The local frame of a face: centroid, two in-plane axes, the unit normal towards `side`, and the scale
 // sqrt(area) (a needle triangle gets steps fine enough for the thin wedge over it).
@@ -440,34 +514,36 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   double previousWorst = -3;
   int stale = 0;                               // rounds in a row after which the mesh's worst tet was no better
   std::pair<double, double> lastRange{ 0, 0 }; // the dihedral range after the previous round
+  // The tets a round looks at lie within aboveWorst of the worst, which is rarely above the plateau.
+  const double lowLimit = degreesToQuality(options.plateauDegrees + 2 * options.aboveWorst);
+  std::unique_ptr<LowTets> low; // the sweep of the mesh as it is now
   for (int round = 0; round < options.rounds; ++round)
   {
     // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound (a tet tried in
     // vain is tried again: the points kept since may have made room). Rounds go on while points are kept and the mesh's
     // worst tet improves at least every second round (two equal worst tets need a round each when the first point
     // pushes into the second's).
-    const double q0 = minSineQuality(mesh, options.threads);
+    if (!low)
+      low = std::make_unique<LowTets>(mesh, lowLimit, options.threads);
+    const double q0 = low->worstQuality();
     stale = q0 > previousWorst ? 0 : stale + 1;
     if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60 || stale >= 2)
       break;
     previousWorst = q0;
     const int64_t keptBefore = kept;
     const double qLimit = degreesToQuality(sineQualityToDegrees(q0) + options.aboveWorst);
-    collectSineBelow(mesh, qLimit, options.threads, worst);
+    low->below(qLimit, worst);
     // A plateau of many tets near a worst tet already at the optimisation's target gains little per point.
     if (sineQualityToDegrees(q0) >= options.plateauDegrees &&
         static_cast<int64_t>(worst.size()) > std::max<int64_t>(options.plateauTets, mesh.numTets() / 200))
       break;
     if (floor < 0)
-    {
-      floor = 180;
-      mesh.forEachTet([&](int32_t t) { floor = std::min(floor, minDihedral(mesh, t)); });
-    }
+      floor = low->smallestAngle();
     // A round must raise the smallest angle or leave the largest alone: where the worst tet is forced by
     // the surface (a wedge's 1 degree edge), new points replace it with tets that the sine quality ranks
     // better but whose largest angle reaches 178 degrees, for nothing.
     // (The mesh has not changed since the last round's rangeAfter, when there was one.)
-    const std::pair<double, double> rangeBefore = round > 0 ? lastRange : dihedralRange(mesh, options.threads);
+    const std::pair<double, double> rangeBefore = round > 0 ? lastRange : low->range();
     journal.clear();
     const EditJournal::Mark before = journal.mark(mesh, labels);
     std::sort(worst.begin(), worst.end());
@@ -500,7 +576,8 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     }
     if (kept == keptBefore)
       break;
-    const std::pair<double, double> rangeAfter = dihedralRange(mesh, options.threads);
+    low = std::make_unique<LowTets>(mesh, lowLimit, options.threads); // the next round's sweep as well
+    const std::pair<double, double> rangeAfter = low->range();
     lastRange = rangeAfter;
     if (!(rangeAfter.first > rangeBefore.first) && rangeAfter.second > rangeBefore.second)
     {

@@ -1,4 +1,6 @@
 #include "MeshImprovement.h"
+#include "LargeMesh.h"
+#include "SpatialReorder.h"
 
 #include "DomainSizing.h"
 #include "QualityRounds.h"
@@ -156,11 +158,22 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     }
     if (options.fieldPoints)
     {
+      const int32_t firstFieldPoint = mesh.numVertices();
       s = insertFieldPoints(mesh, fast, options.fieldPointOptions, &fc, &tetRegion, nullptr, progress, &fr);
       if (!s.ok())
         return s;
       stats.fieldPoints = fr.inserted;
       stats.fieldPasses = fr.passes;
+      // The field points and the tets are scattered through memory by now: one renumbering in space
+      // makes the sweeps and local edits below read mostly consecutive memory (SpatialReorder.h). The
+      // vertices before the field points (input, boundary Steiner and cluster points) keep their numbers.
+      // Only for meshes too large for the caches (LargeMesh.h).
+      if (mesh.numTets() >= kLargeMeshTets)
+      {
+        const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint);
+        renumberTetArray(renumbering, tetRegion, -1);
+        renumberVertexArray(renumbering, clusterLock, uint8_t{ 0 });
+      }
     }
     stats.secondsFieldPoints = since(t0);
   }

@@ -1,4 +1,5 @@
 #include "MeshOptimization.h"
+#include "ColouredSmoothing.h"
 #include "MeshScan.h"
 #include "ParallelFor.h"
 
@@ -275,6 +276,36 @@ double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double,
   return m < targetDegrees - 1e-6 ? m : summarizeDihedrals(mesh, threads).minDihedral;
 }
 
+// The smoothing step of a pass on all threads (ColouredSmoothing.h): the unlocked vertices of `verts`
+// not known to be unmoved, then those that a move of the first sweep touched (as the one-by-one order
+// retries a vertex after a neighbour moved). moved(v) is called for each move, in vertex order.
+template<typename Moved>
+void smoothInColourClasses(TetEditor& editor, const std::vector<int32_t>& verts, const std::vector<uint8_t>& lock,
+                           std::vector<uint8_t>& unmoved, const OptimizationOptions& options, Moved&& moved)
+{
+  std::vector<int32_t> sweep, skipped;
+  std::vector<SmoothMove> moves;
+  for (int32_t v : verts)
+    if (!lock[v])
+      (unmoved[v] ? skipped : sweep).push_back(v);
+  for (int round = 0; round < 2; ++round)
+  {
+    if (round == 1)
+    {
+      sweep.clear();
+      for (int32_t v : skipped)
+        if (!unmoved[v])
+          sweep.push_back(v);
+    }
+    smoothColoured(editor, sweep, options.smoothingOptions, options.threads, moves);
+    for (size_t i = 0; i < sweep.size(); ++i)
+      unmoved[sweep[i]] = moves[i] == SmoothMove::None;
+    for (size_t i = 0; i < sweep.size(); ++i)
+      if (moves[i] != SmoothMove::None)
+        moved(sweep[i]);
+  }
+}
+
 // Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
 // first strict improvement is kept (created receives the new tets). True when one was made.
 bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options, OptimizationReport& report,
@@ -390,6 +421,8 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     queue.clear();
     for (const auto& b : bad)
       queue.push_back(b.second);
+    if (mesh.numTets() >= options.largeMeshTets)
+      std::sort(queue.begin(), queue.end());
     for (size_t k = 0; k < queue.size(); ++k)
     {
       const int32_t t = queue[k];
@@ -414,21 +447,26 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
           verts.push_back(mesh.vertex(w.second, i));
       std::sort(verts.begin(), verts.end());
       verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-      for (int32_t v : verts)
+      auto moved = [&](int32_t v)
       {
-        if (lock[v] || unmoved[v])
-          continue;
-        if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
-        {
-          unmoved[v] = 1;
-          continue;
-        }
         ++report.smoothMoves;
         ++changes;
         editor.star(v, star);
         touched.insert(touched.end(), star.begin(), star.end());
         changed(star);
-      }
+      };
+      if (mesh.numTets() >= options.largeMeshTets)
+        smoothInColourClasses(editor, verts, lock, unmoved, options, moved);
+      else
+        for (int32_t v : verts)
+        {
+          if (lock[v] || unmoved[v])
+            continue;
+          if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
+            unmoved[v] = 1;
+          else
+            moved(v);
+        }
     }
     // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
     // target (worst first), e.g. recovery's Steiner points pinned against nearly coplanar boundary faces.

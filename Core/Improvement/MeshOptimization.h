@@ -28,6 +28,8 @@
 // flag bits are carried to the new tets (a flip never mixes regions: interface faces are constrained).
 #pragma once
 
+#include "LargeMesh.h"
+
 #include "MeshSmoothing.h"
 #include "OptionTable.h"
 #include "Progress.h"
@@ -50,6 +52,12 @@ struct OptimizationOptions
   bool flips = true;       // 2-3 flips
   bool edgeRemoval = true; // includes 3-2 flips
   int maxRing = 9;         // largest edge ring considered by edge removal
+  // From this many tets on (LargeMesh.h), a pass works in memory order: the flips visit
+  // the tets below the target by slot (the quality stage renumbers large meshes in space, so slot order
+  // follows space) instead of worst first, and the smoothing step runs on all threads in colour classes
+  // (ColouredSmoothing.h: the same mesh at any thread count). Below, worst first and one vertex after the
+  // other, as small meshes always were (another order gives a different, not a better, mesh).
+  int64_t largeMeshTets = kLargeMeshTets;
   // Removal of unlocked vertices of the tets below vertexRemovalDegrees after the flips and moves of a
   // pass, by collapsing them onto a neighbour (see tryVertexCollapse); the removed vertex stays in
   // mesh.points, used by no tet (callers that write every point keep it off).

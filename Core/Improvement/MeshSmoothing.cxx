@@ -98,27 +98,10 @@ void qualityGradient(TetMesh& m, int32_t t, int32_t v, double eps, double g[3])
     g[k] = (qp - qm) / (2 * eps);
   }
 }
-} // namespace
 
-SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& options)
+// The move of v given its star in s.star (qualities in s.q, worst q0) and its neighbours in s.nbrs.
+SmoothMove moveInStar(TetMesh& m, int32_t v, double q0, Scratch& s, const SmoothingOptions& options)
 {
-  static thread_local Scratch s;
-  TetMesh& m = editor.mesh;
-  editor.star(v, s.star);
-  if (s.star.empty())
-    return SmoothMove::None;
-  s.q.resize(s.star.size());
-  double q0 = 2.0;
-  for (size_t i = 0; i < s.star.size(); ++i)
-  {
-    s.q[i] = tetQ(m, s.star[i]);
-    q0 = std::min(q0, s.q[i]);
-  }
-  if (sineQualityToDegrees(q0) >= options.belowDegrees)
-    return SmoothMove::None;
-  editor.neighbors(v, s.star, s.nbrs);
-  if (s.nbrs.empty())
-    return SmoothMove::None;
   const double home[3] = { m.point(v)[0], m.point(v)[1], m.point(v)[2] };
   // 1. Laplacian.
   double c[3] = { 0, 0, 0 };
@@ -212,6 +195,49 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
     moved = true;
   }
   return moved ? SmoothMove::Optimized : SmoothMove::None;
+}
+
+// The star's qualities into s.q; returns their minimum.
+double rateStar(const TetMesh& m, Scratch& s)
+{
+  s.q.resize(s.star.size());
+  double q0 = 2.0;
+  for (size_t i = 0; i < s.star.size(); ++i)
+  {
+    s.q[i] = tetQ(m, s.star[i]);
+    q0 = std::min(q0, s.q[i]);
+  }
+  return q0;
+}
+} // namespace
+
+SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& options)
+{
+  static thread_local Scratch s;
+  editor.star(v, s.star);
+  if (s.star.empty())
+    return SmoothMove::None;
+  const double q0 = rateStar(editor.mesh, s);
+  if (sineQualityToDegrees(q0) >= options.belowDegrees)
+    return SmoothMove::None;
+  editor.neighbors(v, s.star, s.nbrs);
+  if (s.nbrs.empty())
+    return SmoothMove::None;
+  return moveInStar(editor.mesh, v, q0, s, options);
+}
+
+SmoothMove smoothVertexInStar(TetMesh& mesh, int32_t v, const int32_t* star, size_t starSize, const int32_t* nbrs,
+                              size_t nbrCount, const SmoothingOptions& options)
+{
+  static thread_local Scratch s;
+  if (starSize == 0 || nbrCount == 0)
+    return SmoothMove::None;
+  s.star.assign(star, star + starSize);
+  const double q0 = rateStar(mesh, s);
+  if (sineQualityToDegrees(q0) >= options.belowDegrees)
+    return SmoothMove::None;
+  s.nbrs.assign(nbrs, nbrs + nbrCount);
+  return moveInStar(mesh, v, q0, s, options);
 }
 
 Status smoothMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,

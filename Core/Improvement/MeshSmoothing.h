@@ -57,6 +57,12 @@ enum class SmoothMove
 // One vertex (the editor's vertex map must be current). The caller checks that v is not locked.
 SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& options);
 
+// The same move, with v's star (the tets holding v) and neighbours (the vertices sharing an edge with v)
+// given by the caller. It writes only v's coordinates and reads those of its star, so vertices that share
+// no tet can move at the same time on different threads (ColouredSmoothing.h).
+SmoothMove smoothVertexInStar(TetMesh& mesh, int32_t v, const int32_t* star, size_t starSize, const int32_t* nbrs,
+                              size_t nbrCount, const SmoothingOptions& options);
+
 // Smooth every unlocked vertex. locked: optional extra per-vertex locks (non-zero = keep), OR-ed with the
 // vertices of constrained faces. Errors: InvalidOption (ghost tets present), Cancelled.
 Status smoothMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,

@@ -2,6 +2,7 @@
 
 #include "BadTetSplitting.h"
 #include "InsertionImprovement.h"
+#include "LargeMesh.h"
 #include "MeshScan.h"
 
 #include <algorithm>
@@ -21,6 +22,13 @@ double worstSineDegrees(const TetMesh& mesh, int threads)
 int64_t countBelow(const TetMesh& mesh, double degrees, int threads)
 {
   return countSineBelow(mesh, std::sin(degrees * 3.14159265358979323846 / 180.0), threads);
+}
+
+// The tets under `degrees` in (quality, slot) order, as optimizeMesh and splitBadTets sweep for them.
+void collectSortedBelow(const TetMesh& mesh, double degrees, int threads, std::vector<std::pair<double, int32_t>>& out)
+{
+  collectSineBelow(mesh, std::sin(degrees * 3.14159265358979323846 / 180.0), threads, out);
+  std::sort(out.begin(), out.end());
 }
 
 // Whether a tet under `degrees` has a vertex on no constrained face and not locked by the caller: only
@@ -78,9 +86,15 @@ Status QualityRounds::run()
   return Status::success();
 }
 
-Status QualityRounds::optimise(int maxPasses)
+Status QualityRounds::optimise(int maxPasses, std::vector<std::pair<double, int32_t>>* below)
 {
   OptimizationWorklist worklist; // one sweep for the series of calls below (nothing else edits between)
+  if (below && !below->empty())
+  {
+    worklist.valid = true;
+    worklist.targetDegrees = one_.targetDegrees;
+    worklist.below = std::move(*below);
+  }
   for (int pass = 0; pass < maxPasses; pass += one_.maxPasses)
   {
     one_.maxPasses = pass == 0 ? std::min(3, maxPasses) : 1;
@@ -97,6 +111,13 @@ Status QualityRounds::optimise(int maxPasses)
     if (orep.belowTargetAfter == 0 || orep.passes == 0 || (gained <= orep.belowTargetBefore / 50 && !minImproved))
       break;
   }
+  if (below)
+  {
+    if (worklist.valid)
+      below->swap(worklist.below);
+    else // no pass ran: the mesh is as it was
+      collectSortedBelow(mesh, one_.targetDegrees, options.threads, *below);
+  }
   return Status::success();
 }
 
@@ -105,26 +126,46 @@ Status QualityRounds::optimise(int maxPasses)
 // strict improvements only), so a mesh already past the target still gets better where it is worst.
 Status QualityRounds::floorRounds()
 {
+  std::vector<std::pair<double, int32_t>> low, below;
+  double lastWorst = 0;
   for (int round = 0; round < options.floorRounds; ++round)
   {
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-    const double worst = worstSineDegrees(mesh, options.threads);
+    // One sweep for the round's start: the tets a little above the aim, from which the worst tet, the
+    // count under the aim and the optimisation's worklist follow (sweeps only when they do not).
+    const double lowDegrees = std::min(90.0, std::max(lastWorst + 2.0, options.optimization.targetDegrees) + 3.0);
+    collectSortedBelow(mesh, lowDegrees, options.threads, low);
+    const double worst =
+      low.empty() ? worstSineDegrees(mesh, options.threads) : sineQualityToDegrees(low.front().first);
     if (!(worst > 0) || worst >= 60)
       break;
     one_.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
+    below.clear();
+    const double qAim = std::sin(one_.targetDegrees * 3.14159265358979323846 / 180.0);
+    const bool known = !low.empty() && one_.targetDegrees <= lowDegrees;
+    if (known)
+      for (const auto& t : low)
+        if (t.first < qAim)
+          below.push_back(t);
+    const int64_t count =
+      known ? static_cast<int64_t>(below.size()) : countBelow(mesh, one_.targetDegrees, options.threads);
     // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
-    if (countBelow(mesh, one_.targetDegrees, options.threads) > std::max<int64_t>(64, mesh.numTets() / 200))
+    if (count > std::max<int64_t>(64, mesh.numTets() / 200))
       break;
-    Status fs = optimise(2);
+    Status fs = optimise(2, &below);
     if (!fs.ok())
       return fs;
-    stats.splitPoints += splitBadTets(mesh, &fc_, &tetRegion, one_.targetDegrees, 64);
-    fs = optimise(1);
+    stats.splitPoints += splitBadTets(mesh, &fc_, &tetRegion, one_.targetDegrees, 64, false, 0, &below);
+    below.clear();
+    fs = optimise(1, &below);
     if (!fs.ok())
       return fs;
-    if (worstSineDegrees(mesh, options.threads) < worst + 0.05)
+    const double after =
+      below.empty() ? worstSineDegrees(mesh, options.threads) : sineQualityToDegrees(below.front().first);
+    if (after < worst + 0.05)
       break;
+    lastWorst = after;
   }
   return Status::success();
 }
@@ -133,7 +174,8 @@ Status QualityRounds::floorRounds()
 Status QualityRounds::optimiseSplitFloor()
 {
   one_.targetDegrees = options.optimization.targetDegrees;
-  Status ps = optimise(options.optimization.maxPasses);
+  std::vector<std::pair<double, int32_t>> below; // after each optimisation: the tets under the target
+  Status ps = optimise(options.optimization.maxPasses, &below);
   if (!ps.ok())
     return ps;
   // What optimisation cannot fix (slivers spanned by boundary vertices): split by a point inside, then
@@ -144,12 +186,13 @@ Status QualityRounds::optimiseSplitFloor()
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
     const int64_t n = splitBadTets(mesh, &fc_, &tetRegion, options.optimization.targetDegrees,
-                                   std::max<int64_t>(200, mesh.numTets() / 20));
+                                   std::max<int64_t>(200, mesh.numTets() / 20), false, 0, &below);
     stats.splitPoints += n;
     if (n == 0)
       break;
     const double minBefore = stats.after.minDihedral;
-    Status ps = optimise(std::min(3, options.optimization.maxPasses));
+    below.clear();
+    Status ps = optimise(std::min(3, options.optimization.maxPasses), &below);
     if (!ps.ok())
       return ps;
     if (stats.after.minDihedral < minBefore + 0.1)
@@ -165,6 +208,8 @@ Status QualityRounds::optimiseSplitFloor()
 // worst tet gets better).
 Status QualityRounds::withCollapseRerun()
 {
+  if (options.optimization.vertexRemoval && mesh.numTets() >= kLargeMeshTets)
+    return withCollapsesLast();
   const bool removal = options.optimization.vertexRemoval;
   TetMesh startMesh;
   std::vector<int32_t> startRegion;
@@ -201,6 +246,27 @@ Status QualityRounds::withCollapseRerun()
     }
   }
   return Status::success();
+}
+
+// From kLargeMeshTets (LargeMesh.h) a second run of the whole stage would cost as much as the first, for a few tets:
+// the collapses come after the first run instead, as optimisation passes over the tets below the target
+// (each collapse a strict improvement of its star), then the floor rounds again.
+Status QualityRounds::withCollapsesLast()
+{
+  Status s = optimiseSplitFloor();
+  if (!s.ok())
+    return s;
+  const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
+  if (!(worstSineDegrees(mesh, options.threads) < removalDegrees) ||
+      !hasUnlockedVertexBelow(mesh, fc_, clusterLock_, removalDegrees))
+    return Status::success();
+  one_.targetDegrees = options.optimization.targetDegrees;
+  one_.vertexRemoval = true;
+  s = optimise(3);
+  one_.vertexRemoval = false;
+  if (!s.ok())
+    return s;
+  return floorRounds();
 }
 
 // Small meshes (a few boundary triangles, few or no field points) often end as a tie with any

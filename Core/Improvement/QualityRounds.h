@@ -3,7 +3,8 @@
 //   optimise            flips, edge removal, smoothing (MeshOptimization.h) while a pass pays
 //   optimiseSplitFloor  optimisation, splitting of what it cannot fix (BadTetSplitting.h), floor rounds
 //   withCollapseRerun   optimiseSplitFloor, and again from the same start with vertex collapses when the
-//                       worst tet stays low; the better mesh is kept
+//                       worst tet stays low; the better mesh is kept (below kLargeMeshTets tets, LargeMesh.h; from
+//                       there on, withCollapsesLast: the collapses as passes after the first run)
 //   speculativeRounds   small meshes: a point for the worst tet, kept only when the worst tet improves
 //   insertionRounds     vertex insertion for the worst tets (InsertionImprovement.h)
 // run() is all of them in that order. Every round changes only unconstrained faces and moves no vertex of
@@ -30,11 +31,14 @@ public:
   Status run();
 
   // Up to maxPasses optimisation passes towards one_.targetDegrees: the first call of a series runs up
-  // to three passes, then one pass per call while a pass still pays.
-  Status optimise(int maxPasses);
+  // to three passes, then one pass per call while a pass still pays. below (optional): in, when not
+  // empty, the tets under the target in (quality, slot) order as a sweep would give them (no sweep then);
+  // out, the tets under the target after the passes, in the same order.
+  Status optimise(int maxPasses, std::vector<std::pair<double, int32_t>>* below = nullptr);
   Status floorRounds();
   Status optimiseSplitFloor();
   Status withCollapseRerun();
+  Status withCollapsesLast();
   Status speculativeRounds();
   void insertionRounds();
 

@@ -3,9 +3,10 @@
 //
 // CONVENTIONS (every stage relies on them)
 //
-// Vertices. Vertex v has coordinates points[3v..3v+2]. Vertices are never renumbered by the mesher:
-//   buildDelaunay() makes vertex i = input point i (exact duplicates stay in `points` but are used by no
-//   tet). Steiner/field points are appended with addPoint(). kGhostVertex (-1) is the "vertex at
+// Vertices. Vertex v has coordinates points[3v..3v+2]. Vertices are never renumbered by the mesher,
+//   except the field points once, in space (SpatialReorder.h): buildDelaunay() makes vertex i = input
+//   point i (exact duplicates stay in `points` but are used by no tet). Steiner/field points are appended
+//   with addPoint(). kGhostVertex (-1) is the "vertex at
 //   infinity" of ghost tets (see below); it has no coordinates.
 //
 // Tets. Tet t has vertices tetVertices[4t..4t+3] = (v0,v1,v2,v3). A finite tet is POSITIVELY oriented:

@@ -1,5 +1,8 @@
 #include "FieldPoints.h"
 
+#include "LargeMesh.h"
+#include "SpatialSort.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -27,6 +30,25 @@ inline double volume(const double* a, const double* b, const double* c, const do
 double secondsSince(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+void sortAlongHilbertCurve(const TetMesh& mesh, std::vector<int32_t>& tets)
+{
+  std::vector<double> centroids;
+  centroids.reserve(3 * tets.size());
+  for (int32_t t : tets)
+  {
+    const int32_t* v = mesh.vertices(t);
+    for (int k = 0; k < 3; ++k)
+      centroids.push_back((mesh.point(v[0])[k] + mesh.point(v[1])[k] + mesh.point(v[2])[k] + mesh.point(v[3])[k]) / 4);
+  }
+  std::vector<int32_t> order(tets.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    order[i] = static_cast<int32_t>(i);
+  hilbertSort(centroids.data(), order);
+  std::vector<int32_t> sorted(tets.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    sorted[i] = tets[static_cast<size_t>(order[i])];
+  tets.swap(sorted);
 }
 } // namespace
 
@@ -58,6 +80,10 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
         if (birth[t] == pass - 1)
           todo.push_back(t);
       });
+    // Many tets to examine (LargeMesh.h): along the Hilbert curve, so that consecutive insertions work in the
+    // same part of the mesh, whose tets are still in the caches (slot order jumps across the domain).
+    if (static_cast<int64_t>(todo.size()) >= kLargeMeshTets)
+      sortAlongHilbertCurve(mesh, todo);
     int64_t insertedThisPass = 0;
     size_t k = 0;
     for (int32_t t : todo)

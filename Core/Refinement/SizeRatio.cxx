@@ -61,20 +61,38 @@ SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, 
 {
   SizeRatioSummary s;
   std::vector<double> size(numTets);
-  std::vector<Face> faces;
-  faces.reserve(4 * numTets);
+  int32_t numPoints = 0;
   for (size_t t = 0; t < numTets; ++t)
   {
+    size[t] = meanEdge(points, tets + 4 * t);
+    for (int i = 0; i < 4; ++i)
+      numPoints = std::max(numPoints, tets[4 * t + i] + 1);
+  }
+  // The faces bucketed by their smallest vertex (a counting sort), each bucket then sorted: the same
+  // pairs of equal faces as one sort of all 4 n faces, at a fraction of its cost.
+  auto faceOf = [&](size_t t, int i)
+  {
     const int32_t* v = tets + 4 * t;
-    size[t] = meanEdge(points, v);
+    Face f{ { v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4] }, static_cast<int32_t>(t) };
+    std::sort(f.v.begin(), f.v.end());
+    return f;
+  };
+  std::vector<int64_t> start(static_cast<size_t>(numPoints) + 1, 0);
+  for (size_t t = 0; t < numTets; ++t)
+    for (int i = 0; i < 4; ++i)
+      ++start[static_cast<size_t>(faceOf(t, i).v[0]) + 1];
+  for (size_t v = 0; v < static_cast<size_t>(numPoints); ++v)
+    start[v + 1] += start[v];
+  std::vector<Face> faces(4 * numTets);
+  std::vector<int64_t> next(start.begin(), start.end() - 1);
+  for (size_t t = 0; t < numTets; ++t)
     for (int i = 0; i < 4; ++i)
     {
-      Face f{ { v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4] }, static_cast<int32_t>(t) };
-      std::sort(f.v.begin(), f.v.end());
-      faces.push_back(f);
+      const Face f = faceOf(t, i);
+      faces[static_cast<size_t>(next[static_cast<size_t>(f.v[0])]++)] = f;
     }
-  }
-  std::sort(faces.begin(), faces.end());
+  for (size_t v = 0; v < static_cast<size_t>(numPoints); ++v)
+    std::sort(faces.begin() + start[v], faces.begin() + start[v + 1]);
   std::vector<float> ratios;
   ratios.reserve(2 * numTets);
   for (size_t k = 0; k + 1 < faces.size(); ++k)

@@ -35,12 +35,14 @@ namespace
 struct Summary
 {
   int64_t tets = 0, below10 = 0;
+  int64_t outside15to165 = 0; // issue 16's interior bound: a dihedral angle under 15 or over 165 degrees
   double minDihedral = 180, maxDihedral = 0;
   void add(const double a[6])
   {
     const double lo = *std::min_element(a, a + 6), hi = *std::max_element(a, a + 6);
     ++tets;
     below10 += lo < 10;
+    outside15to165 += lo < 15 || hi > 165;
     minDihedral = std::min(minDihedral, lo);
     maxDihedral = std::max(maxDihedral, hi);
   }
@@ -154,14 +156,15 @@ int main(int argc, char** argv)
     flat.insert(flat.end(), q.begin(), q.end());
   const volgrid::SizeRatioSummary ratio = volgrid::summarizeSizeRatios(xyz.data(), flat.data(), tets.size());
   const volgrid::quality::CfdSummary cfd = volgrid::quality::cfdMetrics(xyz, flat, nullptr);
-  std::printf("{\"tets\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, \"share_below_10\": %.6g, "
-              "\"interior_tets\": %lld, \"interior_min_dihedral\": %.4f, \"interior_max_dihedral\": %.4f, "
-              "\"interior_share_below_10\": %.6g, \"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, "
-              "\"max_non_orthogonality\": %.4f, \"severe_non_orthogonal_faces\": %lld}\n",
-              static_cast<long long>(all.tets), all.minDihedral, all.maxDihedral,
-              all.tets ? double(all.below10) / all.tets : 0.0, static_cast<long long>(interior.tets),
-              interior.minDihedral, interior.maxDihedral,
-              interior.tets ? double(interior.below10) / interior.tets : 0.0, ratio.p99, ratio.max,
-              cfd.maxNonOrthogonality, static_cast<long long>(cfd.severelyNonOrthogonalFaces));
+  std::printf(
+    "{\"tets\": %lld, \"min_dihedral\": %.4f, \"max_dihedral\": %.4f, \"share_below_10\": %.6g, "
+    "\"interior_tets\": %lld, \"interior_min_dihedral\": %.4f, \"interior_max_dihedral\": %.4f, "
+    "\"interior_share_below_10\": %.6g, \"interior_outside_15_165\": %lld, \"size_ratio_p99\": %.4f, "
+    "\"size_ratio_max\": %.4f, "
+    "\"max_non_orthogonality\": %.4f, \"severe_non_orthogonal_faces\": %lld}\n",
+    static_cast<long long>(all.tets), all.minDihedral, all.maxDihedral, all.tets ? double(all.below10) / all.tets : 0.0,
+    static_cast<long long>(interior.tets), interior.minDihedral, interior.maxDihedral,
+    interior.tets ? double(interior.below10) / interior.tets : 0.0, static_cast<long long>(interior.outside15to165),
+    ratio.p99, ratio.max, cfd.maxNonOrthogonality, static_cast<long long>(cfd.severelyNonOrthogonalFaces));
   return 0;
 }
