@@ -124,8 +124,8 @@ double sineQualityToDegrees(double q)
 TetEditor::TetEditor(TetMesh& m, const FaceConstraints* c, std::vector<int32_t>* l)
   : MeshNavigator(m, StaleEntries::Trust)
   , constraints(c)
-  , labels(l)
 {
+  labels = l;
 }
 
 std::vector<uint8_t> TetEditor::lockedVertices() const
@@ -173,129 +173,8 @@ bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& 
 bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                         std::vector<int32_t>* created)
 {
-  if (oldTets.empty())
+  if (oldTets.empty() || !replaceTets(oldTets, newTets, created, false))
     return false;
-  const uint32_t s = newStamp();
-  for (int32_t t : oldTets)
-    tetStamp[t] = s;
-  faces_.clear();
-  auto sortKey = [](int32_t* k)
-  {
-    if (k[0] > k[1])
-      std::swap(k[0], k[1]);
-    if (k[1] > k[2])
-      std::swap(k[1], k[2]);
-    if (k[0] > k[1])
-      std::swap(k[0], k[1]);
-  };
-  for (int32_t t : oldTets)
-    for (int i = 0; i < 4; ++i)
-    {
-      const int32_t c = mesh.neighborCode(t, i);
-      if (c >= 0 && tetStamp[c >> 2] == s)
-        continue;
-      FaceEntry e;
-      mesh.faceVertices(t, i, e.key);
-      sortKey(e.key);
-      e.code = c;
-      e.owner = -1;
-      e.face = i;
-      faces_.push_back(e);
-    }
-  const size_t numOuter = faces_.size();
-  for (size_t n = 0; n < newTets.size(); ++n)
-    for (int i = 0; i < 4; ++i)
-    {
-      FaceEntry e;
-      const auto& q = newTets[n];
-      for (int k = 0; k < 3; ++k)
-        e.key[k] = q[TetMesh::kFaceVertex[i][k]];
-      sortKey(e.key);
-      e.code = TetMesh::kNoNeighbor;
-      e.owner = static_cast<int32_t>(n);
-      e.face = i;
-      faces_.push_back(e);
-    }
-  (void)numOuter;
-  std::sort(faces_.begin(), faces_.end(),
-            [](const FaceEntry& a, const FaceEntry& b)
-            {
-              if (a.key[0] != b.key[0])
-                return a.key[0] < b.key[0];
-              if (a.key[1] != b.key[1])
-                return a.key[1] < b.key[1];
-              if (a.key[2] != b.key[2])
-                return a.key[2] < b.key[2];
-              return a.owner < b.owner; // outer (-1) first
-            });
-  // Every key must appear exactly twice: (outer, new) or (new, new).
-  if (faces_.size() % 2)
-    return false;
-  for (size_t k = 0; k < faces_.size(); k += 2)
-  {
-    const FaceEntry& a = faces_[k];
-    const FaceEntry& b = faces_[k + 1];
-    if (a.key[0] != b.key[0] || a.key[1] != b.key[1] || a.key[2] != b.key[2] || b.owner < 0)
-      return false;
-    if (k + 2 < faces_.size())
-    {
-      const FaceEntry& c = faces_[k + 2];
-      if (c.key[0] == a.key[0] && c.key[1] == a.key[1] && c.key[2] == a.key[2])
-        return false;
-    }
-  }
-  // Commit.
-  const uint8_t userBits =
-    mesh.tetFlags[oldTets[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
-  const int32_t label = labels && static_cast<size_t>(oldTets[0]) < labels->size() ? (*labels)[oldTets[0]] : -1;
-  for (int32_t t : oldTets)
-  {
-    journalTet(t);
-    mesh.freeTet(t);
-  }
-  std::vector<int32_t>& ids = queue_;
-  ids.resize(newTets.size());
-  for (size_t n = 0; n < newTets.size(); ++n)
-  {
-    const auto& q = newTets[n];
-    journalTet(mesh.freeListHead());
-    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
-    mesh.tetFlags[t] = userBits;
-    ids[n] = t;
-    for (int i = 0; i < 4; ++i)
-      if (q[i] >= 0)
-      {
-        mapVertex(q[i], t);
-      }
-  }
-  if (labels)
-  {
-    if (labels->size() < static_cast<size_t>(mesh.tetCapacity()))
-      labels->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
-    for (int32_t t : ids)
-      (*labels)[t] = label;
-  }
-  for (size_t k = 0; k < faces_.size(); k += 2)
-  {
-    const FaceEntry& a = faces_[k];
-    const FaceEntry& b = faces_[k + 1];
-    const int32_t tb = ids[b.owner];
-    if (a.owner < 0)
-    {
-      if (a.code < 0)
-        mesh.unlink(tb, b.face);
-      else
-      {
-        journalTet(a.code >> 2);
-        mesh.link(tb, b.face, a.code >> 2, a.code & 3);
-      }
-    }
-    else
-      mesh.link(ids[a.owner], a.face, tb, b.face);
-  }
-  ensureStamp();
-  if (created)
-    *created = ids;
   ++replacements;
   return true;
 }
@@ -692,9 +571,8 @@ void TetEditor::commitInsertion(std::vector<int32_t>* created)
   // The cone from v over the cavity boundary: new tet k replaces v at position outerFace_[k] of a cavity
   // tet, so its face outerFace_[k] is the old boundary face (linked to the old outer neighbour) and its
   // three other faces contain v and one boundary edge, matched pairwise by the edge's vertex pair.
-  const uint8_t userBits =
-    mesh.tetFlags[cavity_[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
-  const int32_t label = labels && static_cast<size_t>(cavity_[0]) < labels->size() ? (*labels)[cavity_[0]] : -1;
+  const uint8_t userBits = userBitsOf(cavity_[0]);
+  const int32_t label = labelOf(cavity_[0]);
   for (int32_t t : cavity_)
   {
     journalTet(t);
@@ -741,13 +619,7 @@ void TetEditor::commitInsertion(std::vector<int32_t>* created)
     const int32_t c1 = edgeSlots_[k].second, c2 = edgeSlots_[k + 1].second;
     mesh.link(c1 >> 2, c1 & 3, c2 >> 2, c2 & 3);
   }
-  if (labels)
-  {
-    if (labels->size() < static_cast<size_t>(mesh.tetCapacity()))
-      labels->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
-    for (int32_t t : ids)
-      (*labels)[t] = label;
-  }
+  labelTets(ids, label);
   ensureStamp();
   if (created)
     *created = ids;
