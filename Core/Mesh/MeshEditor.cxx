@@ -355,8 +355,8 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
     if (!changed)
       break;
   }
-  // Final validation and new tets.
-  tmpNew_.clear();
+  // Final validation and the cone (v last: its face 3 is the boundary face).
+  cone_.clear();
   for (int32_t t : cav)
     for (int i = 0; i < 4; ++i)
     {
@@ -366,10 +366,11 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
       mesh.faceVertices(t, i, f);
       if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
         return false;
-      tmpNew_.push_back({ { f[0], f[1], f[2], v } });
+      cone_.add({ { f[0], f[1], f[2], v } }, mesh.neighborCode(t, i), 3);
     }
-  std::vector<int32_t> old = cav;
-  return replace(old, tmpNew_, nullptr);
+  replaceByCone(cav, cone_, nullptr);
+  ++edits;
+  return true;
 }
 
 } // namespace volgrid

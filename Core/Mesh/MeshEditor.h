@@ -68,6 +68,7 @@ public:
 private:
   std::vector<int32_t> tmpRing_, cavity_, queue_;
   std::vector<std::array<int32_t, 4>> tmpNew_;
+  Cone cone_; // insertVertex()
 };
 
 } // namespace volgrid

@@ -295,4 +295,63 @@ void MeshNavigator::commitReplacement(const std::vector<int32_t>& oldTets,
   ensureStamp();
 }
 
+void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone& cone, std::vector<int32_t>* created)
+{
+  // Cone tet k has the new vertex at position i = apexAt[k], so its face i is the old boundary face (glued
+  // to the old outer neighbour) and its three other faces contain the new vertex and one boundary edge:
+  // they are matched pairwise by the edge's vertex pair.
+  const uint8_t userBits = userBitsOf(cavity[0]);
+  const int32_t label = labelOf(cavity[0]);
+  for (int32_t t : cavity)
+  {
+    journalTet(t);
+    mesh.freeTet(t);
+  }
+  const size_t n = cone.tets.size();
+  std::vector<int32_t>& ids = replaceIds_;
+  ids.resize(n);
+  edgeSlots_.clear();
+  for (size_t k = 0; k < n; ++k)
+  {
+    const auto& q = cone.tets[k];
+    journalTet(mesh.freeListHead());
+    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    mesh.tetFlags[t] = userBits;
+    ids[k] = t;
+    const int i = cone.apexAt[k];
+    const int32_t c = cone.outerCode[k];
+    if (c >= 0)
+    {
+      journalTet(c >> 2);
+      mesh.link(t, i, c >> 2, c & 3);
+    }
+    for (int j = 0; j < 4; ++j)
+    {
+      mapVertex(q[j], t);
+      if (j == i)
+        continue;
+      // Face j contains the apex (at position i) and the two vertices other than positions i and j.
+      int32_t a = -1, b = -1;
+      for (int m = 0; m < 4; ++m)
+        if (m != i && m != j)
+          (a < 0 ? a : b) = q[m];
+      const uint64_t key =
+        a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b) : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
+      edgeSlots_.push_back({ key, TetMesh::encode(t, j) });
+    }
+  }
+  std::sort(edgeSlots_.begin(), edgeSlots_.end(),
+            [](const std::pair<uint64_t, int32_t>& x, const std::pair<uint64_t, int32_t>& y)
+            { return x.first < y.first; });
+  for (size_t k = 0; k + 1 < edgeSlots_.size(); k += 2)
+  {
+    const int32_t c1 = edgeSlots_[k].second, c2 = edgeSlots_[k + 1].second;
+    mesh.link(c1 >> 2, c1 & 3, c2 >> 2, c2 & 3);
+  }
+  labelTets(ids, label);
+  ensureStamp();
+  if (created)
+    *created = ids;
+}
+
 } // namespace volgrid

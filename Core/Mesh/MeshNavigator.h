@@ -91,6 +91,30 @@ protected:
   // neighbour: a new face matching nothing gets no neighbour, an outer tet whose face is gone loses it.
   bool replaceTets(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                    std::vector<int32_t>* created, bool allowOpen);
+  // The cone of a vertex insertion, built by the editor from its cavity: tets[k] has the new vertex at
+  // position apexAt[k], and its face apexAt[k] is a cavity boundary face whose outer neighbour code
+  // (kNoNeighbor on the boundary) is outerCode[k].
+  struct Cone
+  {
+    std::vector<std::array<int32_t, 4>> tets;
+    std::vector<int32_t> outerCode, apexAt;
+    void clear()
+    {
+      tets.clear();
+      outerCode.clear();
+      apexAt.clear();
+    }
+    void add(const std::array<int32_t, 4>& q, int32_t code, int32_t at)
+    {
+      tets.push_back(q);
+      outerCode.push_back(code);
+      apexAt.push_back(at);
+    }
+  };
+  // Replaces the cavity's tets by the cone, as replaceTets() would but without its face matching: the
+  // cone's side faces meet pairwise at the cavity's boundary edges. The caller guarantees a cavity that is
+  // strictly star-shaped from the new vertex (so its boundary is a sphere) with no vertex inside.
+  void replaceByCone(const std::vector<int32_t>& cavity, const Cone& cone, std::vector<int32_t>* created);
   void journalTet(int32_t t)
   {
     if (journal && t >= 0)
@@ -130,6 +154,7 @@ private:
   };
   std::vector<FaceEntry> replaceFaces_;
   std::vector<int32_t> replaceIds_;
+  std::vector<std::pair<uint64_t, int32_t>> edgeSlots_; // replaceByCone(): (edge key, side face code)
   std::vector<int32_t> vertTet_;
   std::vector<int32_t> findScratch_;
   StaleEntries stale_;

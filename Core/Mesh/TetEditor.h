@@ -147,10 +147,7 @@ private:
     double quality; // of the tet from the new vertex over this face; -1 when not strictly positive
   };
   std::vector<ConeFace> cone_;
-  std::vector<std::array<int32_t, 4>> newTets_;
-  std::vector<int32_t> outerCode_, outerFace_;
-  std::vector<std::pair<uint64_t, int32_t>> edgeSlots_;
-  void commitInsertion(std::vector<int32_t>* created);
+  Cone coneTets_;
 };
 
 } // namespace volgrid
