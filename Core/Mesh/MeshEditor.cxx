@@ -193,15 +193,14 @@ int32_t MeshEditor::locate(const double* p, int32_t start)
   return walk(p, start, WalkOrder::Rotating);
 }
 
-bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
+// The tets whose closure contains the point of v, from t0 across the faces it lies on. False when the
+// insertion must be refused: the point outside t0's closure (locate() inconsistent), v already a vertex
+// there, the point on a hull or constraint face, or a vertex already at the point.
+bool MeshEditor::insertionRoots(int32_t v, int32_t t0, const BoundaryConstraints* bc, std::vector<int32_t>& roots)
 {
   const double* p = mesh.point(v);
-  const int32_t t0 = locate(p, start);
-  if (t0 < 0)
-    return false;
   int32_t f[3];
-  // Roots: tets whose closure contains p.
-  std::vector<int32_t> roots = { t0 };
+  roots.assign(1, t0);
   const uint32_t sRoot = newStamp();
   tetStamp[t0] = sRoot;
   for (size_t k = 0; k < roots.size(); ++k)
@@ -236,13 +235,16 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
       if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2])
         return false;
     }
-  // Bowyer-Watson growth (insphere is only a heuristic for the cavity's size here; validity is exact
-  // below).
-  const uint32_t sCav = newStamp();
+  return true;
+}
+
+// Grows cavity_ (the roots, stamped sCav) by Bowyer-Watson up to 4096 tets, never across a hull or
+// constraint face; insphere only sizes the cavity here, shrinkToStar() makes it valid exactly.
+void MeshEditor::growCavity(const double* p, const BoundaryConstraints* bc, const std::vector<int32_t>& roots,
+                            uint32_t sCav)
+{
   std::vector<int32_t>& cav = cavity_;
-  cav = roots;
-  for (int32_t t : cav)
-    tetStamp[t] = sCav;
+  int32_t f[3];
   // Bowyer-Watson growth; when it would delete a recovered boundary edge (every tet around the edge in
   // the cavity) the cavity falls back to the tets whose closure contains p (1-4, 2-6 or n-2n split, the
   // paper's "connect the intersection point to the polyhedron").
@@ -299,6 +301,14 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
         tetStamp[t] = sCav;
     }
   }
+}
+
+// Makes cavity_ (stamped sCav) star-shaped from p: drops the tets with a boundary face p does not see
+// strictly and keeps the part connected to the roots, until nothing changes. False when a root would go.
+bool MeshEditor::shrinkToStar(const double* p, const std::vector<int32_t>& roots, uint32_t sCav)
+{
+  std::vector<int32_t>& cav = cavity_;
+  int32_t f[3];
   auto isRoot = [&](int32_t t) { return std::find(roots.begin(), roots.end(), t) != roots.end(); };
   // Make it star-shaped from p: drop tets with a boundary face p does not see strictly.
   for (int round = 0; round < 1000; ++round)
@@ -355,6 +365,28 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
     if (!changed)
       break;
   }
+  return true;
+}
+
+bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
+{
+  const double* p = mesh.point(v);
+  const int32_t t0 = locate(p, start);
+  if (t0 < 0)
+    return false;
+  std::vector<int32_t>& roots = roots_;
+  if (!insertionRoots(v, t0, bc, roots))
+    return false;
+  // The cavity: the roots grown by Bowyer-Watson, then made star-shaped from p.
+  const uint32_t sCav = newStamp();
+  std::vector<int32_t>& cav = cavity_;
+  cav = roots;
+  for (int32_t t : cav)
+    tetStamp[t] = sCav;
+  growCavity(p, bc, roots, sCav);
+  if (!shrinkToStar(p, roots, sCav))
+    return false;
+  int32_t f[3];
   // Final validation and the cone (v last: its face 3 is the boundary face).
   cone_.clear();
   for (int32_t t : cav)
