@@ -28,100 +28,8 @@ bool MeshEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>&
 bool MeshEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                          std::vector<int32_t>* created, bool allowOpen)
 {
-  for (int32_t t : oldTets)
-    mesh.tetFlags[t] |= TetMesh::kMarkA;
-  bfaces_.clear();
-  int32_t f[3];
-  for (int32_t t : oldTets)
-    for (int i = 0; i < 4; ++i)
-    {
-      const int32_t code = mesh.neighborCode(t, i);
-      if (code >= 0 && (mesh.tetFlags[code >> 2] & TetMesh::kMarkA))
-        continue;
-      mesh.faceVertices(t, i, f);
-      bfaces_.push_back({ TriKey(f[0], f[1], f[2]), code });
-    }
-  for (int32_t t : oldTets)
-    mesh.tetFlags[t] &= static_cast<uint8_t>(~TetMesh::kMarkA);
-  nfaces_.clear();
-  for (size_t n = 0; n < newTets.size(); ++n)
-  {
-    const auto& q = newTets[n];
-    for (int i = 0; i < 4; ++i)
-    {
-      const int* fv = TetMesh::kFaceVertex[i];
-      nfaces_.push_back({ TriKey(q[fv[0]], q[fv[1]], q[fv[2]]), static_cast<int32_t>(n), i });
-    }
-  }
-  auto lessB = [](const BFace& a, const BFace& b) { return a.key < b.key; };
-  auto lessN = [](const NFace& a, const NFace& b) { return a.key < b.key; };
-  std::sort(bfaces_.begin(), bfaces_.end(), lessB);
-  std::sort(nfaces_.begin(), nfaces_.end(), lessN);
-  // Verify: every new face is either shared by exactly two new tets or matches exactly one old boundary
-  // face, and every old boundary face is matched.
-  size_t matched = 0;
-  for (size_t i = 0; i + 1 < bfaces_.size(); ++i)
-    if (bfaces_[i].key == bfaces_[i + 1].key)
-      return false;
-  for (size_t i = 0; i < nfaces_.size();)
-  {
-    size_t j = i + 1;
-    while (j < nfaces_.size() && nfaces_[j].key == nfaces_[i].key)
-      ++j;
-    const size_t cnt = j - i;
-    const bool inB = std::binary_search(bfaces_.begin(), bfaces_.end(), BFace{ nfaces_[i].key, 0 }, lessB);
-    if (cnt == 1 && inB)
-      ++matched;
-    else if (!(cnt == 2 && !inB) && !(allowOpen && cnt == 1))
-      return false;
-    i = j;
-  }
-  if (matched != bfaces_.size() && !allowOpen)
+  if (!replaceTets(oldTets, newTets, created, allowOpen))
     return false;
-  if (allowOpen)
-  {
-    // Outer tets whose face is not matched lose that neighbour.
-    for (const BFace& b : bfaces_)
-    {
-      if (b.code < 0)
-        continue;
-      auto it = std::lower_bound(nfaces_.begin(), nfaces_.end(), NFace{ b.key, 0, 0 }, lessN);
-      if (it == nfaces_.end() || !(it->key == b.key))
-        mesh.unlink(b.code >> 2, b.code & 3);
-    }
-  }
-
-  // Commit.
-  for (int32_t t : oldTets)
-    mesh.freeTet(t);
-  tmpTets_.resize(newTets.size());
-  for (size_t n = 0; n < newTets.size(); ++n)
-  {
-    const auto& q = newTets[n];
-    tmpTets_[n] = mesh.newTet(q[0], q[1], q[2], q[3]);
-    for (int i = 0; i < 4; ++i)
-      mapVertex(q[i], tmpTets_[n]);
-  }
-  for (size_t i = 0; i < nfaces_.size();)
-  {
-    size_t j = i + 1;
-    while (j < nfaces_.size() && nfaces_[j].key == nfaces_[i].key)
-      ++j;
-    const int32_t ta = tmpTets_[nfaces_[i].tet];
-    if (j - i == 2)
-      mesh.link(ta, nfaces_[i].face, tmpTets_[nfaces_[i + 1].tet], nfaces_[i + 1].face);
-    else
-    {
-      auto it = std::lower_bound(bfaces_.begin(), bfaces_.end(), BFace{ nfaces_[i].key, 0 }, lessB);
-      if (it == bfaces_.end() || !(it->key == nfaces_[i].key) || it->code < 0)
-        mesh.unlink(ta, nfaces_[i].face);
-      else
-        mesh.link(ta, nfaces_[i].face, it->code >> 2, it->code & 3);
-    }
-    i = j;
-  }
-  if (created)
-    *created = tmpTets_;
   ++edits;
   return true;
 }
@@ -285,15 +193,14 @@ int32_t MeshEditor::locate(const double* p, int32_t start)
   return walk(p, start, WalkOrder::Rotating);
 }
 
-bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
+// The tets whose closure contains the point of v, from t0 across the faces it lies on. False when the
+// insertion must be refused: the point outside t0's closure (locate() inconsistent), v already a vertex
+// there, the point on a hull or constraint face, or a vertex already at the point.
+bool MeshEditor::insertionRoots(int32_t v, int32_t t0, const BoundaryConstraints* bc, std::vector<int32_t>& roots)
 {
   const double* p = mesh.point(v);
-  const int32_t t0 = locate(p, start);
-  if (t0 < 0)
-    return false;
   int32_t f[3];
-  // Roots: tets whose closure contains p.
-  std::vector<int32_t> roots = { t0 };
+  roots.assign(1, t0);
   const uint32_t sRoot = newStamp();
   tetStamp[t0] = sRoot;
   for (size_t k = 0; k < roots.size(); ++k)
@@ -328,13 +235,16 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
       if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2])
         return false;
     }
-  // Bowyer-Watson growth (insphere is only a heuristic for the cavity's size here; validity is exact
-  // below).
-  const uint32_t sCav = newStamp();
+  return true;
+}
+
+// Grows cavity_ (the roots, stamped sCav) by Bowyer-Watson up to 4096 tets, never across a hull or
+// constraint face; insphere only sizes the cavity here, shrinkToStar() makes it valid exactly.
+void MeshEditor::growCavity(const double* p, const BoundaryConstraints* bc, const std::vector<int32_t>& roots,
+                            uint32_t sCav)
+{
   std::vector<int32_t>& cav = cavity_;
-  cav = roots;
-  for (int32_t t : cav)
-    tetStamp[t] = sCav;
+  int32_t f[3];
   // Bowyer-Watson growth; when it would delete a recovered boundary edge (every tet around the edge in
   // the cavity) the cavity falls back to the tets whose closure contains p (1-4, 2-6 or n-2n split, the
   // paper's "connect the intersection point to the polyhedron").
@@ -391,6 +301,14 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
         tetStamp[t] = sCav;
     }
   }
+}
+
+// Makes cavity_ (stamped sCav) star-shaped from p: drops the tets with a boundary face p does not see
+// strictly and keeps the part connected to the roots, until nothing changes. False when a root would go.
+bool MeshEditor::shrinkToStar(const double* p, const std::vector<int32_t>& roots, uint32_t sCav)
+{
+  std::vector<int32_t>& cav = cavity_;
+  int32_t f[3];
   auto isRoot = [&](int32_t t) { return std::find(roots.begin(), roots.end(), t) != roots.end(); };
   // Make it star-shaped from p: drop tets with a boundary face p does not see strictly.
   for (int round = 0; round < 1000; ++round)
@@ -447,8 +365,30 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
     if (!changed)
       break;
   }
-  // Final validation and new tets.
-  tmpNew_.clear();
+  return true;
+}
+
+bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
+{
+  const double* p = mesh.point(v);
+  const int32_t t0 = locate(p, start);
+  if (t0 < 0)
+    return false;
+  std::vector<int32_t>& roots = roots_;
+  if (!insertionRoots(v, t0, bc, roots))
+    return false;
+  // The cavity: the roots grown by Bowyer-Watson, then made star-shaped from p.
+  const uint32_t sCav = newStamp();
+  std::vector<int32_t>& cav = cavity_;
+  cav = roots;
+  for (int32_t t : cav)
+    tetStamp[t] = sCav;
+  growCavity(p, bc, roots, sCav);
+  if (!shrinkToStar(p, roots, sCav))
+    return false;
+  int32_t f[3];
+  // Final validation and the cone (v last: its face 3 is the boundary face).
+  cone_.clear();
   for (int32_t t : cav)
     for (int i = 0; i < 4; ++i)
     {
@@ -458,10 +398,11 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
       mesh.faceVertices(t, i, f);
       if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
         return false;
-      tmpNew_.push_back({ { f[0], f[1], f[2], v } });
+      cone_.add({ { f[0], f[1], f[2], v } }, mesh.neighborCode(t, i), 3);
     }
-  std::vector<int32_t> old = cav;
-  return replace(old, tmpNew_, nullptr);
+  replaceByCone(cav, cone_, nullptr);
+  ++edits;
+  return true;
 }
 
 } // namespace volgrid

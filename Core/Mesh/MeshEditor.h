@@ -28,9 +28,9 @@ public:
   bool edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets);
 
   // Replace oldTets by newTets (vertex quadruples, which must be positively oriented and fill the same
-  // region). Returns false and leaves the mesh untouched when the faces do not match up. With allowOpen,
-  // the region may change where it has no neighbour: unmatched new faces get no neighbour and outer tets
-  // whose old face is gone lose that neighbour (used when the boundary moves, SteinerRemoval).
+  // region): MeshNavigator::replaceTets. Returns false and leaves the mesh untouched when the faces do not match up.
+  // With allowOpen, the region may change where it has no neighbour: unmatched new faces get no neighbour and outer
+  // tets whose old face is gone lose that neighbour (used when the boundary moves, SteinerRemoval).
   bool replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                std::vector<int32_t>* created = nullptr, bool allowOpen = false);
 
@@ -66,22 +66,13 @@ public:
   std::vector<int32_t> lastRemovedIds;
 
 private:
-  // replace() scratch
-  struct BFace
-  {
-    TriKey key;
-    int32_t code;
-  };
-  struct NFace
-  {
-    TriKey key;
-    int32_t tet;
-    int face;
-  };
-  std::vector<BFace> bfaces_;
-  std::vector<NFace> nfaces_;
-  std::vector<int32_t> tmpTets_, tmpRing_, cavity_, queue_;
+  std::vector<int32_t> tmpRing_, cavity_, queue_, roots_;
+  // insertVertex()'s steps.
+  bool insertionRoots(int32_t v, int32_t t0, const BoundaryConstraints* bc, std::vector<int32_t>& roots);
+  void growCavity(const double* p, const BoundaryConstraints* bc, const std::vector<int32_t>& roots, uint32_t sCav);
+  bool shrinkToStar(const double* p, const std::vector<int32_t>& roots, uint32_t sCav);
   std::vector<std::array<int32_t, 4>> tmpNew_;
+  Cone cone_; // insertVertex()
 };
 
 } // namespace volgrid

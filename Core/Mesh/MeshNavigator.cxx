@@ -141,4 +141,217 @@ int32_t MeshNavigator::walk(const double* p, int32_t start, WalkOrder order) con
   return -1;
 }
 
+void MeshNavigator::labelTets(const std::vector<int32_t>& ids, int32_t label)
+{
+  if (!labels)
+    return;
+  if (labels->size() < static_cast<size_t>(mesh.tetCapacity()))
+    labels->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
+  for (int32_t t : ids)
+    (*labels)[static_cast<size_t>(t)] = label;
+}
+
+namespace
+{
+void sortTriple(int32_t* k)
+{
+  if (k[0] > k[1])
+    std::swap(k[0], k[1]);
+  if (k[1] > k[2])
+    std::swap(k[1], k[2]);
+  if (k[0] > k[1])
+    std::swap(k[0], k[1]);
+}
+
+template<class Face>
+bool sameKey(const Face& a, const Face& b)
+{
+  return a.key[0] == b.key[0] && a.key[1] == b.key[1] && a.key[2] == b.key[2];
+}
+
+// The run of faces with the key of faces[k]: [k, end), old outer faces (owner -1) sorted first.
+template<class Face>
+size_t keyRunEnd(const std::vector<Face>& faces, size_t k)
+{
+  size_t j = k + 1;
+  while (j < faces.size() && sameKey(faces[j], faces[k]))
+    ++j;
+  return j;
+}
+} // namespace
+
+bool MeshNavigator::replaceTets(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
+                                std::vector<int32_t>* created, bool allowOpen)
+{
+  // The old tets' outer faces and every face of the new tets, sorted by key (outer first within a key).
+  std::vector<FaceEntry>& faces = replaceFaces_;
+  faces.clear();
+  const uint32_t s = newStamp();
+  for (int32_t t : oldTets)
+    tetStamp[t] = s;
+  for (int32_t t : oldTets)
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t c = mesh.neighborCode(t, i);
+      if (c >= 0 && tetStamp[c >> 2] == s)
+        continue;
+      FaceEntry e;
+      mesh.faceVertices(t, i, e.key);
+      sortTriple(e.key);
+      e.code = c;
+      e.owner = -1;
+      e.face = i;
+      faces.push_back(e);
+    }
+  for (size_t n = 0; n < newTets.size(); ++n)
+    for (int i = 0; i < 4; ++i)
+    {
+      FaceEntry e;
+      for (int k = 0; k < 3; ++k)
+        e.key[k] = newTets[n][TetMesh::kFaceVertex[i][k]];
+      sortTriple(e.key);
+      e.code = TetMesh::kNoNeighbor;
+      e.owner = static_cast<int32_t>(n);
+      e.face = i;
+      faces.push_back(e);
+    }
+  std::sort(faces.begin(), faces.end(),
+            [](const FaceEntry& a, const FaceEntry& b)
+            {
+              if (a.key[0] != b.key[0])
+                return a.key[0] < b.key[0];
+              if (a.key[1] != b.key[1])
+                return a.key[1] < b.key[1];
+              if (a.key[2] != b.key[2])
+                return a.key[2] < b.key[2];
+              return a.owner < b.owner;
+            });
+  // A key is (outer, new) or (new, new); with allowOpen also a lone new face or a lone outer face.
+  for (size_t k = 0; k < faces.size();)
+  {
+    const size_t j = keyRunEnd(faces, k);
+    const bool paired = j - k == 2 && faces[k + 1].owner >= 0;
+    if (!paired && !(allowOpen && j - k == 1))
+      return false;
+    k = j;
+  }
+  commitReplacement(oldTets, newTets);
+  if (created)
+    *created = replaceIds_;
+  return true;
+}
+
+void MeshNavigator::commitReplacement(const std::vector<int32_t>& oldTets,
+                                      const std::vector<std::array<int32_t, 4>>& newTets)
+{
+  const uint8_t userBits = oldTets.empty() ? 0 : userBitsOf(oldTets[0]);
+  const int32_t label = oldTets.empty() ? -1 : labelOf(oldTets[0]);
+  for (int32_t t : oldTets)
+  {
+    journalTet(t);
+    mesh.freeTet(t);
+  }
+  std::vector<int32_t>& ids = replaceIds_;
+  ids.resize(newTets.size());
+  for (size_t n = 0; n < newTets.size(); ++n)
+  {
+    const auto& q = newTets[n];
+    journalTet(mesh.freeListHead());
+    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    mesh.tetFlags[t] = userBits;
+    ids[n] = t;
+    for (int i = 0; i < 4; ++i)
+      if (q[i] >= 0)
+        mapVertex(q[i], t);
+  }
+  labelTets(ids, label);
+  // Glue each key's run (checked by replaceTets): two new faces, a new and an outer face, or one alone.
+  const std::vector<FaceEntry>& faces = replaceFaces_;
+  for (size_t k = 0; k < faces.size();)
+  {
+    const size_t j = keyRunEnd(faces, k);
+    const FaceEntry& a = faces[k];
+    if (j - k == 1)
+    {
+      if (a.owner >= 0)
+        mesh.unlink(ids[a.owner], a.face);
+      else if (a.code >= 0)
+      {
+        journalTet(a.code >> 2);
+        mesh.unlink(a.code >> 2, a.code & 3);
+      }
+    }
+    else if (a.owner >= 0)
+      mesh.link(ids[a.owner], a.face, ids[faces[k + 1].owner], faces[k + 1].face);
+    else if (a.code < 0)
+      mesh.unlink(ids[faces[k + 1].owner], faces[k + 1].face);
+    else
+    {
+      journalTet(a.code >> 2);
+      mesh.link(ids[faces[k + 1].owner], faces[k + 1].face, a.code >> 2, a.code & 3);
+    }
+    k = j;
+  }
+  ensureStamp();
+}
+
+void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone& cone, std::vector<int32_t>* created)
+{
+  // Cone tet k has the new vertex at position i = apexAt[k], so its face i is the old boundary face (glued
+  // to the old outer neighbour) and its three other faces contain the new vertex and one boundary edge:
+  // they are matched pairwise by the edge's vertex pair.
+  const uint8_t userBits = userBitsOf(cavity[0]);
+  const int32_t label = labelOf(cavity[0]);
+  for (int32_t t : cavity)
+  {
+    journalTet(t);
+    mesh.freeTet(t);
+  }
+  const size_t n = cone.tets.size();
+  std::vector<int32_t>& ids = replaceIds_;
+  ids.resize(n);
+  edgeSlots_.clear();
+  for (size_t k = 0; k < n; ++k)
+  {
+    const auto& q = cone.tets[k];
+    journalTet(mesh.freeListHead());
+    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    mesh.tetFlags[t] = userBits;
+    ids[k] = t;
+    const int i = cone.apexAt[k];
+    const int32_t c = cone.outerCode[k];
+    if (c >= 0)
+    {
+      journalTet(c >> 2);
+      mesh.link(t, i, c >> 2, c & 3);
+    }
+    for (int j = 0; j < 4; ++j)
+    {
+      mapVertex(q[j], t);
+      if (j == i)
+        continue;
+      // Face j contains the apex (at position i) and the two vertices other than positions i and j.
+      int32_t a = -1, b = -1;
+      for (int m = 0; m < 4; ++m)
+        if (m != i && m != j)
+          (a < 0 ? a : b) = q[m];
+      const uint64_t key =
+        a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b) : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
+      edgeSlots_.push_back({ key, TetMesh::encode(t, j) });
+    }
+  }
+  std::sort(edgeSlots_.begin(), edgeSlots_.end(),
+            [](const std::pair<uint64_t, int32_t>& x, const std::pair<uint64_t, int32_t>& y)
+            { return x.first < y.first; });
+  for (size_t k = 0; k + 1 < edgeSlots_.size(); k += 2)
+  {
+    const int32_t c1 = edgeSlots_[k].second, c2 = edgeSlots_[k + 1].second;
+    mesh.link(c1 >> 2, c1 & 3, c2 >> 2, c2 & 3);
+  }
+  labelTets(ids, label);
+  ensureStamp();
+  if (created)
+    *created = ids;
+}
+
 } // namespace volgrid

@@ -1,13 +1,15 @@
 // MeshNavigator: what both mesh editors stand on (MeshEditor for recovery, TetEditor for refinement and
 // improvement): the vertex -> incident tet map, the tet stamps, the star of a vertex and the tets holding
-// an edge or a face. The editors add their edits (replace, flips, insertion) on top and keep the map up to
-// date through mapVertex().
+// an edge or a face, and the one replace() every edit of both ends in (old tets out, new tets in, adjacency
+// glued, map kept up to date). The editors add their edits (flips, edge removal, insertion) on top.
 #pragma once
 
+#include "EditJournal.h"
 #include "TetMesh.h"
 #include "TetStamps.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -74,7 +76,62 @@ public:
   void ensureStamp();
   TetStamps tetStamp;
 
+  // Optional undo log: when set, every tet slot is saved in it before an edit writes it (EditJournal.h).
+  // Points are the caller's to save before it moves them.
+  EditJournal* journal = nullptr;
+  // Optional per-tet-slot labels (region tags): new tets take the first old tet's, resized as tets are made.
+  std::vector<int32_t>* labels = nullptr;
+
 protected:
+  // Replaces oldTets by newTets (vertex quadruples, positively oriented, filling the same region): old
+  // tets freed, new ones created in order (inheriting the first old tet's user flag bits and label),
+  // adjacency glued through the old tets' outer faces, the vertex map and the journal kept. Returns false
+  // and leaves the mesh untouched when the faces do not match: every face must be shared by two new tets
+  // or by a new tet and an old outer face. With allowOpen the region may change where it has no
+  // neighbour: a new face matching nothing gets no neighbour, an outer tet whose face is gone loses it.
+  bool replaceTets(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
+                   std::vector<int32_t>* created, bool allowOpen);
+  // The cone of a vertex insertion, built by the editor from its cavity: tets[k] has the new vertex at
+  // position apexAt[k], and its face apexAt[k] is a cavity boundary face whose outer neighbour code
+  // (kNoNeighbor on the boundary) is outerCode[k].
+  struct Cone
+  {
+    std::vector<std::array<int32_t, 4>> tets;
+    std::vector<int32_t> outerCode, apexAt;
+    void clear()
+    {
+      tets.clear();
+      outerCode.clear();
+      apexAt.clear();
+    }
+    void add(const std::array<int32_t, 4>& q, int32_t code, int32_t at)
+    {
+      tets.push_back(q);
+      outerCode.push_back(code);
+      apexAt.push_back(at);
+    }
+  };
+  // Replaces the cavity's tets by the cone, as replaceTets() would but without its face matching: the
+  // cone's side faces meet pairwise at the cavity's boundary edges. The caller guarantees a cavity that is
+  // strictly star-shaped from the new vertex (so its boundary is a sphere) with no vertex inside.
+  void replaceByCone(const std::vector<int32_t>& cavity, const Cone& cone, std::vector<int32_t>* created);
+  void journalTet(int32_t t)
+  {
+    if (journal && t >= 0)
+      journal->saveTet(mesh, labels, t);
+  }
+  // What the tets that replace t inherit from it: its user flag bits and its label (-1 without labels).
+  uint8_t userBitsOf(int32_t t) const
+  {
+    return mesh.tetFlags[t] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
+  }
+  int32_t labelOf(int32_t t) const
+  {
+    return labels && static_cast<size_t>(t) < labels->size() ? (*labels)[static_cast<size_t>(t)] : -1;
+  }
+  // Gives the new tets `ids` the label (no-op without labels; the labels grow to the mesh's capacity).
+  void labelTets(const std::vector<int32_t>& ids, int32_t label);
+
   // Records t as the tet of vertex v (the edits call it for every vertex of a new tet).
   void mapVertex(int32_t v, int32_t t)
   {
@@ -84,6 +141,20 @@ protected:
   }
 
 private:
+  // replaceTets() once its faces matched: the mesh edit itself.
+  void commitReplacement(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets);
+  // replaceTets() scratch: a face by its sorted vertex triple; owner -1 for an old outer face (code: its
+  // outer neighbour code), else the index of its new tet.
+  struct FaceEntry
+  {
+    int32_t key[3];
+    int32_t code;
+    int32_t owner;
+    int face;
+  };
+  std::vector<FaceEntry> replaceFaces_;
+  std::vector<int32_t> replaceIds_;
+  std::vector<std::pair<uint64_t, int32_t>> edgeSlots_; // replaceByCone(): (edge key, side face code)
   std::vector<int32_t> vertTet_;
   std::vector<int32_t> findScratch_;
   StaleEntries stale_;

@@ -124,8 +124,8 @@ double sineQualityToDegrees(double q)
 TetEditor::TetEditor(TetMesh& m, const FaceConstraints* c, std::vector<int32_t>* l)
   : MeshNavigator(m, StaleEntries::Trust)
   , constraints(c)
-  , labels(l)
 {
+  labels = l;
 }
 
 std::vector<uint8_t> TetEditor::lockedVertices() const
@@ -173,129 +173,8 @@ bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& 
 bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                         std::vector<int32_t>* created)
 {
-  if (oldTets.empty())
+  if (oldTets.empty() || !replaceTets(oldTets, newTets, created, false))
     return false;
-  const uint32_t s = newStamp();
-  for (int32_t t : oldTets)
-    tetStamp[t] = s;
-  faces_.clear();
-  auto sortKey = [](int32_t* k)
-  {
-    if (k[0] > k[1])
-      std::swap(k[0], k[1]);
-    if (k[1] > k[2])
-      std::swap(k[1], k[2]);
-    if (k[0] > k[1])
-      std::swap(k[0], k[1]);
-  };
-  for (int32_t t : oldTets)
-    for (int i = 0; i < 4; ++i)
-    {
-      const int32_t c = mesh.neighborCode(t, i);
-      if (c >= 0 && tetStamp[c >> 2] == s)
-        continue;
-      FaceEntry e;
-      mesh.faceVertices(t, i, e.key);
-      sortKey(e.key);
-      e.code = c;
-      e.owner = -1;
-      e.face = i;
-      faces_.push_back(e);
-    }
-  const size_t numOuter = faces_.size();
-  for (size_t n = 0; n < newTets.size(); ++n)
-    for (int i = 0; i < 4; ++i)
-    {
-      FaceEntry e;
-      const auto& q = newTets[n];
-      for (int k = 0; k < 3; ++k)
-        e.key[k] = q[TetMesh::kFaceVertex[i][k]];
-      sortKey(e.key);
-      e.code = TetMesh::kNoNeighbor;
-      e.owner = static_cast<int32_t>(n);
-      e.face = i;
-      faces_.push_back(e);
-    }
-  (void)numOuter;
-  std::sort(faces_.begin(), faces_.end(),
-            [](const FaceEntry& a, const FaceEntry& b)
-            {
-              if (a.key[0] != b.key[0])
-                return a.key[0] < b.key[0];
-              if (a.key[1] != b.key[1])
-                return a.key[1] < b.key[1];
-              if (a.key[2] != b.key[2])
-                return a.key[2] < b.key[2];
-              return a.owner < b.owner; // outer (-1) first
-            });
-  // Every key must appear exactly twice: (outer, new) or (new, new).
-  if (faces_.size() % 2)
-    return false;
-  for (size_t k = 0; k < faces_.size(); k += 2)
-  {
-    const FaceEntry& a = faces_[k];
-    const FaceEntry& b = faces_[k + 1];
-    if (a.key[0] != b.key[0] || a.key[1] != b.key[1] || a.key[2] != b.key[2] || b.owner < 0)
-      return false;
-    if (k + 2 < faces_.size())
-    {
-      const FaceEntry& c = faces_[k + 2];
-      if (c.key[0] == a.key[0] && c.key[1] == a.key[1] && c.key[2] == a.key[2])
-        return false;
-    }
-  }
-  // Commit.
-  const uint8_t userBits =
-    mesh.tetFlags[oldTets[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
-  const int32_t label = labels && static_cast<size_t>(oldTets[0]) < labels->size() ? (*labels)[oldTets[0]] : -1;
-  for (int32_t t : oldTets)
-  {
-    journalTet(t);
-    mesh.freeTet(t);
-  }
-  std::vector<int32_t>& ids = queue_;
-  ids.resize(newTets.size());
-  for (size_t n = 0; n < newTets.size(); ++n)
-  {
-    const auto& q = newTets[n];
-    journalTet(mesh.freeListHead());
-    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
-    mesh.tetFlags[t] = userBits;
-    ids[n] = t;
-    for (int i = 0; i < 4; ++i)
-      if (q[i] >= 0)
-      {
-        mapVertex(q[i], t);
-      }
-  }
-  if (labels)
-  {
-    if (labels->size() < static_cast<size_t>(mesh.tetCapacity()))
-      labels->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
-    for (int32_t t : ids)
-      (*labels)[t] = label;
-  }
-  for (size_t k = 0; k < faces_.size(); k += 2)
-  {
-    const FaceEntry& a = faces_[k];
-    const FaceEntry& b = faces_[k + 1];
-    const int32_t tb = ids[b.owner];
-    if (a.owner < 0)
-    {
-      if (a.code < 0)
-        mesh.unlink(tb, b.face);
-      else
-      {
-        journalTet(a.code >> 2);
-        mesh.link(tb, b.face, a.code >> 2, a.code & 3);
-      }
-    }
-    else
-      mesh.link(ids[a.owner], a.face, tb, b.face);
-  }
-  ensureStamp();
-  if (created)
-    *created = ids;
   ++replacements;
   return true;
 }
@@ -442,9 +321,7 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
     s = s2; // the cavity marker from now on
   }
   // 3. Boundary faces, vertex preservation and the spacing test.
-  newTets_.clear();
-  outerCode_.clear();
-  outerFace_.clear();
+  coneTets_.clear();
   if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
     vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
   double best = 1e300;
@@ -465,14 +342,12 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
       }
       std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
       q[i] = v;
-      newTets_.push_back(q);
-      outerCode_.push_back(mesh.neighborCode(t, i));
-      outerFace_.push_back(i);
+      coneTets_.add(q, mesh.neighborCode(t, i), i);
     }
   }
   // Vertices of the cavity must all be on its boundary (stamp them with a round marker).
   const int32_t mark = static_cast<int32_t>(s & 0x7fffffff) | 1;
-  for (const auto& q : newTets_)
+  for (const auto& q : coneTets_.tets)
     for (int k = 0; k < 4; ++k)
       if (q[k] != v)
         vstamp_[q[k]] = mark;
@@ -489,7 +364,7 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
       best = std::min(best, d2);
     }
   }
-  for (const auto& q : newTets_)
+  for (const auto& q : coneTets_.tets)
     for (int k = 0; k < 4; ++k)
       if (q[k] != v)
         vstamp_[q[k]] = 0;
@@ -508,7 +383,8 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
       tetStamp[c] = 0;
     return InsertStatus::TooClose;
   }
-  commitInsertion(created);
+  replaceByCone(cavity_, coneTets_, created);
+  ++replacements;
   return InsertStatus::Inserted;
 }
 
@@ -660,14 +536,12 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
     *replacedQuality = qOld;
   if (commit)
   {
-    // The cone's tets and their outer links, as insertPoint() builds them, then the common commit.
+    // The cone's tets and their outer links, as insertPoint() builds them.
     const uint32_t c = newStamp();
     cavity_ = bestCavity_;
     for (int32_t t : cavity_)
       tetStamp[t] = c;
-    newTets_.clear();
-    outerCode_.clear();
-    outerFace_.clear();
+    coneTets_.clear();
     for (int32_t t : cavity_)
     {
       const int32_t* w = mesh.vertices(t);
@@ -677,81 +551,13 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
           continue;
         std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
         q[i] = v;
-        newTets_.push_back(q);
-        outerCode_.push_back(mesh.neighborCode(t, i));
-        outerFace_.push_back(i);
+        coneTets_.add(q, mesh.neighborCode(t, i), i);
       }
     }
-    commitInsertion(created);
+    replaceByCone(cavity_, coneTets_, created);
+    ++replacements;
   }
   return bestQ;
-}
-
-void TetEditor::commitInsertion(std::vector<int32_t>* created)
-{
-  // The cone from v over the cavity boundary: new tet k replaces v at position outerFace_[k] of a cavity
-  // tet, so its face outerFace_[k] is the old boundary face (linked to the old outer neighbour) and its
-  // three other faces contain v and one boundary edge, matched pairwise by the edge's vertex pair.
-  const uint8_t userBits =
-    mesh.tetFlags[cavity_[0]] & static_cast<uint8_t>(~(TetMesh::kFree | TetMesh::kMarkA | TetMesh::kMarkB));
-  const int32_t label = labels && static_cast<size_t>(cavity_[0]) < labels->size() ? (*labels)[cavity_[0]] : -1;
-  for (int32_t t : cavity_)
-  {
-    journalTet(t);
-    mesh.freeTet(t);
-  }
-  const size_t n = newTets_.size();
-  std::vector<int32_t>& ids = queue_;
-  ids.resize(n);
-  edgeSlots_.clear();
-  for (size_t k = 0; k < n; ++k)
-  {
-    const auto& q = newTets_[k];
-    journalTet(mesh.freeListHead());
-    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
-    mesh.tetFlags[t] = userBits;
-    ids[k] = t;
-    const int i = outerFace_[k];
-    const int32_t c = outerCode_[k];
-    if (c >= 0)
-    {
-      journalTet(c >> 2);
-      mesh.link(t, i, c >> 2, c & 3);
-    }
-    for (int j = 0; j < 4; ++j)
-    {
-      mapVertex(q[j], t);
-      if (j == i)
-        continue;
-      // Face j contains v (at position i) and the two vertices other than positions i and j.
-      int32_t a = -1, b = -1;
-      for (int m = 0; m < 4; ++m)
-        if (m != i && m != j)
-          (a < 0 ? a : b) = q[m];
-      const uint64_t key =
-        a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b) : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
-      edgeSlots_.push_back({ key, TetMesh::encode(t, j) });
-    }
-  }
-  std::sort(edgeSlots_.begin(), edgeSlots_.end(),
-            [](const std::pair<uint64_t, int32_t>& x, const std::pair<uint64_t, int32_t>& y)
-            { return x.first < y.first; });
-  for (size_t k = 0; k + 1 < edgeSlots_.size(); k += 2)
-  {
-    const int32_t c1 = edgeSlots_[k].second, c2 = edgeSlots_[k + 1].second;
-    mesh.link(c1 >> 2, c1 & 3, c2 >> 2, c2 & 3);
-  }
-  if (labels)
-  {
-    if (labels->size() < static_cast<size_t>(mesh.tetCapacity()))
-      labels->resize(static_cast<size_t>(mesh.tetCapacity()), -1);
-    for (int32_t t : ids)
-      (*labels)[t] = label;
-  }
-  ensureStamp();
-  if (created)
-    *created = ids;
-  ++replacements;
 }
 
 } // namespace volgrid

@@ -71,10 +71,7 @@ public:
   TetEditor(TetMesh& mesh, const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr);
 
   const FaceConstraints* constraints;
-  std::vector<int32_t>* labels;
-  // Optional undo log: when set, every tet slot is saved in it before replace() or an insertion writes
-  // it (EditJournal.h). Points are the caller's to save before it moves them.
-  EditJournal* journal = nullptr;
+  // labels and the undo log (journal) are MeshNavigator's: replace() and the insertions keep both.
 
   bool isConstrainedFace(int32_t t, int i) const
   {
@@ -99,8 +96,9 @@ public:
   bool edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& ring, std::vector<int32_t>& tets,
                 int maxRing = 64) const;
 
-  // Replace oldTets by newTets (vertex quadruples, positively oriented, filling the same region).
-  // False (mesh untouched) when the faces do not match. created (optional) receives the new tet ids.
+  // Replace oldTets (at least one) by newTets (vertex quadruples, positively oriented, filling the same
+  // region): MeshNavigator::replaceTets, closed regions only. False (mesh untouched) when the faces do not
+  // match. created (optional) receives the new tet ids.
   bool replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                std::vector<int32_t>* created = nullptr);
 
@@ -138,20 +136,7 @@ public:
   uint64_t replacements = 0;
 
 private:
-  void journalTet(int32_t t)
-  {
-    if (journal && t >= 0)
-      journal->saveTet(mesh, labels, t);
-  }
   // scratch
-  struct FaceEntry
-  {
-    int32_t key[3];
-    int32_t code;  // outer neighbour code (or kNoNeighbor) for outer faces
-    int32_t owner; // -1 for outer faces, else index in newTets
-    int face;
-  };
-  std::vector<FaceEntry> faces_;
   std::vector<int32_t> cavity_, queue_, bfaces_, vstamp_, bestCavity_;
   std::vector<std::pair<int32_t, int32_t>> bfsTets_; // (tet, index of its parent)
   struct ConeFace
@@ -162,10 +147,7 @@ private:
     double quality; // of the tet from the new vertex over this face; -1 when not strictly positive
   };
   std::vector<ConeFace> cone_;
-  std::vector<std::array<int32_t, 4>> newTets_;
-  std::vector<int32_t> outerCode_, outerFace_;
-  std::vector<std::pair<uint64_t, int32_t>> edgeSlots_;
-  void commitInsertion(std::vector<int32_t>* created);
+  Cone coneTets_;
 };
 
 } // namespace volgrid
