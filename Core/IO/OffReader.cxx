@@ -135,7 +135,7 @@ Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
     {
       return sc.error("face " + std::to_string(f) + ": bad corner count '" + std::string(toks[0]) + "'");
     }
-    if (static_cast<int64_t>(toks.size()) < nc + 1)
+    if (nc >= static_cast<int64_t>(toks.size())) // not toks.size() < nc + 1: nc may be INT64_MAX
     {
       return sc.error("face " + std::to_string(f) + ": expected " + std::to_string(nc) + " vertex ids");
     }

@@ -83,7 +83,7 @@ Status readPolygonLine(Scanner& sc, const std::vector<std::string_view>& toks, i
   {
     return sc.error("bad polygon corner count '" + std::string(toks[0]) + "'");
   }
-  if (static_cast<int64_t>(toks.size()) < nc + 1)
+  if (nc >= static_cast<int64_t>(toks.size())) // not toks.size() < nc + 1: nc may be INT64_MAX
   {
     return sc.error("polygon with " + std::to_string(nc) + " corners lists fewer ids");
   }
