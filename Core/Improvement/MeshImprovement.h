@@ -19,7 +19,8 @@
 //      worst tet while that pays. When the worst tet is still under 5 degrees with an interior vertex
 //      (typically recovery's Steiner points pinned against nearly coplanar boundary faces), the whole
 //      stage runs again from the same start with vertex collapses (MeshOptimization.h, vertexRemoval),
-//      and the mesh whose worst tet is better is kept. On small meshes speculative rounds then try a
+//      and the mesh whose worst tet is better is kept (from kLargeMeshTets tets, LargeMesh.h: one run
+//      with collapses from the start instead). On small meshes speculative rounds then try a
 //      few points and keep them only when the worst tet improves. Last, on any mesh size, vertex insertion
 //      as an improvement operation for the worst tets (InsertionImprovement.h): a point searched in the
 //      frame of each face of the tet, flipped and smoothed around, kept only when its region improves.

@@ -378,12 +378,18 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   if (!(worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees))
     unmoved.clear();
   unmoved.resize(static_cast<size_t>(mesh.numVertices()), 0);
-  // The tets in `tets` changed: their vertices' smoothing may find a move again.
+  // A collapse of v depends on v's star alone: one that failed fails again until a tet of the star changes.
+  std::vector<uint8_t> uncollapsible(options.vertexRemoval ? unmoved.size() : 0, 0);
+  // The tets in `tets` changed: their vertices' smoothing and collapse may succeed again.
   auto changed = [&](const std::vector<int32_t>& tets)
   {
     for (int32_t u : tets)
       for (int i = 0; i < 4; ++i)
         unmoved[mesh.vertex(u, i)] = 0;
+    if (!uncollapsible.empty())
+      for (int32_t u : tets)
+        for (int i = 0; i < 4; ++i)
+          uncollapsible[mesh.vertex(u, i)] = 0;
   };
   if (worklist)
     worklist->valid = false; // until this call ends
@@ -483,14 +489,20 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
         const int32_t* x = mesh.vertices(t);
         const int32_t vv[4] = { x[0], x[1], x[2], x[3] };
         for (int i = 0; i < 4; ++i)
-          if (!lock[vv[i]] && tryVertexCollapse(editor, vv[i], &created))
+        {
+          if (lock[vv[i]] || uncollapsible[vv[i]])
+            continue;
+          if (!tryVertexCollapse(editor, vv[i], &created))
           {
-            ++report.vertexRemovals;
-            ++changes;
-            touched.insert(touched.end(), created.begin(), created.end());
-            changed(created);
-            break;
+            uncollapsible[vv[i]] = 1;
+            continue;
           }
+          ++report.vertexRemovals;
+          ++changes;
+          touched.insert(touched.end(), created.begin(), created.end());
+          changed(created);
+          break;
+        }
       }
     }
     report.passes = pass + 1;

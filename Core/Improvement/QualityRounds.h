@@ -4,7 +4,7 @@
 //   optimiseSplitFloor  optimisation, splitting of what it cannot fix (BadTetSplitting.h), floor rounds
 //   withCollapseRerun   optimiseSplitFloor, and again from the same start with vertex collapses when the
 //                       worst tet stays low; the better mesh is kept (below kLargeMeshTets tets, LargeMesh.h; from
-//                       there on, withCollapsesLast: the collapses as passes after the first run)
+//                       there on, withCollapsesThroughout: one run with the collapses on from the start)
 //   speculativeRounds   small meshes: a point for the worst tet, kept only when the worst tet improves
 //   insertionRounds     vertex insertion for the worst tets (InsertionImprovement.h)
 // run() is all of them in that order. Every round changes only unconstrained faces and moves no vertex of
@@ -38,7 +38,7 @@ public:
   Status floorRounds();
   Status optimiseSplitFloor();
   Status withCollapseRerun();
-  Status withCollapsesLast();
+  Status withCollapsesThroughout();
   Status speculativeRounds();
   void insertionRounds();
 
