@@ -1,5 +1,4 @@
 #include "MeshImprovement.h"
-#include "LargeMesh.h"
 #include "SpatialReorder.h"
 
 #include "DomainSizing.h"
@@ -168,7 +167,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       // makes the sweeps and local edits below read mostly consecutive memory (SpatialReorder.h). The
       // vertices before the field points (input, boundary Steiner and cluster points) keep their numbers.
       // Only for meshes too large for the caches (LargeMesh.h).
-      if (mesh.numTets() >= kLargeMeshTets)
+      if (mesh.numTets() >= options.optimization.largeMeshTets)
       {
         const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint);
         renumberTetArray(renumbering, tetRegion, -1);

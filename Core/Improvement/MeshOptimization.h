@@ -56,7 +56,9 @@ struct OptimizationOptions
   // the tets below the target by slot (the quality stage renumbers large meshes in space, so slot order
   // follows space) instead of worst first, and the smoothing step runs on all threads in colour classes
   // (ColouredSmoothing.h: the same mesh at any thread count). Below, worst first and one vertex after the
-  // other, as small meshes always were (another order gives a different, not a better, mesh).
+  // other, as small meshes always were (another order gives a different, not a better, mesh). The quality
+  // stage (MeshImprovement.h) takes the same size for its own large-mesh choices (spatial renumbering,
+  // one run with collapses from the start); tests lower it to take those paths on small meshes.
   int64_t largeMeshTets = kLargeMeshTets;
   // Removal of unlocked vertices of the tets below vertexRemovalDegrees after the flips and moves of a
   // pass, by collapsing them onto a neighbour (see tryVertexCollapse); the removed vertex stays in

@@ -2,7 +2,6 @@
 
 #include "BadTetSplitting.h"
 #include "InsertionImprovement.h"
-#include "LargeMesh.h"
 #include "MeshScan.h"
 
 #include <algorithm>
@@ -208,7 +207,7 @@ Status QualityRounds::optimiseSplitFloor()
 // worst tet gets better).
 Status QualityRounds::withCollapseRerun()
 {
-  if (options.optimization.vertexRemoval && mesh.numTets() >= kLargeMeshTets)
+  if (options.optimization.vertexRemoval && mesh.numTets() >= options.optimization.largeMeshTets)
     return withCollapsesThroughout();
   const bool removal = options.optimization.vertexRemoval;
   TetMesh startMesh;
