@@ -2,6 +2,9 @@
 #include "Commands.h"
 
 #include <csignal>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <cstdio>
 #include <cstring>
 #include <new>
@@ -50,6 +53,13 @@ int main(int argc, char** argv)
   // Past a file size limit (ulimit -f), write() then fails with EFBIG and the writers report it, instead of
   // the process being killed by SIGXFSZ with a cut temporary file.
   std::signal(SIGXFSZ, SIG_IGN);
+#if defined(__GLIBC__)
+  // The mesh's arrays grow by reallocation; glibc's default raises its mmap threshold each time such a
+  // block is freed, so later blocks come from the heap, whose freed space stays in the process. A fixed
+  // 1 MB threshold hands every large block back on free: peak RSS of `volgrid mesh` on the ONERA M6
+  // domain 210 -> 191 MB at 1M tets and 726 -> 688 MB at 5.3M, for about 2% more time in the kernel.
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
   if (argc < 2)
   {
     return printUsage(stderr);
