@@ -93,6 +93,11 @@ public:
   int64_t steinerSegment = 0, steinerFacet = 0;
 
 private:
+  // The breadth-first walks of traceSegment and traceFacet: seedQueue stamps the tets already in queue_
+  // with a fresh stamp (returned); pushOnce appends tet t (-1: none) unless it carries that stamp.
+  uint32_t seedQueue();
+  void pushOnce(int32_t t, uint32_t stamp);
+
   MeshEditor& ed_;
   TetMesh& m_;
   BoundaryConstraints& bc_;
