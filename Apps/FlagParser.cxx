@@ -72,6 +72,14 @@ bool FlagParser::fail(const std::string& problem, bool withUsage) const
   return false;
 }
 
+Flag* FlagParser::find(const std::string& name)
+{
+  for (Flag& flag : flags_)
+    if (flag.name == name)
+      return &flag;
+  return nullptr;
+}
+
 std::string FlagParser::usage() const
 {
   std::string text = header_;
@@ -129,9 +137,7 @@ FlagParser::Result FlagParser::parse(int argc, char** argv, std::vector<std::str
       std::fputs((usage() + moreHelp).c_str(), stdout);
       return Result::Help;
     }
-    const Flag* flag = nullptr;
-    for (const Flag& f : flags_)
-      flag = f.name == a ? &f : flag;
+    const Flag* flag = find(a);
     if (!flag && !a.empty() && a[0] == '-')
     {
       fail(quoteUnknown ? "unknown option '" + a + "'" : "unknown option " + a, true);

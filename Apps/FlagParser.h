@@ -81,6 +81,9 @@ public:
   // "volgrid COMMAND: PROBLEM\n", then the usage text when withUsage. Returns false (for accept).
   bool fail(const std::string& problem, bool withUsage = false) const;
 
+  // The flag named `name` ("--axis"), or nullptr.
+  Flag* find(const std::string& name);
+
   std::string usage() const;
   const char* command() const { return command_; }
   // The flags given with their text as typed ("--max-edge" -> "1e-9"), to name them in later messages.
