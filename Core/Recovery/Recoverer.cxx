@@ -78,23 +78,6 @@ constexpr int kMaxConeRounds = 4;
 
 } // namespace
 
-uint32_t Recoverer::seedQueue()
-{
-  const uint32_t s = ed_.newStamp();
-  for (int32_t t : queue_)
-    ed_.tetStamp[t] = s;
-  return s;
-}
-
-void Recoverer::pushOnce(int32_t t, uint32_t stamp)
-{
-  if (t >= 0 && ed_.tetStamp[t] != stamp)
-  {
-    ed_.tetStamp[t] = stamp;
-    queue_.push_back(t);
-  }
-}
-
 bool Recoverer::traceSegment(int32_t a, int32_t b, std::vector<Crossing>& faces, std::vector<Crossing>& edges)
 {
   faces.clear();
