@@ -214,6 +214,75 @@ bool write(const std::string& path, vtkDataSet* data)
   }
   return true;
 }
+// The run's summary on stdout (--json: one JSON line): counts, Steiner points, the output's dihedral
+// angles and size ratios, the boundary and volume check, the stage times.
+void printReport(const Arguments& args, const volgrid::MesherResult& result,
+                 const volgrid::BoundaryCheckReport& boundary, bool boundaryPreserved, double seconds)
+{
+  const volgrid::MesherStatistics& s = result.stats;
+  // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
+  const volgrid::DihedralSummary dihedral =
+    volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
+                                static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
+  // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
+  const double gradation = args.options.improvement.sizing.gradation;
+  const volgrid::SizeRatioSummary ratio =
+    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, gradation);
+  if (args.json)
+  {
+    const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
+    std::printf(
+      "{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
+      "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
+      "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
+      "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %s, "
+      "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
+      "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
+      "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
+      "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
+      "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
+      "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
+      "\"field_points\": %.6f, \"optimization\": %.6f}, "
+      "\"seconds\": %.6f, "
+      "\"peak_rss_mb\": %.1f}\n",
+      volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
+      static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
+      static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
+      static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets), static_cast<long long>(s.flips),
+      s.recoveryAttempts, static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary),
+      boundaryPreserved ? "true" : "false", json(boundary.tetVolume).c_str(), json(s.enclosedVolume).c_str(),
+      json(boundary.relativeVolumeError, "%.3g").c_str(), static_cast<long long>(s.improvement.fieldPoints),
+      static_cast<long long>(s.improvement.clusterPoints), json(dihedral.minDihedral, "%.4f").c_str(),
+      json(dihedral.maxDihedral, "%.4f").c_str(), json(dihedral.shareBelow10(), "%.6g").c_str(),
+      static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
+      ratio.max, static_cast<long long>(ratio.aboveThreshold), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
+      s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
+      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
+  }
+  else
+  {
+    std::printf("%s: %lld points, %lld triangles -> %lld tets on %lld points (%lld interior Steiner "
+                "points, %lld on the boundary) in %.3f s\n",
+                args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
+                static_cast<long long>(s.tets), static_cast<long long>(s.points),
+                static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
+    std::printf("%lld field points, %lld cluster points; dihedral angles %.2f..%.2f deg, %.3g%% of the tets "
+                "under 10 deg\n",
+                static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
+                dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
+    std::printf("size ratio between face-neighbouring tets (mean edge length): 99th percentile %.3f, max %.3f; "
+                "%lld of %lld faces above the gradation %.3g\n",
+                ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
+                gradation);
+    if (s.forcedTets > 0)
+      std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
+                  "over 170 deg: cell array Forced)\n",
+                  static_cast<long long>(s.forcedTets));
+    std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
+                boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
+                boundary.relativeVolumeError);
+  }
+}
 } // namespace
 
 int runMeshCommand(int argc, char** argv)
@@ -315,69 +384,7 @@ int runMeshCommand(int argc, char** argv)
       return 1;
   }
 
-  const volgrid::MesherStatistics& s = result.stats;
-  // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
-  const volgrid::DihedralSummary dihedral =
-    volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
-                                static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
-  // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
-  const double gradation = args.options.improvement.sizing.gradation;
-  const volgrid::SizeRatioSummary ratio =
-    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, gradation);
-  if (args.json)
-  {
-    const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
-    std::printf(
-      "{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
-      "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
-      "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
-      "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %s, "
-      "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
-      "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
-      "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
-      "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
-      "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
-      "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
-      "\"field_points\": %.6f, \"optimization\": %.6f}, "
-      "\"seconds\": %.6f, "
-      "\"peak_rss_mb\": %.1f}\n",
-      volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
-      static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
-      static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
-      static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets), static_cast<long long>(s.flips),
-      s.recoveryAttempts, static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary),
-      boundaryPreserved ? "true" : "false", json(boundary.tetVolume).c_str(), json(s.enclosedVolume).c_str(),
-      json(boundary.relativeVolumeError, "%.3g").c_str(), static_cast<long long>(s.improvement.fieldPoints),
-      static_cast<long long>(s.improvement.clusterPoints), json(dihedral.minDihedral, "%.4f").c_str(),
-      json(dihedral.maxDihedral, "%.4f").c_str(), json(dihedral.shareBelow10(), "%.6g").c_str(),
-      static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
-      ratio.max, static_cast<long long>(ratio.aboveThreshold), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
-      s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
-      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
-  }
-  else
-  {
-    std::printf("%s: %lld points, %lld triangles -> %lld tets on %lld points (%lld interior Steiner "
-                "points, %lld on the boundary) in %.3f s\n",
-                args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
-                static_cast<long long>(s.tets), static_cast<long long>(s.points),
-                static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
-    std::printf("%lld field points, %lld cluster points; dihedral angles %.2f..%.2f deg, %.3g%% of the tets "
-                "under 10 deg\n",
-                static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
-                dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
-    std::printf("size ratio between face-neighbouring tets (mean edge length): 99th percentile %.3f, max %.3f; "
-                "%lld of %lld faces above the gradation %.3g\n",
-                ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
-                gradation);
-    if (s.forcedTets > 0)
-      std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
-                  "over 170 deg: cell array Forced)\n",
-                  static_cast<long long>(s.forcedTets));
-    std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
-                boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
-                boundary.relativeVolumeError);
-  }
+  printReport(args, result, boundary, boundaryPreserved, seconds);
   if (checkFailed)
   {
     std::fprintf(stderr, "volgrid mesh: check failed (nothing written): %s\n", boundary.summary().c_str());
