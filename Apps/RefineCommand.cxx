@@ -156,6 +156,56 @@ void attachPatches(const volgrid::SolverMesh& patches, vtkUnstructuredGrid* out)
   if (!regions.empty())
     VolGridSetLabelNames(out, "RegionNames", regions, patches.regionNames, "region");
 }
+// MESH's points and tets as flat arrays; false (the message printed) when a cell is not a tetrahedron.
+bool tetsOfGrid(vtkUnstructuredGrid* grid, std::vector<double>& points, std::vector<int32_t>& tets)
+{
+  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
+  points.resize(3 * static_cast<size_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+    grid->GetPoint(i, points.data() + 3 * i);
+  tets.reserve(4 * static_cast<size_t>(nc));
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    if (grid->GetCellType(c) != VTK_TETRA)
+    {
+      std::fprintf(stderr, "volgrid refine: cell %lld is not a tetrahedron (only tet meshes are refined)\n",
+                   static_cast<long long>(c));
+      return false;
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* ids = nullptr;
+    grid->GetCellPoints(c, npts, ids);
+    for (int k = 0; k < 4; ++k)
+      tets.push_back(static_cast<int32_t>(ids[k]));
+  }
+  return true;
+}
+
+// The refined mesh as a grid: every input point keeps its id (point data copied), new points follow
+// (null values); cell array Region from `regions` (per tet of the mesh).
+void fillRefinedGrid(const volgrid::TetMesh& mesh, vtkUnstructuredGrid* input, const std::vector<int32_t>& regions,
+                     vtkUnstructuredGrid* out)
+{
+  std::vector<int32_t> kept(static_cast<size_t>(mesh.numVertices()));
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    kept[v] = v;
+  VolGridFillUnstructuredGrid(mesh, kept, out);
+  vtkPointData* outPD = out->GetPointData();
+  outPD->CopyAllocate(input->GetPointData(), mesh.numVertices());
+  for (vtkIdType v = 0; v < mesh.numVertices(); ++v)
+  {
+    if (v < input->GetNumberOfPoints())
+      outPD->CopyData(input->GetPointData(), v, v);
+    else
+      outPD->NullData(v);
+  }
+  vtkNew<vtkIntArray> region;
+  region->SetName("Region");
+  region->SetNumberOfValues(mesh.numFiniteTets());
+  vtkIdType cell = 0;
+  mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
+  out->GetCellData()->AddArray(region);
+}
 } // namespace
 
 int runRefineCommand(int argc, char** argv)
@@ -185,25 +235,10 @@ int runRefineCommand(int argc, char** argv)
     return 1;
   }
   const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
-  std::vector<double> points(3 * static_cast<size_t>(np));
-  for (vtkIdType i = 0; i < np; ++i)
-    grid->GetPoint(i, points.data() + 3 * i);
+  std::vector<double> points;
   std::vector<int32_t> tets;
-  tets.reserve(4 * static_cast<size_t>(nc));
-  for (vtkIdType c = 0; c < nc; ++c)
-  {
-    if (grid->GetCellType(c) != VTK_TETRA)
-    {
-      std::fprintf(stderr, "volgrid refine: cell %lld is not a tetrahedron (only tet meshes are refined)\n",
-                   static_cast<long long>(c));
-      return 1;
-    }
-    vtkIdType npts = 0;
-    const vtkIdType* ids = nullptr;
-    grid->GetCellPoints(c, npts, ids);
-    for (int k = 0; k < 4; ++k)
-      tets.push_back(static_cast<int32_t>(ids[k]));
-  }
+  if (!tetsOfGrid(grid, points, tets))
+    return 1;
   // The boundary patches, when MESH has them (kept exactly, so they carry over to the output).
   volgrid::SolverMesh patches;
   std::string patchError;
@@ -255,27 +290,8 @@ int runRefineCommand(int argc, char** argv)
   }
   const bool boundaryIdentical = boundaryFaces(mesh) == facesBefore;
 
-  // Output: every input point keeps its id (point data copied), new points follow (null values).
-  std::vector<int32_t> kept(static_cast<size_t>(mesh.numVertices()));
-  for (int32_t v = 0; v < mesh.numVertices(); ++v)
-    kept[v] = v;
   vtkNew<vtkUnstructuredGrid> out;
-  VolGridFillUnstructuredGrid(mesh, kept, out);
-  vtkPointData* outPD = out->GetPointData();
-  outPD->CopyAllocate(grid->GetPointData(), mesh.numVertices());
-  for (vtkIdType v = 0; v < mesh.numVertices(); ++v)
-  {
-    if (v < np)
-      outPD->CopyData(grid->GetPointData(), v, v);
-    else
-      outPD->NullData(v);
-  }
-  vtkNew<vtkIntArray> region;
-  region->SetName("Region");
-  region->SetNumberOfValues(mesh.numFiniteTets());
-  vtkIdType cell = 0;
-  mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
-  out->GetCellData()->AddArray(region);
+  fillRefinedGrid(mesh, grid, regions, out);
   if (hasPatches && boundaryIdentical)
     attachPatches(patches, out);
   std::string writeError;
