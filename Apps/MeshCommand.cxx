@@ -1,6 +1,7 @@
 // volgrid mesh: boundary-conforming tetrahedral mesh of the volume enclosed by closed surfaces.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "FlagParser.h"
 #include "MeshExport.h"
 #include "MeshLayers.h"
 #include "OutputPaths.h"
@@ -33,36 +34,18 @@ using volgrid::cli::readPointsWithArray; // PointFiles.h
 
 namespace
 {
-using volgrid::cli::optionUsage;
 namespace option = volgrid::option;
-const std::string kUsage =
-  std::string(
-    "usage: volgrid mesh SURFACE OUT.vtu|OUT.vtk|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
-    "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [--threads N]\n"
-    "                    [density and quality options]\n"
-    "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
-    "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region; OUT.vtk:\n"
-    "  the same, legacy binary VTK);\n"
-    "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
-    "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
-    "Density (field points, paper 7.2; on by default):\n") +
-  optionUsage(option::alpha, "A") + optionUsage(option::beta, "B") + optionUsage(option::sizeScale, "S") +
-  optionUsage(option::gradation, "G") + optionUsage(option::maxEdge, "L") + optionUsage(option::maxVolume, "V") +
-  "  --no-field-points    boundary points (and recovery's interior points) only\n"
-  "Clustering and sizing:\n"
-  "  --sizing FILE        a data set (.vtu .vtp .vtk, or text 'x y z size' lines) whose point array\n"
-  "                       --size-array NAME gives target edge lengths, interpolated in space\n"
-  "  --cluster FILE       points (any data set, or text 'x y z [size]' lines) inserted into the volume; the\n"
-  "                       point array --size-array NAME (if present) or --cluster-size H densifies around them\n"
-  "Quality (optimisation: flips, edge removal, smoothing; on by default):\n"
-  "  --quality            optimise (default)                    --no-optimize    do not\n" +
-  optionUsage(option::targetAngle, "DEG") + optionUsage(option::passes, "N") +
-  "  --no-smoothing       flips only\n"
-  "Limits:\n"
-  "  --max-tets N         refuse before any work when the mesh is estimated to exceed N tets (default:\n"
-  "                       what the available memory holds)\n"
-  "  --threads N          0 (default) = all cores; the mesh is byte-identical for any N\n"
-  "Writes are atomic: OUT is replaced only when the whole file was written, never on failure.\n";
+const char* kHeader =
+  "usage: volgrid mesh SURFACE OUT.vtu|OUT.vtk|OUT.msh|OUT.su2|... [--json] [--boundary OUT.vtp] [--check]\n"
+  "                    [--regions even-odd|orientation|keep-all] [--no-steiner] [--threads N]\n"
+  "                    [density and quality options]\n"
+  "  Meshes the volume enclosed by the closed shells of SURFACE (.stl .obj .ply .off .vtp .vtk .mesh\n"
+  "  .poly .smesh .msh) keeping its boundary exactly. OUT.vtu gets the tets (cell array Region; OUT.vtk:\n"
+  "  the same, legacy binary VTK);\n"
+  "  --boundary writes the boundary triangles with PatchId. --check verifies the mesh exactly and\n"
+  "  exits 1 if it fails. Exit 1 also on bad input (the message names the defect and the first ids).\n"
+  "Density (field points, paper 7.2; on by default):\n";
+const char* kFooter = "Writes are atomic: OUT is replaced only when the whole file was written, never on failure.\n";
 
 struct Arguments
 {
@@ -79,157 +62,106 @@ struct Arguments
   volgrid::LayerOptions layers; // --layers ... (MeshLayers.h)
 };
 
-bool parseArguments(int argc, char** argv, Arguments& args)
+// The flags of `volgrid mesh`, in the order of their usage lines.
+void declareFlags(volgrid::cli::FlagParser& p, Arguments& args, long long& threads, std::string& regions)
 {
-  std::vector<std::string> positional;
-  for (int i = 1; i < argc; ++i)
+  volgrid::ImprovementOptions& im = args.options.improvement;
+  const auto set = [&im](const volgrid::OptionSpec& spec, double x) { volgrid::setOption(im, spec, x); };
+  p.add("--json", args.json, true);
+  p.add("--check", args.check, true);
+  p.add("--no-steiner", args.options.allowSteinerPoints, false);
+  p.add("--boundary", args.boundaryOut);
+  p.add("--regions", regions).accept = [&p, &args](const char* v)
   {
-    const std::string a = argv[i];
-    auto value = [&](const char* name) -> const char*
-    {
-      if (i + 1 >= argc)
+    const char* names[] = { "even-odd", "orientation", "keep-all" };
+    const volgrid::RegionRule rules[] = { volgrid::RegionRule::EvenOdd, volgrid::RegionRule::Orientation,
+                                          volgrid::RegionRule::KeepAll };
+    for (int k = 0; k < 3; ++k)
+      if (std::strcmp(v, names[k]) == 0)
       {
-        std::fprintf(stderr, "volgrid mesh: %s needs a value\n", name);
-        return nullptr;
+        args.options.regionRule = rules[k];
+        return true;
       }
-      return argv[++i];
-    };
-    if (const int taken = volgrid::cli::parseLayerOption(argc, argv, i, args.layers))
-    {
-      if (taken < 0)
-        return false;
-      continue;
-    }
-    if (a == "--json")
-      args.json = true;
-    else if (a == "--check")
-      args.check = true;
-    else if (a == "--no-steiner")
-      args.options.allowSteinerPoints = false;
-    else if (a == "--no-field-points")
-      args.options.improvement.fieldPoints = false;
-    else if (a == "--quality")
-      args.options.improvement.optimize = true;
-    else if (a == "--no-optimize")
-      args.options.improvement.optimize = false;
-    else if (a == "--no-smoothing")
-      args.options.improvement.optimization.smoothing = false;
-    else if (const volgrid::OptionSpec* spec = a.size() > 2 ? volgrid::findOption(a.substr(2)) : nullptr)
-    {
-      const char* v = value(a.c_str());
-      double x = 0;
-      if (!v || !volgrid::cli::parseOption("mesh", *spec, v, x))
-        return false;
-      args.given[a] = v;
-      volgrid::setOption(args.options.improvement, *spec, x);
-    }
-    else if (a == "--threads" || a == "--max-tets")
-    {
-      const char* v = value(a.c_str());
-      long long n = 0;
-      if (!v || !volgrid::cli::parseLong("mesh", a.c_str(), v, n))
-        return false;
-      if (a == "--max-tets")
-      {
-        if (!volgrid::cli::parseMaxTets("mesh", v, args.maxTets))
-          return false;
-      }
-      else if (n < 0 || n > 1024)
-      {
-        std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
-        return false;
-      }
-      else
-        args.options.threads = static_cast<int>(n);
-    }
-    else if (a == "--cluster-size")
-    {
-      const char* v = value(a.c_str());
-      double x = 0;
-      if (!v || !volgrid::cli::parseDouble("mesh", a.c_str(), v, x))
-        return false;
-      args.given[a] = v;
-      if (!(x > 0))
-      {
-        std::fprintf(stderr, "volgrid mesh: %s is out of range: %s (see --help)\n", a.c_str(), v);
-        return false;
-      }
-      args.clusterSize = x;
-    }
-    else if (a == "--sizing" || a == "--cluster" || a == "--size-array")
-    {
-      const char* v = value(a.c_str());
-      if (!v)
-        return false;
-      (a == "--sizing" ? args.sizingFile : a == "--cluster" ? args.clusterFile : args.sizeArray) = v;
-    }
-    else if (a == "--boundary")
-    {
-      const char* v = value("--boundary");
-      if (!v)
-        return false;
-      args.boundaryOut = v;
-    }
-    else if (a == "--regions")
-    {
-      const char* v = value("--regions");
-      if (!v)
-        return false;
-      if (std::strcmp(v, "even-odd") == 0)
-        args.options.regionRule = volgrid::RegionRule::EvenOdd;
-      else if (std::strcmp(v, "orientation") == 0)
-        args.options.regionRule = volgrid::RegionRule::Orientation;
-      else if (std::strcmp(v, "keep-all") == 0)
-        args.options.regionRule = volgrid::RegionRule::KeepAll;
-      else
-      {
-        std::fprintf(stderr, "volgrid mesh: --regions is even-odd, orientation or keep-all, not '%s'\n", v);
-        return false;
-      }
-    }
-    else if (a == "--help" || a == "-h")
-    {
-      std::fputs(kUsage.c_str(), stdout);
-      std::fputs(volgrid::cli::kLayerUsage.c_str(), stdout);
-      std::fputs(volgrid::cli::kExportUsage, stdout);
-      std::exit(0);
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      std::fprintf(stderr, "volgrid mesh: unknown option '%s'\n%s", a.c_str(), kUsage.c_str());
-      return false;
-    }
-    else
-      positional.push_back(a);
-  }
+    return p.fail(std::string("--regions is even-odd, orientation or keep-all, not '") + v + "'");
+  };
+  for (const auto& row : { std::make_pair(&option::alpha, "A"), std::make_pair(&option::beta, "B"),
+                           std::make_pair(&option::sizeScale, "S"), std::make_pair(&option::gradation, "G"),
+                           std::make_pair(&option::maxEdge, "L"), std::make_pair(&option::maxVolume, "V") })
+    p.add(*row.first, row.second, set);
+  p.add("--no-field-points", im.fieldPoints, false,
+        "  --no-field-points    boundary points (and recovery's interior points) only\n"
+        "Clustering and sizing:\n");
+  p.add("--sizing", args.sizingFile,
+        "  --sizing FILE        a data set (.vtu .vtp .vtk, or text 'x y z size' lines) whose point array\n"
+        "                       --size-array NAME gives target edge lengths, interpolated in space\n");
+  p.add("--cluster", args.clusterFile,
+        "  --cluster FILE       points (any data set, or text 'x y z [size]' lines) inserted into the volume; the\n"
+        "                       point array --size-array NAME (if present) or --cluster-size H densifies around "
+        "them\n");
+  p.add("--size-array", args.sizeArray);
+  p.add("--cluster-size", args.clusterSize).accept = [&p, &args](const char* v)
+  { return args.clusterSize > 0 || p.fail(std::string("--cluster-size is out of range: ") + v + " (see --help)"); };
+  p.add("--quality", im.optimize, true,
+        "Quality (optimisation: flips, edge removal, smoothing; on by default):\n"
+        "  --quality            optimise (default)                    --no-optimize    do not\n");
+  p.add("--no-optimize", im.optimize, false);
+  p.add(option::targetAngle, "DEG", set);
+  p.add(option::passes, "N", set);
+  p.add("--no-smoothing", im.optimization.smoothing, false, "  --no-smoothing       flips only\n");
+  p.add("--max-tets", args.maxTets,
+        "Limits:\n"
+        "  --max-tets N         refuse before any work when the mesh is estimated to exceed N tets (default:\n"
+        "                       what the available memory holds)\n")
+    .accept = [&args](const char* v) { return volgrid::cli::parseMaxTets("mesh", v, args.maxTets); };
+  p.add("--threads", threads, "  --threads N          0 (default) = all cores; the mesh is byte-identical for any N\n")
+    .accept = [&p, &threads](const char* v)
+  {
+    return (threads >= 0 && threads <= 1024) ||
+      p.fail(std::string("--threads is out of range: ") + v + " (see --help)");
+  };
+}
+
+// 2 (after the message) when the arguments are bad, 0 after --help, -1 to go on meshing.
+int parseArguments(int argc, char** argv, Arguments& args)
+{
+  long long threads = args.options.threads;
+  std::string regions;
+  volgrid::cli::FlagParser p("mesh", kHeader, kFooter);
+  declareFlags(p, args, threads, regions);
+  p.moreHelp = volgrid::cli::kLayerUsage + volgrid::cli::kExportUsage;
+  p.before = [&args](int n, char** v, int& i) { return volgrid::cli::parseLayerOption(n, v, i, args.layers); };
+  std::vector<std::string> positional;
+  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
+  if (result != volgrid::cli::FlagParser::Result::Ok)
+    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  args.options.threads = static_cast<int>(threads);
+  args.given = p.given();
   if (!args.layers.enabled() &&
       (args.layers.firstHeight != 0 || args.layers.yPlus != 0 || args.layers.thickness != 0 ||
        !args.layers.patchNames.empty() || !args.layers.patchIds.empty() || args.layers.splitPrisms))
   {
-    std::fprintf(stderr,
-                 "volgrid mesh: --first-height, --y-plus, --layer-thickness, --layer-patches and --split-prisms "
-                 "need --layers N\n");
-    return false;
+    p.fail("--first-height, --y-plus, --layer-thickness, --layer-patches and --split-prisms need --layers N");
+    return 2;
   }
   if (positional.size() != 2)
   {
-    std::fprintf(stderr, "volgrid mesh: expected SURFACE and OUT.vtu\n%s", kUsage.c_str());
-    return false;
+    p.fail("expected SURFACE and OUT.vtu", true);
+    return 2;
   }
   args.surface = positional[0];
   args.out = positional[1];
   volgrid::ImprovementOptions& im = args.options.improvement;
   if (!args.sizingFile.empty() &&
       !readPointsWithArray("mesh", args.sizingFile, args.sizeArray, true, im.sizingPoints, im.sizingValues))
-    return false;
+    return 2;
   if (!args.clusterFile.empty())
   {
     if (!readPointsWithArray("mesh", args.clusterFile, args.sizeArray, false, im.clusterPoints, im.clusterSizes))
-      return false;
+      return 2;
     if (args.clusterSize > 0)
       im.clusterSizes.assign(im.clusterPoints.size() / 3, args.clusterSize);
   }
-  return true;
+  return -1;
 }
 
 // OUT.vtk: the legacy binary format (for tools that read only legacy VTK).
@@ -282,6 +214,75 @@ bool write(const std::string& path, vtkDataSet* data)
   }
   return true;
 }
+// The run's summary on stdout (--json: one JSON line): counts, Steiner points, the output's dihedral
+// angles and size ratios, the boundary and volume check, the stage times.
+void printReport(const Arguments& args, const volgrid::MesherResult& result,
+                 const volgrid::BoundaryCheckReport& boundary, bool boundaryPreserved, double seconds)
+{
+  const volgrid::MesherStatistics& s = result.stats;
+  // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
+  const volgrid::DihedralSummary dihedral =
+    volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
+                                static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
+  // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
+  const double gradation = args.options.improvement.sizing.gradation;
+  const volgrid::SizeRatioSummary ratio =
+    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, gradation);
+  if (args.json)
+  {
+    const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
+    std::printf(
+      "{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
+      "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
+      "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
+      "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %s, "
+      "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
+      "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
+      "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
+      "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
+      "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
+      "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
+      "\"field_points\": %.6f, \"optimization\": %.6f}, "
+      "\"seconds\": %.6f, "
+      "\"peak_rss_mb\": %.1f}\n",
+      volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
+      static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
+      static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
+      static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets), static_cast<long long>(s.flips),
+      s.recoveryAttempts, static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary),
+      boundaryPreserved ? "true" : "false", json(boundary.tetVolume).c_str(), json(s.enclosedVolume).c_str(),
+      json(boundary.relativeVolumeError, "%.3g").c_str(), static_cast<long long>(s.improvement.fieldPoints),
+      static_cast<long long>(s.improvement.clusterPoints), json(dihedral.minDihedral, "%.4f").c_str(),
+      json(dihedral.maxDihedral, "%.4f").c_str(), json(dihedral.shareBelow10(), "%.6g").c_str(),
+      static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
+      ratio.max, static_cast<long long>(ratio.aboveThreshold), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
+      s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
+      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
+  }
+  else
+  {
+    std::printf("%s: %lld points, %lld triangles -> %lld tets on %lld points (%lld interior Steiner "
+                "points, %lld on the boundary) in %.3f s\n",
+                args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
+                static_cast<long long>(s.tets), static_cast<long long>(s.points),
+                static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
+    std::printf("%lld field points, %lld cluster points; dihedral angles %.2f..%.2f deg, %.3g%% of the tets "
+                "under 10 deg\n",
+                static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
+                dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
+    std::printf("size ratio between face-neighbouring tets (mean edge length): 99th percentile %.3f, max %.3f; "
+                "%lld of %lld faces above the gradation %.3g\n",
+                ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
+                gradation);
+    if (s.forcedTets > 0)
+      std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
+                  "over 170 deg: cell array Forced)\n",
+                  static_cast<long long>(s.forcedTets));
+    std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
+                boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
+                boundary.relativeVolumeError);
+  }
+}
 } // namespace
 
 int runMeshCommand(int argc, char** argv)
@@ -290,8 +291,8 @@ int runMeshCommand(int argc, char** argv)
   if (!volgrid::cli::takeExportOptions("mesh", argc, argv, exportRequest))
     return 2;
   Arguments args;
-  if (!parseArguments(argc, argv, args))
-    return 2;
+  if (const int code = parseArguments(argc, argv, args); code >= 0)
+    return code;
   volgrid::MeshFormat format = volgrid::MeshFormat::Unknown;
   bool vtkOutput = true;
   if (!volgrid::cli::chooseFormat("mesh", args.out, exportRequest, format, vtkOutput))
@@ -383,69 +384,7 @@ int runMeshCommand(int argc, char** argv)
       return 1;
   }
 
-  const volgrid::MesherStatistics& s = result.stats;
-  // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
-  const volgrid::DihedralSummary dihedral =
-    volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
-                                static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
-  // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
-  const double gradation = args.options.improvement.sizing.gradation;
-  const volgrid::SizeRatioSummary ratio =
-    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, gradation);
-  if (args.json)
-  {
-    const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
-    std::printf(
-      "{\"input\": %s, \"input_points\": %lld, \"merged_points\": %lld, \"input_triangles\": %lld, "
-      "\"points\": %lld, \"tets\": %lld, \"regions\": %lld, \"missing_edges\": %lld, "
-      "\"missing_facets\": %lld, \"flips\": %lld, \"recovery_attempts\": %d, \"steiner_interior\": %lld, "
-      "\"steiner_boundary\": %lld, \"boundary_preserved\": %s, \"volume\": %s, "
-      "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
-      "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
-      "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
-      "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
-      "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
-      "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
-      "\"field_points\": %.6f, \"optimization\": %.6f}, "
-      "\"seconds\": %.6f, "
-      "\"peak_rss_mb\": %.1f}\n",
-      volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
-      static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
-      static_cast<long long>(s.points), static_cast<long long>(s.tets), static_cast<long long>(s.regions),
-      static_cast<long long>(s.missingEdges), static_cast<long long>(s.missingFacets), static_cast<long long>(s.flips),
-      s.recoveryAttempts, static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary),
-      boundaryPreserved ? "true" : "false", json(boundary.tetVolume).c_str(), json(s.enclosedVolume).c_str(),
-      json(boundary.relativeVolumeError, "%.3g").c_str(), static_cast<long long>(s.improvement.fieldPoints),
-      static_cast<long long>(s.improvement.clusterPoints), json(dihedral.minDihedral, "%.4f").c_str(),
-      json(dihedral.maxDihedral, "%.4f").c_str(), json(dihedral.shareBelow10(), "%.6g").c_str(),
-      static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
-      ratio.max, static_cast<long long>(ratio.aboveThreshold), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
-      s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
-      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
-  }
-  else
-  {
-    std::printf("%s: %lld points, %lld triangles -> %lld tets on %lld points (%lld interior Steiner "
-                "points, %lld on the boundary) in %.3f s\n",
-                args.surface.c_str(), static_cast<long long>(s.inputPoints), static_cast<long long>(s.inputTriangles),
-                static_cast<long long>(s.tets), static_cast<long long>(s.points),
-                static_cast<long long>(s.steinerInterior), static_cast<long long>(s.steinerBoundary), seconds);
-    std::printf("%lld field points, %lld cluster points; dihedral angles %.2f..%.2f deg, %.3g%% of the tets "
-                "under 10 deg\n",
-                static_cast<long long>(s.improvement.fieldPoints), static_cast<long long>(s.improvement.clusterPoints),
-                dihedral.minDihedral, dihedral.maxDihedral, 100.0 * dihedral.shareBelow10());
-    std::printf("size ratio between face-neighbouring tets (mean edge length): 99th percentile %.3f, max %.3f; "
-                "%lld of %lld faces above the gradation %.3g\n",
-                ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
-                gradation);
-    if (s.forcedTets > 0)
-      std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
-                  "over 170 deg: cell array Forced)\n",
-                  static_cast<long long>(s.forcedTets));
-    std::printf("boundary %s; volume %.12g (enclosed %.12g, relative error %.2g)\n",
-                boundaryPreserved ? "preserved exactly" : "NOT preserved", boundary.tetVolume, s.enclosedVolume,
-                boundary.relativeVolumeError);
-  }
+  printReport(args, result, boundary, boundaryPreserved, seconds);
   if (checkFailed)
   {
     std::fprintf(stderr, "volgrid mesh: check failed (nothing written): %s\n", boundary.summary().c_str());

@@ -6,6 +6,7 @@
 // output is still written) or a file cannot be read or written, 2 for bad arguments.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "FlagParser.h"
 #include "OutputPaths.h"
 #include "SurfaceFile.h"
 
@@ -24,36 +25,20 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace
 {
-const char* kUsage =
+const char* kHeader =
   "usage: volgrid prep IN... OUT.{vtp,vtk,stl,off} [options]\n"
   "  Merges the input surfaces (each a part: PatchId), repairs them (weld, remove zero-area and duplicate\n"
-  "  triangles, stitch, fill holes, orient), optionally adds an enclosure, and reports what is left.\n"
-  "  --enclosure box|sphere|cylinder|hemisphere|ellipsoid   far-field enclosure around the input\n"
-  "  --enclosure-scale S   enclosure size as a factor of the input's bounding box (>= 1, default 10)\n"
-  "  --center X,Y,Z --dimensions A[,B[,C]]   explicit enclosure (then no input is needed): box edges;\n"
-  "                        sphere, hemisphere radius; cylinder radius, height; ellipsoid semi-axes\n"
-  "  --axis x|y|z          cylinder / hemisphere axis (default z)\n"
-  "  --edge-length L       target edge length of the enclosure (default 0: 1/16 of its size)\n"
-  "  --merge-tolerance T   weld points closer than T * bounding-box diagonal (default 1e-6; 0: exactly\n"
-  "                        coincident points only, like --exact)\n"
-  "  --exact               merge exactly coincident points only\n"
-  "  --fill-holes N        fill holes of at most N edges (default 200; 0: leave holes open)\n"
-  "  --no-orient           keep the triangles' orientation\n"
-  "  --no-intersections    skip the self-intersection test\n"
-  "  --json                one JSON line of counts on stdout\n"
+  "  triangles, stitch, fill holes, orient), optionally adds an enclosure, and reports what is left.\n";
+const char* kFooter =
   "  Exit 0: the output is meshable; 1: defects remain (output written) or I/O error; 2: bad arguments.\n";
-
-int usage(const std::string& problem)
-{
-  std::fprintf(stderr, "volgrid prep: %s\n%s", problem.c_str(), kUsage);
-  return 2;
-}
 
 // "A", "A,B" or "A,B,C" (missing values repeat the last one given).
 bool parseTriple(const char* text, double out[3])
@@ -148,122 +133,174 @@ void nameFilePatches(const std::string& file, volgrid::SurfaceMesh& mesh)
 }
 } // namespace
 
-int runPrepCommand(int argc, char** argv)
+namespace
 {
-  std::vector<std::string> files;
-  bool json = false;
-  vtkNew<vtkVolGridSurfacePrep> prep;
-  bool haveCenter = false, haveDimensions = false;
-  for (int i = 1; i < argc; ++i)
+struct Arguments
+{
+  std::vector<std::string> files; // the input surfaces
+  std::string out;
+  bool json = false, exact = false, orient = true, intersections = true;
+  std::string enclosure, axis, center, dimensions;
+  double scale = 0, edgeLength = 0, mergeTolerance = 0;
+  long long fillHoles = 0;
+};
+
+const char* kBadEnclosure = "--enclosure expects box, sphere, cylinder, hemisphere or ellipsoid";
+const char* kBadAxis = "--axis expects x, y or z";
+const char* kBadTriple = " expects one to three numbers X[,Y[,Z]]";
+
+// A real flag of the filter's in [lo, hi] (a missing value "needs a number"); outside, "NAME PROBLEM" and
+// the usage; inside, `set` hands it to the filter.
+void addRanged(volgrid::cli::FlagParser& p, const char* name, double& value, double lo, double hi, const char* problem,
+               const char* help, std::function<void(double)> set)
+{
+  volgrid::cli::Flag& flag = p.add(name, value, help);
+  flag.missing = std::string(name) + " needs a number";
+  flag.accept = [&p, &value, lo, hi, name, problem, set](const char*)
   {
-    const std::string a = argv[i];
-    auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-    double number = 0;
-    if (a == "--json")
-      json = true;
-    else if (a == "-h" || a == "--help")
-    {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    else if (a == "--exact")
-      prep->ExactMergeOnlyOn();
-    else if (a == "--no-orient")
-      prep->OrientShellsOff();
-    else if (a == "--no-intersections")
-      prep->CheckIntersectionsOff();
-    else if (a == "--enclosure")
-    {
-      const char* v = value();
-      const std::string shape = v ? v : "";
-      const char* names[] = { "none", "box", "sphere", "cylinder", "hemisphere", "ellipsoid" };
-      int found = -1;
-      for (int k = 0; k < 6; ++k)
-        if (shape == names[k])
-          found = k;
-      if (found < 0)
-        return usage("--enclosure expects box, sphere, cylinder, hemisphere or ellipsoid");
-      prep->SetEnclosure(found);
-    }
-    else if (a == "--axis")
-    {
-      const char* v = value();
-      const std::string axis = v ? v : "";
-      if (axis != "x" && axis != "y" && axis != "z")
-        return usage("--axis expects x, y or z");
-      prep->SetEnclosureAxis(axis[0] - 'x');
-    }
-    else if (a == "--center" || a == "--dimensions")
-    {
-      const char* v = value();
-      double t[3];
-      if (!v || !parseTriple(v, t))
-        return usage(a + " expects one to three numbers X[,Y[,Z]]");
-      if (a == "--center")
-        prep->SetEnclosureCenter(t), haveCenter = true;
-      else
+    if (value < lo || value > hi)
+      return p.fail(std::string(name) + " " + problem, true);
+    set(value);
+    return true;
+  };
+}
+
+// The enclosure flags of `volgrid prep`, in the order of their usage lines; each check sets the filter.
+void declareEnclosureFlags(volgrid::cli::FlagParser& p, Arguments& args, vtkVolGridSurfacePrep* prep)
+{
+  p.add("--enclosure", args.enclosure,
+        "  --enclosure box|sphere|cylinder|hemisphere|ellipsoid   far-field enclosure around the input\n")
+    .accept = [&p, prep](const char* v)
+  {
+    const char* names[] = { "none", "box", "sphere", "cylinder", "hemisphere", "ellipsoid" };
+    for (int k = 0; k < 6; ++k)
+      if (std::strcmp(v, names[k]) == 0)
       {
-        if (t[0] <= 0 || t[1] < 0 || t[2] < 0)
-          return usage("--dimensions must be positive");
-        prep->SetEnclosureDimensions(t), haveDimensions = true;
+        prep->SetEnclosure(k);
+        return true;
       }
-    }
-    else if (a == "--enclosure-scale" || a == "--edge-length" || a == "--merge-tolerance")
-    {
-      const char* v = value();
-      if (!v || !volgrid::cli::parseDouble("prep", a.c_str(), v, number))
-        return v ? 2 : usage(a + " needs a number");
-      if (a == "--enclosure-scale")
-      {
-        if (number < 1.0 || number > 1.0e6)
-          return usage("--enclosure-scale must be in [1, 1e6]");
-        prep->SetEnclosureScale(number);
-      }
-      else if (a == "--edge-length")
-      {
-        if (number < 0.0)
-          return usage("--edge-length must be >= 0");
-        prep->SetEnclosureEdgeLength(number);
-      }
-      else
-      {
-        if (number < 0.0 || number > 0.01)
-          return usage("--merge-tolerance must be in [0, 0.01]");
-        prep->SetMergeTolerance(number);
-      }
-    }
-    else if (a == "--fill-holes")
-    {
-      const char* v = value();
-      long long n = 0;
-      if (!v || !volgrid::cli::parseLong("prep", "--fill-holes", v, n))
-        return v ? 2 : usage("--fill-holes needs a number");
-      if (n < 0 || n > 1000000)
-        return usage("--fill-holes must be in [0, 1000000]");
-      prep->SetFillHoles(n >= 3);
-      if (n >= 3)
-        prep->SetMaxHoleEdges(static_cast<int>(n));
-    }
-    else if (!a.empty() && a[0] == '-')
-      return usage("unknown option " + a);
-    else
-      files.push_back(a);
+    return p.fail(kBadEnclosure, true);
+  };
+  addRanged(p, "--enclosure-scale", args.scale, 1.0, 1.0e6, "must be in [1, 1e6]",
+            "  --enclosure-scale S   enclosure size as a factor of the input's bounding box (>= 1, default 10)\n",
+            [prep](double x) { prep->SetEnclosureScale(x); });
+  p.add("--center", args.center,
+        "  --center X,Y,Z --dimensions A[,B[,C]]   explicit enclosure (then no input is needed): box edges;\n"
+        "                        sphere, hemisphere radius; cylinder radius, height; ellipsoid semi-axes\n")
+    .accept = [&p, prep](const char* v)
+  {
+    double t[3];
+    if (!parseTriple(v, t))
+      return p.fail(std::string("--center") + kBadTriple, true);
+    prep->SetEnclosureCenter(t);
+    return true;
+  };
+  p.add("--dimensions", args.dimensions).accept = [&p, prep](const char* v)
+  {
+    double t[3];
+    if (!parseTriple(v, t))
+      return p.fail(std::string("--dimensions") + kBadTriple, true);
+    if (t[0] <= 0 || t[1] < 0 || t[2] < 0)
+      return p.fail("--dimensions must be positive", true);
+    prep->SetEnclosureDimensions(t);
+    return true;
+  };
+  p.add("--axis", args.axis, "  --axis x|y|z          cylinder / hemisphere axis (default z)\n").accept =
+    [&p, prep](const char* v)
+  {
+    if (std::strcmp(v, "x") != 0 && std::strcmp(v, "y") != 0 && std::strcmp(v, "z") != 0)
+      return p.fail(kBadAxis, true);
+    prep->SetEnclosureAxis(v[0] - 'x');
+    return true;
+  };
+  addRanged(p, "--edge-length", args.edgeLength, 0.0, std::numeric_limits<double>::infinity(), "must be >= 0",
+            "  --edge-length L       target edge length of the enclosure (default 0: 1/16 of its size)\n",
+            [prep](double x) { prep->SetEnclosureEdgeLength(x); });
+}
+
+// The repair flags, after the enclosure's.
+void declareRepairFlags(volgrid::cli::FlagParser& p, Arguments& args, vtkVolGridSurfacePrep* prep)
+{
+  addRanged(p, "--merge-tolerance", args.mergeTolerance, 0.0, 0.01, "must be in [0, 0.01]",
+            "  --merge-tolerance T   weld points closer than T * bounding-box diagonal (default 1e-6; 0: exactly\n"
+            "                        coincident points only, like --exact)\n",
+            [prep](double x) { prep->SetMergeTolerance(x); });
+  p.add("--exact", args.exact, true, "  --exact               merge exactly coincident points only\n");
+  p.add("--fill-holes", args.fillHoles,
+        "  --fill-holes N        fill holes of at most N edges (default 200; 0: leave holes open)\n")
+    .accept = [&p, &args, prep](const char*)
+  {
+    if (args.fillHoles < 0 || args.fillHoles > 1000000)
+      return p.fail("--fill-holes must be in [0, 1000000]", true);
+    prep->SetFillHoles(args.fillHoles >= 3);
+    if (args.fillHoles >= 3)
+      prep->SetMaxHoleEdges(static_cast<int>(args.fillHoles));
+    return true;
+  };
+  p.add("--no-orient", args.orient, false, "  --no-orient           keep the triangles' orientation\n");
+  p.add("--no-intersections", args.intersections, false, "  --no-intersections    skip the self-intersection test\n");
+  p.add("--json", args.json, true, "  --json                one JSON line of counts on stdout\n");
+}
+
+// 2 (after the message) when the arguments are bad, 0 after --help, -1 to go on. An enclosure alone
+// (--center and --dimensions) needs no input.
+int parseArguments(int argc, char** argv, Arguments& args, vtkVolGridSurfacePrep* prep)
+{
+  volgrid::cli::FlagParser p("prep", kHeader, kFooter);
+  p.usageOnMissing = true;
+  p.quoteUnknown = false;
+  declareEnclosureFlags(p, args, prep);
+  declareRepairFlags(p, args, prep);
+  // A missing value is worded as a bad one, or "needs a number".
+  p.find("--fill-holes")->missing = "--fill-holes needs a number";
+  p.find("--enclosure")->missing = kBadEnclosure;
+  p.find("--axis")->missing = kBadAxis;
+  p.find("--center")->missing = std::string("--center") + kBadTriple;
+  p.find("--dimensions")->missing = std::string("--dimensions") + kBadTriple;
+  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, args.files);
+  if (result != volgrid::cli::FlagParser::Result::Ok)
+    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (args.exact)
+    prep->ExactMergeOnlyOn();
+  if (!args.orient)
+    prep->OrientShellsOff();
+  if (!args.intersections)
+    prep->CheckIntersectionsOff();
+  if (args.files.empty())
+  {
+    p.fail("missing OUT", true);
+    return 2;
   }
-  if (files.empty())
-    return usage("missing OUT");
-  const std::string out = files.back();
-  files.pop_back();
-  if (const int code = volgrid::cli::checkOutputPath("prep", "OUT", out, { "vtp", "vtk", "stl", "off" }, files))
+  args.out = args.files.back();
+  args.files.pop_back();
+  if (const int code =
+        volgrid::cli::checkOutputPath("prep", "OUT", args.out, { "vtp", "vtk", "stl", "off" }, args.files))
     return code;
+  const bool haveCenter = p.given().count("--center") > 0, haveDimensions = p.given().count("--dimensions") > 0;
   if (haveCenter != haveDimensions)
-    return usage("--center and --dimensions go together");
+  {
+    p.fail("--center and --dimensions go together", true);
+    return 2;
+  }
   if (haveCenter)
     prep->ExplicitEnclosureOn();
-  if (files.empty() && (!haveCenter || prep->GetEnclosure() == vtkVolGridSurfacePrep::ENCLOSURE_NONE))
-    return usage("no input surface (without input, give --enclosure with --center and --dimensions)");
+  if (args.files.empty() && (!haveCenter || prep->GetEnclosure() == vtkVolGridSurfacePrep::ENCLOSURE_NONE))
+  {
+    p.fail("no input surface (without input, give --enclosure with --center and --dimensions)", true);
+    return 2;
+  }
+  return -1;
+}
+} // namespace
 
+int runPrepCommand(int argc, char** argv)
+{
+  vtkNew<vtkVolGridSurfacePrep> prep;
+  Arguments args;
+  if (const int code = parseArguments(argc, argv, args, prep); code >= 0)
+    return code;
   volgrid::cli::Stopwatch clock;
-  for (const std::string& file : files)
+  for (const std::string& file : args.files)
   {
     volgrid::SurfaceMesh mesh;
     std::string info;
@@ -273,7 +310,7 @@ int runPrepCommand(int argc, char** argv)
       std::fprintf(stderr, "volgrid prep: %s\n", status.message.c_str());
       return 1;
     }
-    if (!json)
+    if (!args.json)
       std::printf("read %s: %s\n", file.c_str(), info.c_str());
     nameFilePatches(file, mesh);
     vtkNew<vtkPolyData> part;
@@ -288,16 +325,16 @@ int runPrepCommand(int argc, char** argv)
     return 1;
   }
   std::string error;
-  if (!volgrid::writeSurfaceFile(out, result, error))
+  if (!volgrid::writeSurfaceFile(args.out, result, error))
   {
     std::fprintf(stderr, "volgrid prep: %s\n", error.c_str());
     return 1;
   }
   vtkFieldData* fd = result->GetFieldData();
   const bool meshable = prep->GetMeshable();
-  if (json)
+  if (args.json)
   {
-    std::string line = "{\"output\":" + volgrid::cli::jsonString(out);
+    std::string line = "{\"output\":" + volgrid::cli::jsonString(args.out);
     for (const auto& entry : kJsonCounts)
       line += std::string(",\"") + entry[0] + "\":" + std::to_string(count(fd, entry[1]));
     char tail[96];
@@ -310,7 +347,7 @@ int runPrepCommand(int argc, char** argv)
     vtkStringArray* text = vtkStringArray::SafeDownCast(fd->GetAbstractArray("SurfacePrepReport"));
     if (text && text->GetNumberOfValues() > 0)
       std::fputs(text->GetValue(0).c_str(), stdout);
-    std::printf("wrote %s (%lld points, %lld triangles) in %.2f s\n", out.c_str(),
+    std::printf("wrote %s (%lld points, %lld triangles) in %.2f s\n", args.out.c_str(),
                 static_cast<long long>(result->GetNumberOfPoints()), static_cast<long long>(result->GetNumberOfCells()),
                 clock.seconds());
   }

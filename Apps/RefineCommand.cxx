@@ -5,6 +5,7 @@
 // target as a nodal variable, .msh .su2 .mesh .cgns .node, an OpenFOAM case): the patches are kept.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "FlagParser.h"
 #include "MeshExport.h"
 #include "OutputPaths.h"
 #include "PointFiles.h"
@@ -41,25 +42,66 @@
 
 namespace
 {
-using volgrid::cli::optionUsage;
 namespace option = volgrid::option;
-const std::string kUsage =
-  std::string("usage: volgrid refine MESH OUT --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
-              "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json] [--format NAME]\n"
-              "  MESH: .vtu/.vtk, or a solver mesh (.exo/.e with NAME a nodal variable, its last time step; .msh .su2\n"
-              "  .mesh .cgns .node or an OpenFOAM case carry no point fields). OUT: .vtu or any solver format of\n"
-              "  `volgrid mesh` (--format NAME where the extension does not say it); the boundary patches of MESH\n"
-              "  (PatchNames and BoundaryFacePatch of a VolGrid .vtu, or the solver file's) are kept by name.\n"
-              "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
-              "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
-              "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
-              "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n"
-              "  --gradation G        > 1 grades the targets over the mesh edges first (default 0: no grading)\n") +
-  optionUsage(option::alpha, "A") + optionUsage(option::beta, "B") + optionUsage(option::targetAngle, "DEG") +
-  optionUsage(option::passes, "N") +
-  "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
-  "                  the available memory holds)\n"
-  "  OUT.vtu is replaced atomically, only when it was written whole.\n";
+const char* kHeader =
+  "usage: volgrid refine MESH OUT --size-array NAME [--alpha A] [--beta B] [--gradation G]\n"
+  "                      [--no-optimize] [--target-angle DEG] [--passes N] [--json] [--format NAME]\n"
+  "  MESH: .vtu/.vtk, or a solver mesh (.exo/.e with NAME a nodal variable, its last time step; .msh .su2\n"
+  "  .mesh .cgns .node or an OpenFOAM case carry no point fields). OUT: .vtu or any solver format of\n"
+  "  `volgrid mesh` (--format NAME where the extension does not say it); the boundary patches of MESH\n"
+  "  (PatchNames and BoundaryFacePatch of a VolGrid .vtu, or the solver file's) are kept by name.\n"
+  "  Refines a tetrahedral mesh where the point array NAME (target edge length per point, e.g. from a\n"
+  "  solver's error estimate) is smaller than the current spacing (paper section 4). Points keep their\n"
+  "  ids, new points follow; the boundary faces and the faces between Region values are kept exactly.\n"
+  "  Non-finite or non-positive targets mean 'no target here'. Exit 1 on bad input.\n"
+  "  --gradation G        > 1 grades the targets over the mesh edges first (default 0: no grading)\n";
+const char* kFooter = "  OUT.vtu is replaced atomically, only when it was written whole.\n";
+
+struct Arguments
+{
+  std::string mesh, out; // MESH and OUT
+  std::string arrayName;
+  bool json = false;
+  long long maxTets = 0;
+  volgrid::RefineOptions options; // alpha, beta, target angle, passes: OptionTable.h's defaults, as for meshing
+};
+
+// 2 (after the message) when the arguments are bad, 0 after --help, -1 to go on refining.
+int parseArguments(int argc, char** argv, Arguments& args)
+{
+  volgrid::RefineOptions& options = args.options;
+  options.optimization = volgrid::ImprovementOptions().optimization;
+  volgrid::cli::FlagParser p("refine", kHeader, kFooter);
+  p.usageOnMissing = true;
+  p.add("--json", args.json, true);
+  p.add("--no-optimize", options.optimize, false);
+  p.add("--size-array", args.arrayName);
+  p.add("--gradation", options.gradation).accept = [&p, &options](const char* v)
+  { return options.gradation >= 1 || p.fail(std::string("--gradation is out of range: ") + v); };
+  const auto set = [&options](const volgrid::OptionSpec& spec, double x) { volgrid::setOption(options, spec, x); };
+  p.add(option::alpha, "A", set);
+  p.add(option::beta, "B", set);
+  p.add(option::targetAngle, "DEG", set);
+  p.add(option::passes, "N", set);
+  volgrid::cli::Flag& maxTets =
+    p.add("--max-tets", args.maxTets,
+          "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
+          "                  the available memory holds)\n");
+  maxTets.usageOnMissing = false;
+  maxTets.accept = [&args](const char* v) { return volgrid::cli::parseMaxTets("refine", v, args.maxTets); };
+  std::vector<std::string> positional;
+  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
+  if (result != volgrid::cli::FlagParser::Result::Ok)
+    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (positional.size() != 2 || args.arrayName.empty())
+  {
+    p.fail("expected MESH OUT --size-array NAME", true);
+    return 2;
+  }
+  args.mesh = positional[0];
+  args.out = positional[1];
+  return -1;
+}
 
 // The boundary faces (faces of one tet only) as sorted triples.
 std::set<std::array<int32_t, 3>> boundaryFaces(const volgrid::TetMesh& mesh)
@@ -114,115 +156,13 @@ void attachPatches(const volgrid::SolverMesh& patches, vtkUnstructuredGrid* out)
   if (!regions.empty())
     VolGridSetLabelNames(out, "RegionNames", regions, patches.regionNames, "region");
 }
-} // namespace
-
-int runRefineCommand(int argc, char** argv)
+// MESH's points and tets as flat arrays; false (the message printed) when a cell is not a tetrahedron.
+bool tetsOfGrid(vtkUnstructuredGrid* grid, std::vector<double>& points, std::vector<int32_t>& tets)
 {
-  volgrid::cli::ExportRequest exportRequest; // --format, --patch-type (MeshExport.h)
-  if (!volgrid::cli::takeExportOptions("refine", argc, argv, exportRequest))
-    return 2;
-  std::vector<std::string> positional;
-  std::string arrayName;
-  bool json = false;
-  long long maxTets = 0;
-  volgrid::RefineOptions options; // alpha, beta, target angle, passes: OptionTable.h's defaults, as for meshing
-  options.optimization = volgrid::ImprovementOptions().optimization;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h")
-    {
-      std::fputs(kUsage.c_str(), stdout);
-      return 0;
-    }
-    if (a == "--json")
-      json = true;
-    else if (a == "--no-optimize")
-      options.optimize = false;
-    else if (const volgrid::OptionSpec* spec = a.size() > 2 ? volgrid::findOption(a.substr(2)) : nullptr;
-             spec && volgrid::refinementOption(*spec))
-    {
-      double x = 0;
-      if (i + 1 >= argc)
-      {
-        std::fprintf(stderr, "volgrid refine: %s needs a value\n%s", a.c_str(), kUsage.c_str());
-        return 2;
-      }
-      if (!volgrid::cli::parseOption("refine", *spec, argv[++i], x))
-        return 2;
-      volgrid::setOption(options, *spec, x);
-    }
-    else if (a == "--max-tets")
-    {
-      long long n = 0;
-      if (i + 1 >= argc || !volgrid::cli::parseLong("refine", a.c_str(), argv[i + 1], n))
-      {
-        if (i + 1 >= argc)
-          std::fprintf(stderr, "volgrid refine: %s needs a value\n", a.c_str());
-        return 2;
-      }
-      if (!volgrid::cli::parseMaxTets("refine", argv[++i], maxTets))
-        return 2;
-    }
-    else if (a == "--size-array" || a == "--gradation")
-    {
-      if (i + 1 >= argc)
-      {
-        std::fprintf(stderr, "volgrid refine: %s needs a value\n%s", a.c_str(), kUsage.c_str());
-        return 2;
-      }
-      const char* v = argv[++i];
-      if (a == "--size-array")
-      {
-        arrayName = v;
-        continue;
-      }
-      double x = 0;
-      if (!volgrid::cli::parseDouble("refine", a.c_str(), v, x))
-        return 2;
-      options.gradation = x;
-      if (!(x >= 1))
-      {
-        std::fprintf(stderr, "volgrid refine: %s is out of range: %s\n", a.c_str(), v);
-        return 2;
-      }
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      std::fprintf(stderr, "volgrid refine: unknown option '%s'\n%s", a.c_str(), kUsage.c_str());
-      return 2;
-    }
-    else
-      positional.push_back(a);
-  }
-  if (positional.size() != 2 || arrayName.empty())
-  {
-    std::fprintf(stderr, "volgrid refine: expected MESH OUT --size-array NAME\n%s", kUsage.c_str());
-    return 2;
-  }
-
-  volgrid::MeshFormat format = volgrid::MeshFormat::Unknown;
-  bool vtkOutput = true;
-  if (!volgrid::cli::chooseFormat("refine", positional[1], exportRequest, format, vtkOutput))
-    return 2;
-  // An OpenFOAM case is a directory, checked by its writer.
-  if (format != volgrid::MeshFormat::OpenFOAM)
-    if (const int code = volgrid::cli::checkOutputPath(
-          "refine", "OUT", positional[1],
-          { vtkOutput ? std::string("vtu") : volgrid::surfaceFileExtension(positional[1]) }, { positional[0] }))
-      return code;
-  vtkSmartPointer<vtkDataSet> data = volgrid::cli::readDataSet(positional[0]);
-  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
-  if (!grid || grid->GetNumberOfCells() == 0)
-  {
-    std::fprintf(stderr, "volgrid refine: '%s' is not an unstructured grid with cells\n", positional[0].c_str());
-    return 1;
-  }
   const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
-  std::vector<double> points(3 * static_cast<size_t>(np));
+  points.resize(3 * static_cast<size_t>(np));
   for (vtkIdType i = 0; i < np; ++i)
     grid->GetPoint(i, points.data() + 3 * i);
-  std::vector<int32_t> tets;
   tets.reserve(4 * static_cast<size_t>(nc));
   for (vtkIdType c = 0; c < nc; ++c)
   {
@@ -230,7 +170,7 @@ int runRefineCommand(int argc, char** argv)
     {
       std::fprintf(stderr, "volgrid refine: cell %lld is not a tetrahedron (only tet meshes are refined)\n",
                    static_cast<long long>(c));
-      return 1;
+      return false;
     }
     vtkIdType npts = 0;
     const vtkIdType* ids = nullptr;
@@ -238,20 +178,81 @@ int runRefineCommand(int argc, char** argv)
     for (int k = 0; k < 4; ++k)
       tets.push_back(static_cast<int32_t>(ids[k]));
   }
+  return true;
+}
+
+// The refined mesh as a grid: every input point keeps its id (point data copied), new points follow
+// (null values); cell array Region from `regions` (per tet of the mesh).
+void fillRefinedGrid(const volgrid::TetMesh& mesh, vtkUnstructuredGrid* input, const std::vector<int32_t>& regions,
+                     vtkUnstructuredGrid* out)
+{
+  std::vector<int32_t> kept(static_cast<size_t>(mesh.numVertices()));
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    kept[v] = v;
+  VolGridFillUnstructuredGrid(mesh, kept, out);
+  vtkPointData* outPD = out->GetPointData();
+  outPD->CopyAllocate(input->GetPointData(), mesh.numVertices());
+  for (vtkIdType v = 0; v < mesh.numVertices(); ++v)
+  {
+    if (v < input->GetNumberOfPoints())
+      outPD->CopyData(input->GetPointData(), v, v);
+    else
+      outPD->NullData(v);
+  }
+  vtkNew<vtkIntArray> region;
+  region->SetName("Region");
+  region->SetNumberOfValues(mesh.numFiniteTets());
+  vtkIdType cell = 0;
+  mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
+  out->GetCellData()->AddArray(region);
+}
+} // namespace
+
+int runRefineCommand(int argc, char** argv)
+{
+  volgrid::cli::ExportRequest exportRequest; // --format, --patch-type (MeshExport.h)
+  if (!volgrid::cli::takeExportOptions("refine", argc, argv, exportRequest))
+    return 2;
+  Arguments args;
+  if (const int code = parseArguments(argc, argv, args); code >= 0)
+    return code;
+
+  volgrid::MeshFormat format = volgrid::MeshFormat::Unknown;
+  bool vtkOutput = true;
+  if (!volgrid::cli::chooseFormat("refine", args.out, exportRequest, format, vtkOutput))
+    return 2;
+  // An OpenFOAM case is a directory, checked by its writer.
+  if (format != volgrid::MeshFormat::OpenFOAM)
+    if (const int code = volgrid::cli::checkOutputPath(
+          "refine", "OUT", args.out, { vtkOutput ? std::string("vtu") : volgrid::surfaceFileExtension(args.out) },
+          { args.mesh }))
+      return code;
+  vtkSmartPointer<vtkDataSet> data = volgrid::cli::readDataSet(args.mesh);
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid || grid->GetNumberOfCells() == 0)
+  {
+    std::fprintf(stderr, "volgrid refine: '%s' is not an unstructured grid with cells\n", args.mesh.c_str());
+    return 1;
+  }
+  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
+  std::vector<double> points;
+  std::vector<int32_t> tets;
+  if (!tetsOfGrid(grid, points, tets))
+    return 1;
   // The boundary patches, when MESH has them (kept exactly, so they carry over to the output).
   volgrid::SolverMesh patches;
   std::string patchError;
   const bool hasPatches = VolGridSolverMeshFromGrid(grid, patches, patchError);
   if (!hasPatches && !vtkOutput)
   {
-    std::fprintf(stderr, "volgrid refine: cannot write a solver mesh from '%s': %s\n", positional[0].c_str(),
+    std::fprintf(stderr, "volgrid refine: cannot write a solver mesh from '%s': %s\n", args.mesh.c_str(),
                  patchError.c_str());
     return 1;
   }
-  vtkDataArray* sizeArray = grid->GetPointData()->GetArray(arrayName.c_str());
+  vtkDataArray* sizeArray = grid->GetPointData()->GetArray(args.arrayName.c_str());
   if (!sizeArray)
   {
-    std::fprintf(stderr, "volgrid refine: '%s' has no point array '%s'\n", positional[0].c_str(), arrayName.c_str());
+    std::fprintf(stderr, "volgrid refine: '%s' has no point array '%s'\n", args.mesh.c_str(), args.arrayName.c_str());
     return 1;
   }
   std::vector<double> target(static_cast<size_t>(np));
@@ -264,9 +265,9 @@ int runRefineCommand(int argc, char** argv)
       regions[c] = static_cast<int32_t>(regionArray->GetComponent(c, 0));
 
   const volgrid::SizeEstimate estimate =
-    volgrid::estimateRefineSize(points, tets, target, options.fieldPointOptions.alpha);
-  if (volgrid::cli::refuseIfTooLarge("refine", estimate, maxTets,
-                                     "the target sizes of point array '" + arrayName + "' (smallest " +
+    volgrid::estimateRefineSize(points, tets, target, args.options.fieldPointOptions.alpha);
+  if (volgrid::cli::refuseIfTooLarge("refine", estimate, args.maxTets,
+                                     "the target sizes of point array '" + args.arrayName + "' (smallest " +
                                        smallestTarget(target) + ")"))
     return 1;
 
@@ -274,13 +275,13 @@ int runRefineCommand(int argc, char** argv)
   volgrid::Status s = volgrid::tetMeshFromTets(points, tets, mesh);
   if (!s.ok())
   {
-    std::fprintf(stderr, "volgrid refine: %s: %s\n", positional[0].c_str(), s.message.c_str());
+    std::fprintf(stderr, "volgrid refine: %s: %s\n", args.mesh.c_str(), s.message.c_str());
     return 1;
   }
   const auto facesBefore = boundaryFaces(mesh);
   volgrid::RefineReport report;
   const volgrid::cli::Stopwatch watch;
-  s = volgrid::refineTetMesh(mesh, target, &regions, options, nullptr, &report);
+  s = volgrid::refineTetMesh(mesh, target, &regions, args.options, nullptr, &report);
   const double seconds = watch.seconds();
   if (!s.ok())
   {
@@ -289,54 +290,35 @@ int runRefineCommand(int argc, char** argv)
   }
   const bool boundaryIdentical = boundaryFaces(mesh) == facesBefore;
 
-  // Output: every input point keeps its id (point data copied), new points follow (null values).
-  std::vector<int32_t> kept(static_cast<size_t>(mesh.numVertices()));
-  for (int32_t v = 0; v < mesh.numVertices(); ++v)
-    kept[v] = v;
   vtkNew<vtkUnstructuredGrid> out;
-  VolGridFillUnstructuredGrid(mesh, kept, out);
-  vtkPointData* outPD = out->GetPointData();
-  outPD->CopyAllocate(grid->GetPointData(), mesh.numVertices());
-  for (vtkIdType v = 0; v < mesh.numVertices(); ++v)
-  {
-    if (v < np)
-      outPD->CopyData(grid->GetPointData(), v, v);
-    else
-      outPD->NullData(v);
-  }
-  vtkNew<vtkIntArray> region;
-  region->SetName("Region");
-  region->SetNumberOfValues(mesh.numFiniteTets());
-  vtkIdType cell = 0;
-  mesh.forEachFiniteTet([&](int32_t t) { region->SetValue(cell++, regions[t]); });
-  out->GetCellData()->AddArray(region);
+  fillRefinedGrid(mesh, grid, regions, out);
   if (hasPatches && boundaryIdentical)
     attachPatches(patches, out);
   std::string writeError;
   if (!boundaryIdentical)
     std::fprintf(stderr, "volgrid refine: the boundary changed (a bug: please report it); '%s' not written\n",
-                 positional[1].c_str());
+                 args.out.c_str());
   else if (!vtkOutput)
   {
     volgrid::SolverMesh refined;
     if (!VolGridSolverMeshFromGrid(out, refined, writeError) ||
-        !volgrid::cli::writeSolverOutput("refine", positional[1], format, refined, exportRequest, json))
+        !volgrid::cli::writeSolverOutput("refine", args.out, format, refined, exportRequest, args.json))
     {
       if (!writeError.empty())
         std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());
       return 1;
     }
   }
-  else if (!volgrid::cli::writeXmlDataSet(positional[1], out, writeError))
+  else if (!volgrid::cli::writeXmlDataSet(args.out, out, writeError))
   {
     std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());
     return 1;
   }
-  if (json)
+  if (args.json)
     std::printf("{\"input\": %s, \"points_before\": %lld, \"tets_before\": %lld, \"points\": %d, \"tets\": %d, "
                 "\"inserted\": %lld, \"passes\": %d, \"boundary_identical\": %s, \"min_dihedral\": %s, "
                 "\"max_dihedral\": %s, \"share_below_10\": %s, \"seconds\": %.6f}\n",
-                volgrid::cli::jsonString(positional[0]).c_str(), static_cast<long long>(np), static_cast<long long>(nc),
+                volgrid::cli::jsonString(args.mesh).c_str(), static_cast<long long>(np), static_cast<long long>(nc),
                 mesh.numVertices(), mesh.numFiniteTets(), static_cast<long long>(report.inserted), report.passes,
                 boundaryIdentical ? "true" : "false",
                 volgrid::cli::jsonNumber(report.after.minDihedral, "%.4f").c_str(),
@@ -345,7 +327,7 @@ int runRefineCommand(int argc, char** argv)
   else
     std::printf("%s: %lld points, %lld tets -> %d points, %d tets (%lld inserted) in %.3f s; dihedral angles "
                 "%.2f..%.2f deg; boundary %s\n",
-                positional[0].c_str(), static_cast<long long>(np), static_cast<long long>(nc), mesh.numVertices(),
+                args.mesh.c_str(), static_cast<long long>(np), static_cast<long long>(nc), mesh.numVertices(),
                 mesh.numFiniteTets(), static_cast<long long>(report.inserted), seconds, report.after.minDihedral,
                 report.after.maxDihedral, boundaryIdentical ? "identical" : "CHANGED");
   return boundaryIdentical ? 0 : 1;

@@ -23,6 +23,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
@@ -84,6 +85,233 @@ volgrid::EnclosureShape shapeOf(int enclosure)
       return volgrid::EnclosureShape::Sphere;
   }
 }
+
+// The parts of the input, merged into one SurfaceMesh: each part's patches get ids after the previous
+// part's (its PatchNames shifted with them), a part without a PatchId array is one patch "part<k>".
+struct PartMerger
+{
+  explicit PartMerger(vtkVolGridSurfacePrep* self)
+    : Self(self)
+  {
+  }
+
+  // One part: an input connection or a leaf of a composite input; under MPI, its pieces on all ranks.
+  void add(const std::vector<vtkSmartPointer<vtkDataSet>>& pieces)
+  {
+    bool hasCells = false, hasPatchArray = false;
+    for (vtkDataSet* piece : pieces)
+    {
+      hasCells = hasCells || (piece && piece->GetNumberOfCells() > 0);
+      hasPatchArray = hasPatchArray || (piece && piece->GetCellData()->GetArray("PatchId"));
+    }
+    if (!hasCells)
+      return;
+    const int32_t before = mesh.numberOfTriangles();
+    bool appended = false;
+    for (vtkDataSet* piece : pieces)
+    {
+      if (piece && piece->GetNumberOfCells() > 0)
+        appended = VolGridAppendSurface(piece, mesh, "PatchId", nextPatch, nextPatch, &conversion) || appended;
+    }
+    if (!appended)
+    {
+      vtkWarningWithObjectMacro(this->Self, << "Part " << parts << " has no triangles, quads or polygons: skipped.");
+      ++parts;
+      return;
+    }
+    // Names: the part's PatchNames (shifted like its ids), else "part<k>" for a part without patches.
+    for (vtkDataSet* piece : pieces)
+      if (piece && hasPatchArray)
+        for (const auto& name : VolGridReadLabelNames(piece, "PatchNames"))
+          mesh.patchNames[name.first + nextPatch] = name.second;
+    if (!hasPatchArray)
+      mesh.patchNames[nextPatch] = "part" + std::to_string(parts);
+    int32_t maxPatch = nextPatch;
+    if (hasPatchArray)
+    {
+      for (int32_t t = before; t < mesh.numberOfTriangles(); ++t)
+        maxPatch = std::max(maxPatch, mesh.patchIds[t]);
+    }
+    nextPatch = maxPatch + 1;
+    ++parts;
+  }
+
+  vtkVolGridSurfacePrep* Self; // for its warnings
+  volgrid::SurfaceMesh mesh;
+  int32_t nextPatch = 0; // the first patch id of the next part
+  int64_t parts = 0;
+  VolGridSurfaceConversionInfo conversion;
+};
+
+// The data sets of every input connection: the connection's, or every leaf of a composite one (empty
+// leaves included, so that every rank lists the same slots).
+std::vector<vtkDataSet*> inputLeaves(vtkInformationVector* inputs)
+{
+  std::vector<vtkDataSet*> leaves;
+  const int connections = inputs ? inputs->GetNumberOfInformationObjects() : 0;
+  for (int c = 0; c < connections; ++c)
+  {
+    vtkDataObject* object = inputs->GetInformationObject(c)->Get(vtkDataObject::DATA_OBJECT());
+    if (auto* composite = vtkCompositeDataSet::SafeDownCast(object))
+    {
+      vtkSmartPointer<vtkCompositeDataIterator> it;
+      it.TakeReference(composite->NewIterator());
+      it->SkipEmptyNodesOff(); // the same slots on every rank, even where a rank's block is empty
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+        leaves.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
+    }
+    else
+    {
+      leaves.push_back(vtkDataSet::SafeDownCast(object));
+    }
+  }
+  return leaves;
+}
+
+// Core's options from the filter's properties (progress left to the caller).
+volgrid::SurfacePreparationOptions optionsOf(vtkVolGridSurfacePrep* f)
+{
+  volgrid::SurfacePreparationOptions options;
+  options.mergeTolerance = f->GetExactMergeOnly() ? 0.0 : f->GetMergeTolerance();
+  options.removeDegenerate = f->GetRemoveDegenerate();
+  options.removeDuplicates = f->GetRemoveDuplicates();
+  options.maxHoleEdges = f->GetFillHoles() ? f->GetMaxHoleEdges() : 0;
+  options.orientShells = f->GetOrientShells();
+  options.checkIntersections = f->GetCheckIntersections();
+  options.enclosure = f->GetEnclosure() != vtkVolGridSurfacePrep::ENCLOSURE_NONE;
+  options.aroundInput = !f->GetExplicitEnclosure();
+  options.shape = shapeOf(f->GetEnclosure());
+  options.explicitEnclosure.shape = options.shape;
+  std::copy(f->GetEnclosureCenter(), f->GetEnclosureCenter() + 3, options.explicitEnclosure.center);
+  std::copy(f->GetEnclosureDimensions(), f->GetEnclosureDimensions() + 3, options.explicitEnclosure.dimensions);
+  options.explicitEnclosure.axis = f->GetEnclosureAxis();
+  options.enclosureScale = f->GetEnclosureScale();
+  options.axis = f->GetEnclosureAxis();
+  options.enclosureEdgeLength = f->GetEnclosureEdgeLength();
+  return options;
+}
+
+// Output 0's cell and point arrays: PatchId (0 when the surface has none), ShellId, and with `diagnostic`
+// DefectFlags, one 0/1 array per defect and NonManifoldVertex.
+void addDiagnosticArrays(const volgrid::SurfaceMesh& mesh, const volgrid::SurfaceCheckReport& report, bool diagnostic,
+                         vtkPolyData* output)
+{
+  vtkCellData* cd = output->GetCellData();
+  if (!mesh.hasPatchIds() && mesh.numberOfTriangles() > 0)
+  {
+    auto patches = vtkSmartPointer<vtkIntArray>::New();
+    patches->SetName("PatchId");
+    patches->SetNumberOfValues(mesh.numberOfTriangles());
+    patches->FillValue(0);
+    cd->AddArray(patches);
+  }
+  if (diagnostic && static_cast<int32_t>(report.triangleFlags.size()) == mesh.numberOfTriangles())
+  {
+    auto flags = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    flags->SetName("DefectFlags");
+    flags->SetNumberOfValues(mesh.numberOfTriangles());
+    std::copy(report.triangleFlags.begin(), report.triangleFlags.end(), flags->GetPointer(0));
+    cd->AddArray(flags);
+    cd->AddArray(flagArray("OpenEdge", report.triangleFlags, volgrid::TriangleBoundaryEdge));
+    cd->AddArray(flagArray("NonManifoldEdge", report.triangleFlags, volgrid::TriangleNonManifoldEdge));
+    cd->AddArray(flagArray("SelfIntersecting", report.triangleFlags,
+                           volgrid::TriangleSelfIntersecting | volgrid::TriangleShellIntersecting));
+    cd->AddArray(flagArray("Degenerate", report.triangleFlags, volgrid::TriangleDegenerate));
+  }
+  if (static_cast<int32_t>(report.triangleShell.size()) == mesh.numberOfTriangles())
+  {
+    auto shells = vtkSmartPointer<vtkIntArray>::New();
+    shells->SetName("ShellId");
+    shells->SetNumberOfValues(mesh.numberOfTriangles());
+    std::copy(report.triangleShell.begin(), report.triangleShell.end(), shells->GetPointer(0));
+    cd->AddArray(shells);
+  }
+  cd->SetActiveScalars("PatchId");
+  if (diagnostic && static_cast<int32_t>(report.pointNonManifold.size()) == mesh.numberOfPoints())
+  {
+    output->GetPointData()->AddArray(flagArray("NonManifoldVertex", report.pointNonManifold, 1));
+  }
+}
+
+// Output 0's field data: every row's count (Input<Key> for the input's), Meshable, EnclosurePatchId, the
+// first ids of each defect and the report as text (SurfacePrepReport).
+void addFieldData(const volgrid::SurfacePreparationReport& prepared,
+                  const std::vector<volgrid::SurfacePreparationRow>& rows, int enclosurePatchId, vtkFieldData* fd)
+{
+  const volgrid::SurfaceCheckReport& report = prepared.output;
+  for (const volgrid::SurfacePreparationRow& row : rows)
+  {
+    addCount(fd, row.key, row.output);
+    if (row.input >= 0)
+      addCount(fd, std::string("Input") + row.key, row.input);
+  }
+  addCount(fd, "Meshable", prepared.meshable ? 1 : 0);
+  addCount(fd, "EnclosurePatchId", enclosurePatchId);
+  addIds(fd, "FirstBoundaryEdgeTriangles", report.firstBoundaryEdgeTriangles);
+  addIds(fd, "FirstNonManifoldEdgeTriangles", report.firstNonManifoldEdgeTriangles);
+  addIds(fd, "FirstSelfIntersectingPairs", report.firstSelfIntersectingPairs);
+  addIds(fd, "FirstShellIntersectingPairs", report.firstShellIntersectingPairs);
+  addIds(fd, "FirstDegenerateTriangles", report.firstDegenerateTriangles);
+  std::string text = "repair: " + prepared.repair.summary() + "\n" + volgrid::formatSurfaceReport(report);
+  auto textArray = vtkSmartPointer<vtkStringArray>::New();
+  textArray->SetName("SurfacePrepReport");
+  textArray->InsertNextValue(text);
+  fd->AddArray(textArray);
+}
+
+// Output 1: one row per count (Category, Item, Input, Output, FirstIds), the counts as text so that one
+// that was not measured says so in words.
+void fillSummaryTable(const std::vector<volgrid::SurfacePreparationRow>& rows, vtkTable* table)
+{
+  auto category = vtkSmartPointer<vtkStringArray>::New();
+  category->SetName("Category");
+  auto item = vtkSmartPointer<vtkStringArray>::New();
+  item->SetName("Item");
+  auto inputCount = vtkSmartPointer<vtkStringArray>::New();
+  inputCount->SetName("Input");
+  auto outputCount = vtkSmartPointer<vtkStringArray>::New();
+  outputCount->SetName("Output");
+  auto words = [](int64_t v) { return v < 0 ? std::string("not computed") : std::to_string(v); };
+  auto firstIds = vtkSmartPointer<vtkStringArray>::New();
+  firstIds->SetName("FirstIds");
+  for (const volgrid::SurfacePreparationRow& row : rows)
+  {
+    category->InsertNextValue(row.category);
+    item->InsertNextValue(row.item);
+    inputCount->InsertNextValue(words(row.input));
+    outputCount->InsertNextValue(words(row.output));
+    firstIds->InsertNextValue(row.firstIds);
+  }
+  table->AddColumn(category);
+  table->AddColumn(item);
+  table->AddColumn(inputCount);
+  table->AddColumn(outputCount);
+  table->AddColumn(firstIds);
+}
+
+// Output 2: the defective edges of the report as lines on output 0's points, with EdgeFlags and Valence.
+void fillDefectEdges(const volgrid::SurfaceCheckReport& report, vtkPoints* points, vtkPolyData* edges)
+{
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto edgeFlags = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  edgeFlags->SetName("EdgeFlags");
+  auto valence = vtkSmartPointer<vtkIntArray>::New();
+  valence->SetName("Valence");
+  for (size_t e = 0; e < report.edgeFlags.size(); ++e)
+  {
+    if (!report.edgeFlags[e])
+      continue;
+    const vtkIdType pts[2] = { report.edgePoints[2 * e], report.edgePoints[2 * e + 1] };
+    lines->InsertNextCell(2, pts);
+    edgeFlags->InsertNextValue(report.edgeFlags[e]);
+    valence->InsertNextValue(report.edgeValence[e]);
+  }
+  edges->SetPoints(points);
+  edges->SetLines(lines);
+  edges->GetCellData()->AddArray(edgeFlags);
+  edges->GetCellData()->AddArray(valence);
+  edges->GetCellData()->SetActiveScalars("EdgeFlags");
+}
 } // namespace
 
 vtkVolGridSurfacePrep::vtkVolGridSurfacePrep()
@@ -132,70 +360,10 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
 
   // ----- parts: every connection, every leaf of a composite input -----
   this->SetProgressText("Merging parts");
-  volgrid::SurfaceMesh mesh;
-  int32_t nextPatch = 0;
-  int64_t parts = 0;
-  VolGridSurfaceConversionInfo conversion;
-  // A part is one input connection or one leaf of a composite input; under MPI, the pieces of a part on
-  // all ranks are gathered onto rank 0, which prepares the whole surface (the other ranks output nothing).
-  auto addPart = [&](const std::vector<vtkSmartPointer<vtkDataSet>>& pieces)
-  {
-    bool hasCells = false, hasPatchArray = false;
-    for (vtkDataSet* piece : pieces)
-    {
-      hasCells = hasCells || (piece && piece->GetNumberOfCells() > 0);
-      hasPatchArray = hasPatchArray || (piece && piece->GetCellData()->GetArray("PatchId"));
-    }
-    if (!hasCells)
-      return;
-    const int32_t before = mesh.numberOfTriangles();
-    bool appended = false;
-    for (vtkDataSet* piece : pieces)
-    {
-      if (piece && piece->GetNumberOfCells() > 0)
-        appended = VolGridAppendSurface(piece, mesh, "PatchId", nextPatch, nextPatch, &conversion) || appended;
-    }
-    if (!appended)
-    {
-      vtkWarningMacro(<< "Part " << parts << " has no triangles, quads or polygons: skipped.");
-      ++parts;
-      return;
-    }
-    // Names: the part's PatchNames (shifted like its ids), else "part<k>" for a part without patches.
-    for (vtkDataSet* piece : pieces)
-      if (piece && hasPatchArray)
-        for (const auto& name : VolGridReadLabelNames(piece, "PatchNames"))
-          mesh.patchNames[name.first + nextPatch] = name.second;
-    if (!hasPatchArray)
-      mesh.patchNames[nextPatch] = "part" + std::to_string(parts);
-    int32_t maxPatch = nextPatch;
-    if (hasPatchArray)
-    {
-      for (int32_t t = before; t < mesh.numberOfTriangles(); ++t)
-        maxPatch = std::max(maxPatch, mesh.patchIds[t]);
-    }
-    nextPatch = maxPatch + 1;
-    ++parts;
-  };
+  PartMerger merger(this);
   vtkInformationVector* inputs = inputVector[0];
   const int connections = inputs ? inputs->GetNumberOfInformationObjects() : 0;
-  std::vector<vtkDataSet*> leaves;
-  for (int c = 0; c < connections; ++c)
-  {
-    vtkDataObject* object = inputs->GetInformationObject(c)->Get(vtkDataObject::DATA_OBJECT());
-    if (auto* composite = vtkCompositeDataSet::SafeDownCast(object))
-    {
-      vtkSmartPointer<vtkCompositeDataIterator> it;
-      it.TakeReference(composite->NewIterator());
-      it->SkipEmptyNodesOff(); // the same slots on every rank, even where a rank's block is empty
-      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-        leaves.push_back(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
-    }
-    else
-    {
-      leaves.push_back(vtkDataSet::SafeDownCast(object));
-    }
-  }
+  const std::vector<vtkDataSet*> leaves = inputLeaves(inputs);
   if (controller)
   {
     const auto gathered = VolGridGatherParts(controller, leaves);
@@ -204,13 +372,17 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
       return 1;
     }
     for (const auto& part : gathered)
-      addPart(part);
+      merger.add(part);
   }
   else
   {
     for (vtkDataSet* leaf : leaves)
-      addPart({ leaf });
+      merger.add({ leaf });
   }
+  volgrid::SurfaceMesh& mesh = merger.mesh;
+  const VolGridSurfaceConversionInfo& conversion = merger.conversion;
+  const int64_t parts = merger.parts;
+  const int32_t nextPatch = merger.nextPatch;
   if (conversion.skippedCells > 0 || conversion.invalidCells > 0)
   {
     vtkWarningMacro(<< conversion.skippedCells << " cell(s) that are not surface cells (vertices, lines, volume cells)"
@@ -226,23 +398,7 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
 
   // ----- diagnosis, repair, enclosure, orientation, diagnosis (Core/Surface/SurfacePreparation.h) -----
   VolGridFilterProgress progress(this);
-  volgrid::SurfacePreparationOptions options;
-  options.mergeTolerance = this->ExactMergeOnly ? 0.0 : this->MergeTolerance;
-  options.removeDegenerate = this->RemoveDegenerate;
-  options.removeDuplicates = this->RemoveDuplicates;
-  options.maxHoleEdges = this->FillHoles ? this->MaxHoleEdges : 0;
-  options.orientShells = this->OrientShells;
-  options.checkIntersections = this->CheckIntersections;
-  options.enclosure = this->Enclosure != ENCLOSURE_NONE;
-  options.aroundInput = !this->ExplicitEnclosure;
-  options.shape = shapeOf(this->Enclosure);
-  options.explicitEnclosure.shape = options.shape;
-  std::copy(this->EnclosureCenter, this->EnclosureCenter + 3, options.explicitEnclosure.center);
-  std::copy(this->EnclosureDimensions, this->EnclosureDimensions + 3, options.explicitEnclosure.dimensions);
-  options.explicitEnclosure.axis = this->EnclosureAxis;
-  options.enclosureScale = this->EnclosureScale;
-  options.axis = this->EnclosureAxis;
-  options.enclosureEdgeLength = this->EnclosureEdgeLength;
+  volgrid::SurfacePreparationOptions options = optionsOf(this);
   options.progress = &progress;
   volgrid::SurfacePreparationReport prepared;
   const volgrid::Status status = volgrid::prepareSurface(mesh, nextPatch, options, prepared);
@@ -266,115 +422,20 @@ int vtkVolGridSurfacePrep::Prepare(vtkInformationVector** inputVector, vtkInform
 
   // ----- output 0: surface, diagnostic arrays, field data -----
   VolGridSurfaceMeshToPolyData(mesh, output, "PatchId");
-  vtkCellData* cd = output->GetCellData();
-  if (!mesh.hasPatchIds() && mesh.numberOfTriangles() > 0)
-  {
-    auto patches = vtkSmartPointer<vtkIntArray>::New();
-    patches->SetName("PatchId");
-    patches->SetNumberOfValues(mesh.numberOfTriangles());
-    patches->FillValue(0);
-    cd->AddArray(patches);
-  }
-  if (this->DiagnosticArrays && static_cast<int32_t>(report.triangleFlags.size()) == mesh.numberOfTriangles())
-  {
-    auto flags = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    flags->SetName("DefectFlags");
-    flags->SetNumberOfValues(mesh.numberOfTriangles());
-    std::copy(report.triangleFlags.begin(), report.triangleFlags.end(), flags->GetPointer(0));
-    cd->AddArray(flags);
-    cd->AddArray(flagArray("OpenEdge", report.triangleFlags, volgrid::TriangleBoundaryEdge));
-    cd->AddArray(flagArray("NonManifoldEdge", report.triangleFlags, volgrid::TriangleNonManifoldEdge));
-    cd->AddArray(flagArray("SelfIntersecting", report.triangleFlags,
-                           volgrid::TriangleSelfIntersecting | volgrid::TriangleShellIntersecting));
-    cd->AddArray(flagArray("Degenerate", report.triangleFlags, volgrid::TriangleDegenerate));
-  }
-  if (static_cast<int32_t>(report.triangleShell.size()) == mesh.numberOfTriangles())
-  {
-    auto shells = vtkSmartPointer<vtkIntArray>::New();
-    shells->SetName("ShellId");
-    shells->SetNumberOfValues(mesh.numberOfTriangles());
-    std::copy(report.triangleShell.begin(), report.triangleShell.end(), shells->GetPointer(0));
-    cd->AddArray(shells);
-  }
-  cd->SetActiveScalars("PatchId");
-  if (this->DiagnosticArrays && static_cast<int32_t>(report.pointNonManifold.size()) == mesh.numberOfPoints())
-  {
-    output->GetPointData()->AddArray(flagArray("NonManifoldVertex", report.pointNonManifold, 1));
-  }
+  addDiagnosticArrays(mesh, report, this->DiagnosticArrays, output);
 
   const std::vector<volgrid::SurfacePreparationRow> rows = volgrid::surfacePreparationRows(prepared, parts);
-  vtkFieldData* fd = output->GetFieldData();
-  for (const volgrid::SurfacePreparationRow& row : rows)
-  {
-    addCount(fd, row.key, row.output);
-    if (row.input >= 0)
-      addCount(fd, std::string("Input") + row.key, row.input);
-  }
   this->Meshable = prepared.meshable;
-  addCount(fd, "Meshable", this->Meshable ? 1 : 0);
-  addCount(fd, "EnclosurePatchId", this->EnclosurePatchId);
-  addIds(fd, "FirstBoundaryEdgeTriangles", report.firstBoundaryEdgeTriangles);
-  addIds(fd, "FirstNonManifoldEdgeTriangles", report.firstNonManifoldEdgeTriangles);
-  addIds(fd, "FirstSelfIntersectingPairs", report.firstSelfIntersectingPairs);
-  addIds(fd, "FirstShellIntersectingPairs", report.firstShellIntersectingPairs);
-  addIds(fd, "FirstDegenerateTriangles", report.firstDegenerateTriangles);
-  std::string text = "repair: " + repair.summary() + "\n" + volgrid::formatSurfaceReport(report);
-  auto textArray = vtkSmartPointer<vtkStringArray>::New();
-  textArray->SetName("SurfacePrepReport");
-  textArray->InsertNextValue(text);
-  fd->AddArray(textArray);
+  vtkFieldData* fd = output->GetFieldData();
+  addFieldData(prepared, rows, this->EnclosurePatchId, fd);
 
   // ----- output 1: the summary table -----
-  auto category = vtkSmartPointer<vtkStringArray>::New();
-  category->SetName("Category");
-  auto item = vtkSmartPointer<vtkStringArray>::New();
-  item->SetName("Item");
-  // Text columns, so that a count that was not measured says so in words.
-  auto inputCount = vtkSmartPointer<vtkStringArray>::New();
-  inputCount->SetName("Input");
-  auto outputCount = vtkSmartPointer<vtkStringArray>::New();
-  outputCount->SetName("Output");
-  auto words = [](int64_t v) { return v < 0 ? std::string("not computed") : std::to_string(v); };
-  auto firstIds = vtkSmartPointer<vtkStringArray>::New();
-  firstIds->SetName("FirstIds");
-  for (const volgrid::SurfacePreparationRow& row : rows)
-  {
-    category->InsertNextValue(row.category);
-    item->InsertNextValue(row.item);
-    inputCount->InsertNextValue(words(row.input));
-    outputCount->InsertNextValue(words(row.output));
-    firstIds->InsertNextValue(row.firstIds);
-  }
-  table->AddColumn(category);
-  table->AddColumn(item);
-  table->AddColumn(inputCount);
-  table->AddColumn(outputCount);
-  table->AddColumn(firstIds);
+  fillSummaryTable(rows, table);
   table->GetFieldData()->PassData(fd);
 
   // ----- output 2: the defective edges as lines -----
   if (report.edgeFlags.size() * 2 == report.edgePoints.size() && output->GetPoints())
-  {
-    auto lines = vtkSmartPointer<vtkCellArray>::New();
-    auto edgeFlags = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    edgeFlags->SetName("EdgeFlags");
-    auto valence = vtkSmartPointer<vtkIntArray>::New();
-    valence->SetName("Valence");
-    for (size_t e = 0; e < report.edgeFlags.size(); ++e)
-    {
-      if (!report.edgeFlags[e])
-        continue;
-      const vtkIdType pts[2] = { report.edgePoints[2 * e], report.edgePoints[2 * e + 1] };
-      lines->InsertNextCell(2, pts);
-      edgeFlags->InsertNextValue(report.edgeFlags[e]);
-      valence->InsertNextValue(report.edgeValence[e]);
-    }
-    edges->SetPoints(output->GetPoints());
-    edges->SetLines(lines);
-    edges->GetCellData()->AddArray(edgeFlags);
-    edges->GetCellData()->AddArray(valence);
-    edges->GetCellData()->SetActiveScalars("EdgeFlags");
-  }
+    fillDefectEdges(report, output->GetPoints(), edges);
 
   // ----- log and warnings -----
   vtkLog(TRACE, "VolGrid Surface Prep: " << parts << " part(s); " << repair.summary());

@@ -105,20 +105,9 @@ bool collinear(const double* a, const double* b, const double* c)
     predicates::orient2dProjected(a, b, c, 2) == 0;
 }
 
-} // namespace
-
-Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options, TetMesh& mesh,
-                     std::vector<int32_t>& inputToVertex, Progress* progress, DelaunayReport* report)
+// Refuses an empty point set, one too large for the tet index encoding, and non-finite coordinates.
+Status checkPoints(const double* xyz, size_t n)
 {
-  SilentProgress silent;
-  if (!progress)
-    progress = &silent;
-  DelaunayReport localReport;
-  DelaunayReport& rep = report ? *report : localReport;
-  rep = DelaunayReport();
-  rep.numInput = n;
-  mesh.clear();
-  inputToVertex.clear();
   if (n == 0 || !xyz)
     return Status::failure(ErrorKind::EmptyInput, "The point set is empty.");
   // Tet indices are stored as (tet<<2)|face in int32: about 6.5 tets per point -> 2^29 / 7 points.
@@ -126,35 +115,38 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     return Status::failure(ErrorKind::InvalidOption,
                            "Too many points (" + std::to_string(n) + "); at most " +
                              std::to_string((size_t(1) << 29) / 8) + " are supported.");
+  size_t bad = 0;
+  std::vector<int64_t> first;
+  for (size_t i = 0; i < n; ++i)
   {
-    size_t bad = 0;
-    std::vector<int64_t> first;
-    for (size_t i = 0; i < n; ++i)
+    const double* p = xyz + 3 * i;
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
     {
-      const double* p = xyz + 3 * i;
-      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
-      {
-        if (first.size() < 5)
-          first.push_back(static_cast<int64_t>(i));
-        ++bad;
-      }
+      if (first.size() < 5)
+        first.push_back(static_cast<int64_t>(i));
+      ++bad;
     }
-    if (bad)
-      return Status::failure(ErrorKind::NonFinitePoint,
-                             std::to_string(bad) + " point(s) have NaN or infinite coordinates (first id " +
-                               std::to_string(first[0]) + ").",
-                             first);
   }
-  progress->report(0.0, "Sorting points");
+  if (bad)
+    return Status::failure(ErrorKind::NonFinitePoint,
+                           std::to_string(bad) + " point(s) have NaN or infinite coordinates (first id " +
+                             std::to_string(first[0]) + ").",
+                           first);
+  return Status::success();
+}
 
-  // Insertion order (and exact duplicate merging when sorting).
+// The insertion order `order` (input ids): with options.spatialSort, Hilbert-sorted in BRIO rounds
+// (roundStarts: their offsets) with exact duplicates merged (inputToVertex maps them to the lowest id);
+// else the input order. inputToVertex: the identity apart from those.
+void insertionOrder(const double* xyz, size_t n, const DelaunayOptions& options, std::vector<int32_t>& inputToVertex,
+                    std::vector<int32_t>& order, std::vector<size_t>& roundStarts)
+{
   inputToVertex.resize(n);
   for (size_t i = 0; i < n; ++i)
     inputToVertex[i] = static_cast<int32_t>(i);
-  std::vector<int32_t> order(n);
+  order.resize(n);
   for (size_t i = 0; i < n; ++i)
     order[i] = static_cast<int32_t>(i);
-  std::vector<size_t> roundStarts; // BRIO rounds (offsets into order)
   if (options.spatialSort)
   {
     std::vector<uint64_t> keys;
@@ -163,21 +155,13 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     std::vector<uint64_t>().swap(keys);
     brioRounds(order, options.seed, 64, &roundStarts);
   }
+}
 
-  // During the construction vertex k is the k-th point in insertion order (order[k] is its input id):
-  // consecutive insertions then touch nearby memory. The SoS ids are the input ids, so the result does
-  // not depend on the order. The tets are renumbered to input ids at the end.
-  const size_t m = order.size();
-  // Tets: ~6.75 per point for uniform random points, ~7.0 for jittered grids; reserve 7.25 (then 1.5x
-  // growth) so that the big arrays are allocated once.
-  mesh.reserve(n, static_cast<size_t>(7.25 * static_cast<double>(m)) + 64);
-  mesh.points.resize(3 * m);
-  for (size_t k = 0; k < m; ++k)
-    for (int a = 0; a < 3; ++a)
-      mesh.points[3 * k + a] = xyz[3 * static_cast<size_t>(order[k]) + a];
-
-  // First tet: four affinely independent points, the earliest in insertion order.
-  const int32_t im = static_cast<int32_t>(m);
+// The first tet: four affinely independent vertices of `mesh`, the earliest in insertion order; a
+// failure naming the degeneracy (of all n input points) when there are none.
+Status findFirstTet(const TetMesh& mesh, size_t n, int32_t firstTet[4])
+{
+  const int32_t im = mesh.numVertices();
   int32_t ia = 0, ib = im, ic = im, id = im;
   for (int32_t k = 1; k < im && ib == im; ++k)
     if (!samePoint(mesh.point(k), mesh.point(ia)))
@@ -190,49 +174,50 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
       id = k;
   if (id >= im)
   {
-    mesh.clear();
     const char* what = ib >= im ? "identical" : ic >= im ? "collinear" : "coplanar";
     return Status::failure(ErrorKind::DegenerateInput,
                            "All " + std::to_string(n) + " points are " + what +
                              ": a tetrahedralization needs at least four affinely independent points.");
   }
-  initDelaunayTet(mesh, ia, ib, ic, id);
+  firstTet[0] = ia;
+  firstTet[1] = ib;
+  firstTet[2] = ic;
+  firstTet[3] = id;
+  return Status::success();
+}
 
-  DelaunayInserter inserter(mesh, options.seed);
-  inserter.setSoSIds(order.data());
-  double unit = 0;
-  if (latticeUnit(xyz, n, unit))
-  {
-    inserter.impl_->latticeOrientLimit = 65536.0 * unit;
-    // |p_i - e|^2 <= (512 u)^2 implies every difference is at most 512 units.
-    inserter.impl_->latticeInsphereLimit2 = (512.0 * unit) * (512.0 * unit);
-  }
-  if (options.location == PointLocation::BucketGrid)
-  {
-    double lo[3], hi[3];
+// PointLocation::BucketGrid: the grid over the input's bounding box (m vertices to come), the first tet's
+// vertices registered in it.
+void enableBuckets(DelaunayInserter& inserter, const TetMesh& mesh, const double* xyz, size_t n, size_t m)
+{
+  double lo[3], hi[3];
+  for (int a = 0; a < 3; ++a)
+    lo[a] = hi[a] = xyz[a];
+  for (size_t i = 0; i < n; ++i)
     for (int a = 0; a < 3; ++a)
-      lo[a] = hi[a] = xyz[a];
-    for (size_t i = 0; i < n; ++i)
-      for (int a = 0; a < 3; ++a)
-      {
-        lo[a] = std::min(lo[a], xyz[3 * i + a]);
-        hi[a] = std::max(hi[a], xyz[3 * i + a]);
-      }
-    inserter.enableBucketGrid(lo, hi, m);
-    for (int32_t t = 0; t < mesh.tetCapacity(); ++t)
-      if (!mesh.isGhost(t))
-        for (int k = 0; k < 4; ++k)
-          inserter.registerVertex(mesh.vertex(t, k), t);
-  }
-  progress->report(0.0, "Inserting points");
-  if (progress->cancelled())
-  {
-    mesh.clear();
-    return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
-  }
+    {
+      lo[a] = std::min(lo[a], xyz[3 * i + a]);
+      hi[a] = std::max(hi[a], xyz[3 * i + a]);
+    }
+  inserter.enableBucketGrid(lo, hi, m);
+  for (int32_t t = 0; t < mesh.tetCapacity(); ++t)
+    if (!mesh.isGhost(t))
+      for (int k = 0; k < 4; ++k)
+        inserter.registerVertex(mesh.vertex(t, k), t);
+}
+
+// Inserts every vertex but the first tet's, in insertion order: the BRIO rounds large enough for it on
+// `threads` workers (insertParallel), the others and the points those leave over sequentially. A
+// duplicate found on the way maps to its twin in inputToVertex. Fails when cancelled (the mesh cleared).
+Status insertPoints(TetMesh& mesh, DelaunayInserter& inserter, const std::vector<int32_t>& order,
+                    const std::vector<size_t>& roundStarts, const int32_t firstTet[4], const DelaunayOptions& options,
+                    int threads, std::vector<int32_t>& inputToVertex, DelaunayReport& rep, Progress* progress)
+{
+  const size_t m = order.size();
+  const int32_t im = static_cast<int32_t>(m);
   constexpr int32_t kReportEvery = 1 << 16;
-  const int32_t firstTet[4] = { ia, ib, ic, id };
-  auto isFirstTet = [&](int32_t k) { return k == ia || k == ib || k == ic || k == id; };
+  auto isFirstTet = [&](int32_t k)
+  { return k == firstTet[0] || k == firstTet[1] || k == firstTet[2] || k == firstTet[3]; };
   auto cancelled = [&]()
   {
     if (!progress->cancelled())
@@ -260,7 +245,6 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     return true;
   };
 
-  const int threads = std::min(resolveThreads(options.threads), kMaxParallelWorkers);
   int32_t done = 0;          // order[0..done) handled
   std::vector<int32_t> rest; // points left over by the parallel stage
   if (threads > 1 && options.location == PointLocation::Walk && roundStarts.size() > 2 && m >= kParallelMinPoints)
@@ -292,6 +276,85 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
     if (r.duplicateOf >= 0)
       inputToVertex[order[k]] = order[r.duplicateOf];
   }
+  return Status::success();
+}
+
+// rep's duplicate count and first ids: the input points mapped to another one.
+void countDuplicates(const std::vector<int32_t>& inputToVertex, DelaunayReport& rep)
+{
+  for (size_t i = 0; i < inputToVertex.size(); ++i)
+    if (inputToVertex[i] != static_cast<int32_t>(i))
+    {
+      ++rep.numDuplicates;
+      if (rep.firstDuplicates.size() < 5)
+        rep.firstDuplicates.push_back(static_cast<int64_t>(i));
+    }
+}
+
+} // namespace
+
+Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options, TetMesh& mesh,
+                     std::vector<int32_t>& inputToVertex, Progress* progress, DelaunayReport* report)
+{
+  SilentProgress silent;
+  if (!progress)
+    progress = &silent;
+  DelaunayReport localReport;
+  DelaunayReport& rep = report ? *report : localReport;
+  rep = DelaunayReport();
+  rep.numInput = n;
+  mesh.clear();
+  inputToVertex.clear();
+  const Status valid = checkPoints(xyz, n);
+  if (!valid.ok())
+    return valid;
+  progress->report(0.0, "Sorting points");
+  std::vector<int32_t> order;
+  std::vector<size_t> roundStarts; // BRIO rounds (offsets into order)
+  insertionOrder(xyz, n, options, inputToVertex, order, roundStarts);
+
+  // During the construction vertex k is the k-th point in insertion order (order[k] is its input id):
+  // consecutive insertions then touch nearby memory. The SoS ids are the input ids, so the result does
+  // not depend on the order. The tets are renumbered to input ids at the end.
+  const size_t m = order.size();
+  // Tets: ~6.75 per point for uniform random points, ~7.0 for jittered grids; reserve 7.25 (then 1.5x
+  // growth) so that the big arrays are allocated once.
+  mesh.reserve(n, static_cast<size_t>(7.25 * static_cast<double>(m)) + 64);
+  mesh.points.resize(3 * m);
+  for (size_t k = 0; k < m; ++k)
+    for (int a = 0; a < 3; ++a)
+      mesh.points[3 * k + a] = xyz[3 * static_cast<size_t>(order[k]) + a];
+  int32_t firstTet[4];
+  const Status first = findFirstTet(mesh, n, firstTet);
+  if (!first.ok())
+  {
+    mesh.clear();
+    return first;
+  }
+  initDelaunayTet(mesh, firstTet[0], firstTet[1], firstTet[2], firstTet[3]);
+
+  DelaunayInserter inserter(mesh, options.seed);
+  inserter.setSoSIds(order.data());
+  double unit = 0;
+  if (latticeUnit(xyz, n, unit))
+  {
+    inserter.impl_->latticeOrientLimit = 65536.0 * unit;
+    // |p_i - e|^2 <= (512 u)^2 implies every difference is at most 512 units.
+    inserter.impl_->latticeInsphereLimit2 = (512.0 * unit) * (512.0 * unit);
+  }
+  if (options.location == PointLocation::BucketGrid)
+    enableBuckets(inserter, mesh, xyz, n, m);
+  progress->report(0.0, "Inserting points");
+  if (progress->cancelled())
+  {
+    mesh.clear();
+    return Status::failure(ErrorKind::Cancelled, "Delaunay tetrahedralization cancelled.");
+  }
+  const int threads = std::min(resolveThreads(options.threads), kMaxParallelWorkers);
+  const Status inserted =
+    insertPoints(mesh, inserter, order, roundStarts, firstTet, options, threads, inputToVertex, rep, progress);
+  if (!inserted.ok())
+    return inserted;
   // Back to input vertex numbering; optionally canonical tet numbering (independent of the thread count
   // and of the construction's history).
   rep.walkSteps += inserter.walkSteps();
@@ -321,13 +384,7 @@ Status buildDelaunay(const double* xyz, size_t n, const DelaunayOptions& options
   // which is the lowest id: insertion follows the input order apart from the first four points, and
   // none of those can have an earlier twin (they are the first points that differ / are not collinear
   // / not coplanar).
-  for (size_t i = 0; i < n; ++i)
-    if (inputToVertex[i] != static_cast<int32_t>(i))
-    {
-      ++rep.numDuplicates;
-      if (rep.firstDuplicates.size() < 5)
-        rep.firstDuplicates.push_back(static_cast<int64_t>(i));
-    }
+  countDuplicates(inputToVertex, rep);
   rep.numVertices = n - rep.numDuplicates;
   if (!options.keepGhosts)
     mesh.removeGhostTets();

@@ -144,46 +144,11 @@ Status plyError(const std::string& path, const std::string& what)
 {
   return Status::failure(ErrorKind::InvalidOption, path + ": " + what);
 }
-} // namespace
 
-Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
+// The header after the magic line, up to end_header: the encoding and the elements with their properties.
+Status readHeader(std::istream& in, const std::string& path, Encoding& encoding, std::vector<Element>& elements)
 {
-  mesh.clear();
-  SurfaceReadInfo localInfo;
-  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
-  info = SurfaceReadInfo();
-  // A .ply.gz file is decompressed into memory and parsed from there.
-  std::ifstream file;
-  std::istringstream unpacked;
-  const bool gzip = isGzipPath(path);
-  if (gzip)
-  {
-    std::string text;
-    const Status s = readGzipFile(path, text);
-    if (!s.ok())
-      return s;
-    unpacked.str(std::move(text));
-  }
-  else
-  {
-    const Status regular = detail::checkRegularFile(path);
-    if (!regular.ok())
-      return regular;
-    file.open(path, std::ios::binary);
-    if (!file)
-      return plyError(path, "cannot open the file");
-  }
-  std::istream& in = gzip ? static_cast<std::istream&>(unpacked) : file;
-  const double fileBytes =
-    gzip ? static_cast<double>(unpacked.str().size()) : static_cast<double>(detail::fileSize(path));
-
-  // Header.
   std::string line;
-  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
-    return plyError(path, "not a PLY file (no 'ply' magic line)");
-  Encoding encoding = Encoding::Ascii;
-  std::vector<Element> elements;
-  bool headerDone = false;
   while (std::getline(in, line))
   {
     if (!line.empty() && line.back() == '\r')
@@ -231,16 +196,14 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
       elements.back().properties.push_back(p);
     }
     else if (keyword == "end_header")
-    {
-      headerDone = true;
-      break;
-    }
+      return Status::success();
   }
-  if (!headerDone)
-    return plyError(path, "the header has no end_header line");
-  info.format = encoding == Encoding::Ascii ? "PLY ascii" : "PLY binary";
+  return plyError(path, "the header has no end_header line");
+}
 
-  // Counts the file cannot hold are refused before anything is allocated.
+// Counts the file cannot hold are refused before anything is allocated.
+Status checkCounts(const std::string& path, const std::vector<Element>& elements, Encoding encoding, double fileBytes)
+{
   for (const Element& e : elements)
   {
     // Entries without properties take no bytes: no file size could bound their count.
@@ -253,9 +216,66 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
                       "element '" + e.name + "' claims " + std::to_string(e.count) + " entries, more than the file's " +
                         std::to_string(static_cast<long long>(fileBytes)) + " bytes can hold");
   }
+  return Status::success();
+}
 
-  // Body.
-  BodyReader body(in, encoding);
+// One face (vertex ids, checked): a triangle as it is, a polygon ear-clipped in its plane (a fan where
+// that fails); fewer than 3 vertices add nothing.
+void addFace(const std::vector<int32_t>& list, std::vector<int32_t>& triangles, SurfaceMesh& mesh,
+             SurfaceReadInfo& info)
+{
+  ++info.fileFaces;
+  if (list.size() < 3)
+    return;
+  if (list.size() == 3)
+  {
+    mesh.addTriangle(list[0], list[1], list[2]);
+    return;
+  }
+  ++info.polygonFaces;
+  triangles.clear();
+  if (!triangulatePolygon(mesh.points, list, triangles))
+  {
+    ++info.fanFallbacks;
+    triangles.clear();
+    for (size_t k = 1; k + 1 < list.size(); ++k)
+      triangles.insert(triangles.end(), { list[0], list[k], list[k + 1] });
+  }
+  for (size_t k = 0; k + 2 < triangles.size(); k += 3)
+    mesh.addTriangle(triangles[k], triangles[k + 1], triangles[k + 2]);
+}
+
+// One triangle strip (vertex ids, -1 restarts it): a b c d ... gives (a,b,c), (c,b,d), (c,d,e), ...:
+// odd triangles are flipped; a triangle repeating a vertex (a turn of the strip) is none.
+void addStrip(const std::vector<int32_t>& list, SurfaceMesh& mesh, SurfaceReadInfo& info)
+{
+  size_t start = 0;
+  for (size_t k = 0; k <= list.size(); ++k)
+  {
+    if (k < list.size() && list[k] != -1)
+      continue;
+    for (size_t j = start; j + 2 < k; ++j)
+    {
+      const bool odd = (j - start) % 2 == 1;
+      const int32_t a = list[j], b = list[j + 1], c = list[j + 2];
+      if (a == b || b == c || a == c)
+        continue; // strips repeat a vertex to turn: those are not triangles
+      if (odd)
+        mesh.addTriangle(b, a, c);
+      else
+        mesh.addTriangle(a, b, c);
+      ++info.fileFaces;
+    }
+    start = k + 1;
+  }
+}
+
+// The body: vertex x/y/z into mesh.points, face and tristrips index lists into triangles; other
+// elements and properties read and dropped. Fails on a short file, a token that is not a number, a bad
+// list length or a vertex id out of range.
+Status readBody(BodyReader& body, const std::string& path, const std::vector<Element>& elements, SurfaceMesh& mesh,
+                SurfaceReadInfo& info)
+{
   auto endsInside = [&](const Element& e, int64_t i)
   {
     return plyError(path,
@@ -322,55 +342,65 @@ Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
                             e.name + " " + std::to_string(i) + " refers to vertex " + std::to_string(id) +
                               " (the file has " + std::to_string(vertexCount) + ")");
         if (isFace)
-        {
-          ++info.fileFaces;
-          if (list.size() < 3)
-            continue;
-          if (list.size() == 3)
-          {
-            mesh.addTriangle(list[0], list[1], list[2]);
-            continue;
-          }
-          ++info.polygonFaces;
-          triangles.clear();
-          if (!triangulatePolygon(mesh.points, list, triangles))
-          {
-            ++info.fanFallbacks;
-            triangles.clear();
-            for (size_t k = 1; k + 1 < list.size(); ++k)
-              triangles.insert(triangles.end(), { list[0], list[k], list[k + 1] });
-          }
-          for (size_t k = 0; k + 2 < triangles.size(); k += 3)
-            mesh.addTriangle(triangles[k], triangles[k + 1], triangles[k + 2]);
-        }
+          addFace(list, triangles, mesh, info);
         else
-        {
-          // A strip a b c d ... gives (a,b,c), (c,b,d), (c,d,e), ...: odd triangles are flipped.
-          size_t start = 0;
-          for (size_t k = 0; k <= list.size(); ++k)
-          {
-            if (k < list.size() && list[k] != -1)
-              continue;
-            for (size_t j = start; j + 2 < k; ++j)
-            {
-              const bool odd = (j - start) % 2 == 1;
-              const int32_t a = list[j], b = list[j + 1], c = list[j + 2];
-              if (a == b || b == c || a == c)
-                continue; // strips repeat a vertex to turn: those are not triangles
-              if (odd)
-                mesh.addTriangle(b, a, c);
-              else
-                mesh.addTriangle(a, b, c);
-              ++info.fileFaces;
-            }
-            start = k + 1;
-          }
-        }
+          addStrip(list, mesh, info);
       }
       if (isVertex)
         mesh.points.insert(mesh.points.end(), xyz, xyz + 3);
     }
   }
+  return Status::success();
+}
+} // namespace
+
+Status readPLY(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
+{
+  mesh.clear();
+  SurfaceReadInfo localInfo;
+  SurfaceReadInfo& info = infoOut ? *infoOut : localInfo;
+  info = SurfaceReadInfo();
+  // A .ply.gz file is decompressed into memory and parsed from there.
+  std::ifstream file;
+  std::istringstream unpacked;
+  const bool gzip = isGzipPath(path);
+  if (gzip)
+  {
+    std::string text;
+    const Status s = readGzipFile(path, text);
+    if (!s.ok())
+      return s;
+    unpacked.str(std::move(text));
+  }
+  else
+  {
+    const Status regular = detail::checkRegularFile(path);
+    if (!regular.ok())
+      return regular;
+    file.open(path, std::ios::binary);
+    if (!file)
+      return plyError(path, "cannot open the file");
+  }
+  std::istream& in = gzip ? static_cast<std::istream&>(unpacked) : file;
+  const double fileBytes =
+    gzip ? static_cast<double>(unpacked.str().size()) : static_cast<double>(detail::fileSize(path));
+
+  std::string line;
+  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
+    return plyError(path, "not a PLY file (no 'ply' magic line)");
+  Encoding encoding = Encoding::Ascii;
+  std::vector<Element> elements;
+  Status s = readHeader(in, path, encoding, elements);
+  if (!s.ok())
+    return s;
+  info.format = encoding == Encoding::Ascii ? "PLY ascii" : "PLY binary";
+  s = checkCounts(path, elements, encoding, fileBytes);
+  if (!s.ok())
+    return s;
+  BodyReader body(in, encoding);
+  s = readBody(body, path, elements, mesh, info);
+  if (!s.ok())
+    return s;
   return detail::finish(path, mesh, &info, options.mergeCoincidentPoints);
 }
 

@@ -86,17 +86,7 @@ bool Recoverer::traceSegment(int32_t a, int32_t b, std::vector<Crossing>& faces,
   seenEdges_.clear();
   const double *A = m_.point(a), *B = m_.point(b);
   ed_.star(a, queue_);
-  const uint32_t s = ed_.newStamp();
-  for (int32_t t : queue_)
-    ed_.tetStamp[t] = s;
-  auto push = [&](int32_t u)
-  {
-    if (u >= 0 && ed_.tetStamp[u] != s)
-    {
-      ed_.tetStamp[u] = s;
-      queue_.push_back(u);
-    }
-  };
+  const uint32_t s = seedQueue();
   int32_t f[3];
   for (size_t k = 0; k < queue_.size(); ++k)
   {
@@ -116,7 +106,7 @@ bool Recoverer::traceSegment(int32_t a, int32_t b, std::vector<Crossing>& faces,
       {
         if (seenFaces_.insert(TriKey(f[0], f[1], f[2])).second)
           faces.push_back({ t, i, 0 });
-        push(m_.neighbor(t, i));
+        pushOnce(m_.neighbor(t, i), s);
       }
       else if ((l1 == 0) + (l2 == 0) + (l3 == 0) >= 2)
         return false; // through a vertex
@@ -139,7 +129,7 @@ bool Recoverer::traceSegment(int32_t a, int32_t b, std::vector<Crossing>& faces,
       // Tets around the edge: neighbours across the two faces containing it.
       for (int i = 0; i < 4; ++i)
         if (i != e[0] && i != e[1])
-          push(m_.neighbor(t, i));
+          pushOnce(m_.neighbor(t, i), s);
     }
   }
   return true;
@@ -159,17 +149,7 @@ bool Recoverer::traceFacet(int32_t a, int32_t b, int32_t c, std::vector<Crossing
     ed_.star(a, queue_);
   else
     queue_ = tets;
-  const uint32_t s = ed_.newStamp();
-  for (int32_t t : queue_)
-    ed_.tetStamp[t] = s;
-  auto push = [&](int32_t u)
-  {
-    if (u >= 0 && ed_.tetStamp[u] != s)
-    {
-      ed_.tetStamp[u] = s;
-      queue_.push_back(u);
-    }
-  };
+  const uint32_t s = seedQueue();
   for (size_t k = 0; k < queue_.size(); ++k)
   {
     const int32_t t = queue_[k];
@@ -199,7 +179,7 @@ bool Recoverer::traceFacet(int32_t a, int32_t b, int32_t c, std::vector<Crossing
         edges.push_back({ t, v[e[0]], v[e[1]] });
       for (int i = 0; i < 4; ++i)
         if (i != e[0] && i != e[1])
-          push(m_.neighbor(t, i));
+          pushOnce(m_.neighbor(t, i), s);
     }
   }
   if (visited)

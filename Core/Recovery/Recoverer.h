@@ -93,6 +93,25 @@ public:
   int64_t steinerSegment = 0, steinerFacet = 0;
 
 private:
+  // The breadth-first walks of traceSegment and traceFacet: seedQueue stamps the tets already in queue_
+  // with a fresh stamp (returned); pushOnce appends tet t (-1: none) unless it carries that stamp.
+  // Defined here so that the walks' inner loops inline them.
+  uint32_t seedQueue()
+  {
+    const uint32_t s = ed_.newStamp();
+    for (int32_t t : queue_)
+      ed_.tetStamp[t] = s;
+    return s;
+  }
+  void pushOnce(int32_t t, uint32_t stamp)
+  {
+    if (t >= 0 && ed_.tetStamp[t] != stamp)
+    {
+      ed_.tetStamp[t] = stamp;
+      queue_.push_back(t);
+    }
+  }
+
   MeshEditor& ed_;
   TetMesh& m_;
   BoundaryConstraints& bc_;

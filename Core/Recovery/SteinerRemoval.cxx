@@ -106,54 +106,112 @@ public:
 
   int64_t addedInterior = 0;
 
+  // Removes boundary Steiner point p: its subfaces are replaced by a triangulation of the polygon they
+  // leave on each parent facet, and each side of the boundary gets a new interior point (or a fill
+  // without one). False, with the mesh and the constraints unchanged, when that is not possible.
   bool remove(int32_t p)
   {
-    std::vector<int32_t> S;
-    ed_.star(p, S);
-    if (S.empty())
+    Removal r;
+    ed_.star(p, r.S);
+    if (r.S.empty())
       return false;
+    collectSubfaces(p, r);
+    if (r.subs.empty() || !boundaryPolygons(p, r))
+      return false;
+    findSides(p, r);
+    if (r.nsides > 2)
+      return false;
+    orientSides(p, r);
+    // Several triangulations of the polygons are tried: the best-ear one, then fans from each polygon
+    // vertex.
+    const size_t nsides = static_cast<size_t>(r.nsides);
+    r.sidePoint.resize(nsides);
+    r.sideRegion.assign(nsides, -1);
+    r.sideFilled.assign(nsides, 0);
+    size_t maxPoly = 3;
+    for (auto& pl : r.polys)
+      maxPoly = std::max(maxPoly, pl.v.size());
+    bool good = false;
+    for (size_t variant = 0; variant <= maxPoly && !good; ++variant)
+    {
+      r.newTets.clear();
+      r.newTetSide.clear();
+      good = triangulatePolygons(variant, r);
+      if (!good)
+        continue;
+      cav = r.S;
+      cavSide = r.side;
+      r.sideFilled.assign(nsides, 0);
+      for (int sd = 0; sd < r.nsides && good; ++sd)
+        good = fillSide(p, sd, r);
+    }
+    return good && commit(p, r);
+  }
+
+private:
+  // A polygon left on parent facet `parent` by the removal of p: its subfaces around p form a fan whose
+  // outer edges make a closed polygon (p inside the facet) or an open chain (p on a segment).
+  struct Polygon
+  {
+    std::vector<int32_t> v; // counter-clockwise in the parent's orientation
+    int axis, o;            // the projection drops `axis`; o is the sign of a counter-clockwise turn in it
+    int32_t parent;
+    bool closed;
+  };
+  // One removal in progress (remove()).
+  struct Removal
+  {
+    std::vector<int32_t> S;                           // p's star
+    std::vector<int32_t> subs;                        // p's subfaces, in the order met
+    std::map<int32_t, std::vector<int32_t>> byParent; // the same, by parent facet
+    std::vector<Polygon> polys;
+    std::vector<int32_t> side; // per tet of S: its side (component of S across non-subface faces)
+    int nsides = 0;
+    std::vector<std::map<int32_t, int>> sideOfParent; // per side: parent -> +1 normal side, -1 other
+    std::vector<std::array<int32_t, 3>> newTris;      // the polygons' triangulation
+    std::vector<int32_t> newTriParent;
+    std::vector<std::array<int32_t, 4>> newTets; // fourth vertex -2 - sd: side sd's new point
+    std::vector<int> newTetSide;
+    std::vector<std::array<double, 3>> sidePoint; // the new point of each side
+    std::vector<int32_t> sideRegion;              // the region of each side's tets (-1 unknown)
+    std::vector<char> sideFilled;                 // side filled without a new point
+  };
+
+  // r.subs and r.byParent: the subfaces of p's star (faces of r.S not containing p).
+  void collectSubfaces(int32_t p, Removal& r)
+  {
     int32_t f[3];
-    // Subfaces around p, grouped by parent.
-    std::map<int32_t, std::vector<int32_t>> byParent;
-    std::vector<int32_t> subs;
-    for (int32_t t : S)
+    for (int32_t t : r.S)
       for (int i = 0; i < 4; ++i)
       {
         if (m_.vertex(t, i) == p)
           continue;
         m_.faceVertices(t, i, f);
         const int32_t sf = bc_.findSubface(f[0], f[1], f[2]);
-        if (sf >= 0 && std::find(subs.begin(), subs.end(), sf) == subs.end())
+        if (sf >= 0 && std::find(r.subs.begin(), r.subs.end(), sf) == r.subs.end())
         {
-          subs.push_back(sf);
-          byParent[bc_.parent[sf]].push_back(sf);
+          r.subs.push_back(sf);
+          r.byParent[bc_.parent[sf]].push_back(sf);
         }
       }
-    if (subs.empty())
-      return false;
-    // New boundary triangles per parent.
-    struct Poly
-    {
-      std::vector<int32_t> v;
-      int axis, o;
-      int32_t parent;
-      bool closed;
-    };
-    std::vector<Poly> polys;
-    std::vector<std::array<int32_t, 3>> newTris;
-    std::vector<int32_t> newTriParent;
-    for (auto& [par, list] : byParent)
+  }
+
+  // r.polys: per parent, the polygon its fan around p leaves, with the projection of the parent's
+  // (area-weighted) normal. False when a fan is not one chain, or closes around fewer than 3 vertices.
+  bool boundaryPolygons(int32_t p, Removal& r)
+  {
+    for (auto& [par, list] : r.byParent)
     {
       std::vector<std::pair<int32_t, int32_t>> fan; // (x, y) of (p, x, y)
       double nrm[3] = { 0, 0, 0 };
       for (int32_t sf : list)
       {
         const int32_t* s = bc_.subface(sf);
-        int r = 0;
-        while (s[r] != p)
-          ++r;
-        fan.push_back({ s[(r + 1) % 3], s[(r + 2) % 3] });
-        const double *P = m_.point(p), *X = m_.point(s[(r + 1) % 3]), *Y = m_.point(s[(r + 2) % 3]);
+        int k0 = 0;
+        while (s[k0] != p)
+          ++k0;
+        fan.push_back({ s[(k0 + 1) % 3], s[(k0 + 2) % 3] });
+        const double *P = m_.point(p), *X = m_.point(s[(k0 + 1) % 3]), *Y = m_.point(s[(k0 + 2) % 3]);
         double u[3], v[3];
         for (int k = 0; k < 3; ++k)
         {
@@ -201,21 +259,27 @@ public:
           axis = k;
       // Sign of a counter-clockwise turn when dropping `axis` (right-handed cyclic order).
       const int o = nrm[axis] > 0 ? 1 : -1;
-      polys.push_back({ poly, axis, o, par, closed });
+      r.polys.push_back({ poly, axis, o, par, closed });
     }
-    // Sides: components of S across faces containing p that are not subfaces.
+    return true;
+  }
+
+  // r.side and r.nsides: the components of p's star across the faces containing p that are not subfaces.
+  void findSides(int32_t p, Removal& r)
+  {
+    const std::vector<int32_t>& S = r.S;
     const uint32_t s0 = ed_.newStamp();
     for (int32_t t : S)
       ed_.tetStamp[t] = s0;
-    std::vector<int32_t> side(S.size(), -1);
+    r.side.assign(S.size(), -1);
     auto indexOf = [&](int32_t t) { return static_cast<size_t>(std::find(S.begin(), S.end(), t) - S.begin()); };
-    int nsides = 0;
+    int32_t f[3];
     for (size_t k = 0; k < S.size(); ++k)
     {
-      if (side[k] >= 0)
+      if (r.side[k] >= 0)
         continue;
       std::vector<int32_t> q = { S[k] };
-      side[k] = nsides;
+      r.side[k] = r.nsides;
       for (size_t h = 0; h < q.size(); ++h)
       {
         const int32_t t = q[h];
@@ -230,22 +294,25 @@ public:
           if (bc_.findSubface(f[0], f[1], f[2]) >= 0)
             continue;
           const size_t iu = indexOf(u);
-          if (side[iu] < 0)
+          if (r.side[iu] < 0)
           {
-            side[iu] = nsides;
+            r.side[iu] = r.nsides;
             q.push_back(u);
           }
         }
       }
-      ++nsides;
+      ++r.nsides;
     }
-    if (nsides > 2)
-      return false;
-    // Which side of each parent each side lies on: +1 normal side, -1 other side.
-    std::vector<std::map<int32_t, int>> sideOfParent(static_cast<size_t>(nsides));
-    for (size_t k = 0; k < S.size(); ++k)
+  }
+
+  // r.sideOfParent: which side of each parent facet each side lies on.
+  void orientSides(int32_t p, Removal& r)
+  {
+    r.sideOfParent.assign(static_cast<size_t>(r.nsides), {});
+    int32_t f[3];
+    for (size_t k = 0; k < r.S.size(); ++k)
     {
-      const int32_t t = S[k];
+      const int32_t t = r.S[k];
       for (int i = 0; i < 4; ++i)
       {
         if (m_.vertex(t, i) == p)
@@ -256,164 +323,144 @@ public:
           continue;
         const int32_t* s = bc_.subface(sf);
         bool same = false;
-        for (int r = 0; r < 3; ++r)
-          same = same || (f[0] == s[r] && f[1] == s[(r + 1) % 3] && f[2] == s[(r + 2) % 3]);
+        for (int j = 0; j < 3; ++j)
+          same = same || (f[0] == s[j] && f[1] == s[(j + 1) % 3] && f[2] == s[(j + 2) % 3]);
         // faceVertices is seen positively from t's vertex i, which is inside t: same order = t on the
         // normal side.
-        sideOfParent[side[k]][bc_.parent[sf]] = same ? 1 : -1;
+        r.sideOfParent[r.side[k]][bc_.parent[sf]] = same ? 1 : -1;
       }
     }
-    // Per side: cavity faces and relocated point. Several triangulations of the polygons are tried: the
-    // best-ear one, then fans from each polygon vertex.
-    std::vector<std::array<int32_t, 4>> newTets;
-    std::vector<int> newTetSide;
-    std::vector<std::array<double, 3>> sidePoint(static_cast<size_t>(nsides));
-    std::vector<int32_t> sideRegion(static_cast<size_t>(nsides), -1);
-    std::vector<char> sideFilled(static_cast<size_t>(nsides), 0);
-    size_t maxPoly = 3;
-    for (auto& pl : polys)
-      maxPoly = std::max(maxPoly, pl.v.size());
-    bool good = false;
-    for (size_t variant = 0; variant <= maxPoly && !good; ++variant)
+  }
+
+  // r.newTris and r.newTriParent: triangulation `variant` of the polygons (0: best ears; v > 0: the fan
+  // from each polygon's vertex (v - 1) mod its size). False when it needs a forbidden edge.
+  bool triangulatePolygons(size_t variant, Removal& r)
+  {
+    r.newTris.clear();
+    r.newTriParent.clear();
+    bool good = true;
+    for (auto& pl : r.polys)
     {
-      newTris.clear();
-      newTriParent.clear();
-      newTets.clear();
-      newTetSide.clear();
-      good = true;
-      for (auto& pl : polys)
+      // New edges may not run along a split segment, except the piece that replaces p's two pieces
+      // (the ends of an open polygon).
+      auto allowed = [&](int32_t a, int32_t c)
       {
-        // New edges may not run along a split segment, except the piece that replaces p's two pieces
-        // (the ends of an open polygon).
-        auto allowed = [&](int32_t a, int32_t c)
+        if (!pl.closed && edgeKey(a, c) == edgeKey(pl.v.front(), pl.v.back()))
+          return true;
+        return !bc_.forbiddenEdge(a, c);
+      };
+      std::vector<std::array<int32_t, 3>> tris;
+      if (variant == 0 || pl.v.size() == 3)
+      {
+        if (!triangulatePolygon3(m_, pl.v, pl.axis, pl.o, tris, allowed))
+          good = false;
+      }
+      else
+      {
+        const size_t n = pl.v.size(), k0 = (variant - 1) % n;
+        for (size_t k = 1; k + 1 < n; ++k)
         {
-          if (!pl.closed && edgeKey(a, c) == edgeKey(pl.v.front(), pl.v.back()))
-            return true;
-          return !bc_.forbiddenEdge(a, c);
-        };
-        std::vector<std::array<int32_t, 3>> tris;
-        if (variant == 0 || pl.v.size() == 3)
-        {
-          if (!triangulatePolygon3(m_, pl.v, pl.axis, pl.o, tris, allowed))
+          tris.push_back({ { pl.v[k0], pl.v[(k0 + k) % n], pl.v[(k0 + k + 1) % n] } });
+          if (k + 2 < n && !allowed(pl.v[k0], pl.v[(k0 + k + 1) % n]))
             good = false;
         }
-        else
-        {
-          const size_t n = pl.v.size(), r = (variant - 1) % n;
-          for (size_t k = 1; k + 1 < n; ++k)
-          {
-            tris.push_back({ { pl.v[r], pl.v[(r + k) % n], pl.v[(r + k + 1) % n] } });
-            if (k + 2 < n && !allowed(pl.v[r], pl.v[(r + k + 1) % n]))
-              good = false;
-          }
-        }
-        for (auto& tr : tris)
-        {
-          newTris.push_back(tr);
-          newTriParent.push_back(pl.parent);
-        }
       }
-      if (!good)
-        continue;
-      cav = S;
-      cavSide = side;
-      sideFilled.assign(static_cast<size_t>(nsides), 0);
-      for (int sd = 0; sd < nsides && good; ++sd)
+      for (auto& tr : tris)
       {
-        std::vector<std::array<int32_t, 3>> faces;
-        for (size_t k = 0; k < S.size(); ++k)
-          if (side[k] == sd && region_ && sideRegion[sd] < 0 && static_cast<size_t>(S[k]) < region_->size())
-            sideRegion[sd] = (*region_)[S[k]];
-        // The cavity of this side: p's star on this side, enlarged by layers of outer tets when no point
-        // sees all of its faces (a reflex or flat neighbourhood of p).
-        bool found = false, facesValid = false, coned = false;
-        std::vector<std::array<int32_t, 4>> cone;
-        for (int layer = 0; layer <= kMaxLayers && !found && !coned; ++layer)
-        {
-          facesValid = false;
-          if (layer > 0 && !enlarge(p, sd, newTris))
-            break;
-          if (!cavityFaces(p, sd, newTris, newTriParent, sideOfParent[sd], faces))
-            break;
-          facesValid = true;
-          found = interiorPoint_.find(p, faces, sidePoint[sd].data());
-          // p's star may be flat (p rounded just outside a planar part of the boundary, between two
-          // triangulations of it): the cone from one of the cavity's own vertices then fills it, or else a
-          // search for a tetrahedralization of a small cavity without a new point.
-          coned = !found && ((coneFromVertex(faces, cone) && !foldsSegment(faces, cone)) || carve(faces, cone));
-        }
-        if (coned)
-        {
-          sideFilled[static_cast<size_t>(sd)] = 1;
-          for (auto& t : cone)
-          {
-            newTets.push_back(t);
-            newTetSide.push_back(sd);
-          }
-          continue;
-        }
-        if (!found)
-        {
-          // No point sees the whole cavity: tetrahedralize it without a point (Delaunay fill).
-          std::vector<std::array<int32_t, 4>> fill;
-          std::vector<std::array<int32_t, 3>> missing;
-          bool filled = false;
-          for (int grow = 0; grow <= kMaxFillGrowth && facesValid && !filled; ++grow)
-          {
-            if (fillCavityDelaunay(m_, faces, fill, &missing))
-            {
-              if (foldsSegment(faces, fill))
-                break;
-              filled = true;
-              break;
-            }
-            // Grow the cavity across the faces the Delaunay tetrahedralization lacks (TetGen's approach).
-            bool grew = false;
-            for (auto& mf : missing)
-              grew = growAcross(p, sd, mf) || grew;
-            if (!grew || !cavityFaces(p, sd, newTris, newTriParent, sideOfParent[sd], faces))
-              break;
-          }
-          if (filled)
-          {
-            sideFilled[static_cast<size_t>(sd)] = 1;
-            for (auto& t : fill)
-            {
-              newTets.push_back(t);
-              newTetSide.push_back(sd);
-            }
-            continue;
-          }
-          good = false;
-          break;
-        }
-        for (auto& fc : faces)
-        {
-          newTets.push_back({ { fc[0], fc[1], fc[2], -2 - sd } });
-          newTetSide.push_back(sd);
-        }
+        r.newTris.push_back(tr);
+        r.newTriParent.push_back(pl.parent);
       }
     }
-    if (!good)
-      return false;
-    // The relocated points are new vertices (p's id cannot be reused: faces through the old and the new
-    // position would have the same ids).
-    const int32_t firstNew = m_.numVertices();
-    std::vector<int32_t> sideVertex(static_cast<size_t>(nsides), -1);
-    int coneSides = 0;
-    for (int sd = 0; sd < nsides; ++sd)
+    return good;
+  }
+
+  // Side sd's tets into r.newTets: its cavity (p's star on this side, enlarged by layers of outer tets
+  // when no point sees all of its faces: a reflex or flat neighbourhood of p) coned from a new interior
+  // point, else from one of its own vertices or carved, else filled without a point. False when none works.
+  bool fillSide(int32_t p, int sd, Removal& r)
+  {
+    const std::vector<int32_t>& S = r.S;
+    std::vector<std::array<int32_t, 3>> faces;
+    for (size_t k = 0; k < S.size(); ++k)
+      if (r.side[k] == sd && region_ && r.sideRegion[sd] < 0 && static_cast<size_t>(S[k]) < region_->size())
+        r.sideRegion[sd] = (*region_)[S[k]];
+    bool found = false, facesValid = false, coned = false;
+    std::vector<std::array<int32_t, 4>> cone;
+    for (int layer = 0; layer <= kMaxLayers && !found && !coned; ++layer)
     {
-      if (sideFilled[static_cast<size_t>(sd)])
+      facesValid = false;
+      if (layer > 0 && !enlarge(p, sd, r.newTris))
+        break;
+      if (!cavityFaces(p, sd, r.newTris, r.newTriParent, r.sideOfParent[sd], faces))
+        break;
+      facesValid = true;
+      found = interiorPoint_.find(p, faces, r.sidePoint[sd].data());
+      // p's star may be flat (p rounded just outside a planar part of the boundary, between two
+      // triangulations of it): the cone from one of the cavity's own vertices then fills it, or else a
+      // search for a tetrahedralization of a small cavity without a new point.
+      coned = !found && ((coneFromVertex(faces, cone) && !foldsSegment(faces, cone)) || carve(faces, cone));
+    }
+    if (found)
+    {
+      for (auto& fc : faces)
+      {
+        r.newTets.push_back({ { fc[0], fc[1], fc[2], -2 - sd } });
+        r.newTetSide.push_back(sd);
+      }
+      return true;
+    }
+    std::vector<std::array<int32_t, 4>> fill;
+    if (!coned && !(facesValid && fillWithoutPoint(p, sd, r, faces, fill)))
+      return false;
+    r.sideFilled[static_cast<size_t>(sd)] = 1;
+    for (auto& t : coned ? cone : fill)
+    {
+      r.newTets.push_back(t);
+      r.newTetSide.push_back(sd);
+    }
+    return true;
+  }
+
+  // No point sees the whole cavity of side sd (its faces in `faces`): a Delaunay tetrahedralization of
+  // it without a point into `fill`, the cavity grown across the faces it lacks (TetGen's approach).
+  bool fillWithoutPoint(int32_t p, int sd, Removal& r, std::vector<std::array<int32_t, 3>>& faces,
+                        std::vector<std::array<int32_t, 4>>& fill)
+  {
+    std::vector<std::array<int32_t, 3>> missing;
+    for (int grow = 0; grow <= kMaxFillGrowth; ++grow)
+    {
+      if (fillCavityDelaunay(m_, faces, fill, &missing))
+        return !foldsSegment(faces, fill);
+      bool grew = false;
+      for (auto& mf : missing)
+        grew = growAcross(p, sd, mf) || grew;
+      if (!grew || !cavityFaces(p, sd, r.newTris, r.newTriParent, r.sideOfParent[sd], faces))
+        return false;
+    }
+    return false;
+  }
+
+  // Applies a removal whose sides are all filled: the new points (p's id cannot be reused: faces through
+  // the old and the new position would have the same ids), the tets, their regions, the subfaces. False,
+  // with nothing changed, when the mesh refuses the tets.
+  bool commit(int32_t p, Removal& r)
+  {
+    const int32_t firstNew = m_.numVertices();
+    std::vector<int32_t> sideVertex(static_cast<size_t>(r.nsides), -1);
+    int coneSides = 0;
+    for (int sd = 0; sd < r.nsides; ++sd)
+    {
+      if (r.sideFilled[static_cast<size_t>(sd)])
         continue;
-      sideVertex[static_cast<size_t>(sd)] = m_.addPoint(sidePoint[sd].data());
+      sideVertex[static_cast<size_t>(sd)] = m_.addPoint(r.sidePoint[sd].data());
       kinds_.push_back(VertexKind::SteinerInterior);
       ++coneSides;
     }
-    for (auto& t : newTets)
+    for (auto& t : r.newTets)
       if (t[3] <= -2)
         t[3] = sideVertex[static_cast<size_t>(-2 - t[3])];
     std::vector<int32_t> created;
-    if (!ed_.replace(cav, newTets, &created, true))
+    if (!ed_.replace(cav, r.newTets, &created, true))
     {
       m_.points.resize(3 * static_cast<size_t>(firstNew));
       kinds_.resize(static_cast<size_t>(firstNew));
@@ -429,16 +476,15 @@ public:
         if (m_.isFree(t))
           (*region_)[t] = -1;
       for (size_t k = 0; k < created.size(); ++k)
-        (*region_)[created[k]] = sideRegion[newTetSide[k]];
+        (*region_)[created[k]] = r.sideRegion[r.newTetSide[k]];
     }
-    for (int32_t sf : subs)
+    for (int32_t sf : r.subs)
       bc_.removeSubface(sf);
-    for (size_t k = 0; k < newTris.size(); ++k)
-      bc_.addSubface(newTris[k][0], newTris[k][1], newTris[k][2], newTriParent[k]);
+    for (size_t k = 0; k < r.newTris.size(); ++k)
+      bc_.addSubface(r.newTris[k][0], r.newTris[k][1], r.newTris[k][2], r.newTriParent[k]);
     return true;
   }
 
-private:
   static constexpr int kMaxLayers = 3;
   static constexpr int kMaxFillGrowth = 16;
   static constexpr size_t kMaxCarveFaces = 32;
