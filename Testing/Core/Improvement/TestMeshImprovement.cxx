@@ -335,15 +335,28 @@ TEST(MeshImprovement, AdaptivityHalvesTheSizeInABoxAndKeepsTheBoundary)
     }
 }
 
+namespace
+{
+// The benchmark's sphere-in-sphere domain at a smaller scale (body r = 1 with 1,280 triangles, far field
+// r = 10).
+SurfaceMesh sphereInSphere()
+{
+  return combine(enclosure(EnclosureShape::Sphere, 10.0, 1.25), enclosure(EnclosureShape::Sphere, 1.0, 1.0515 / 7.9));
+}
+
+DihedralSummary dihedralsOf(const MesherResult& r)
+{
+  TetMesh m;
+  EXPECT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok());
+  return summarizeDihedrals(m);
+}
+} // namespace
+
 TEST(MeshImprovement, SphereInSphereDefaultsReach15DegreesWithTheExactBoundary)
 {
-  // The benchmark's domain at a smaller scale (body r = 1 with 1,280 triangles, far field r = 10).
-  const SurfaceMesh s =
-    combine(enclosure(EnclosureShape::Sphere, 10.0, 1.25), enclosure(EnclosureShape::Sphere, 1.0, 1.0515 / 7.9));
+  const SurfaceMesh s = sphereInSphere();
   const MesherResult r = meshChecked(s, MesherOptions(), "sphere in sphere");
-  TetMesh m;
-  ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok());
-  const DihedralSummary d = summarizeDihedrals(m);
+  const DihedralSummary d = dihedralsOf(r);
   EXPECT_GE(d.minDihedral, 15.0);
   EXPECT_LE(d.maxDihedral, 165.0);
   EXPECT_EQ(d.inverted, 0);
@@ -365,12 +378,9 @@ TEST(MeshImprovement, SphereInSphereDefaultsReach15DegreesWithTheExactBoundary)
 // as the small-mesh path's within 3 degrees, and the same mesh at 1, 2 and 8 threads (README: Threads).
 TEST(MeshImprovement, LargeMeshPathIsExactAndTheSameOnAnyThreadCount)
 {
-  const SurfaceMesh s =
-    combine(enclosure(EnclosureShape::Sphere, 10.0, 1.25), enclosure(EnclosureShape::Sphere, 1.0, 1.0515 / 7.9));
+  const SurfaceMesh s = sphereInSphere();
   const MesherResult small = meshChecked(s, MesherOptions(), "small-mesh path");
-  TetMesh ms;
-  ASSERT_TRUE(tetMeshFromTets(small.points, small.tets, ms).ok());
-  const DihedralSummary ds = summarizeDihedrals(ms);
+  const DihedralSummary ds = dihedralsOf(small);
   std::vector<MesherResult> results;
   for (int threads : { 1, 2, 8 })
   {
@@ -378,9 +388,7 @@ TEST(MeshImprovement, LargeMeshPathIsExactAndTheSameOnAnyThreadCount)
     o.threads = threads;
     o.improvement.optimization.largeMeshTets = 0;
     results.push_back(meshChecked(s, o, "large-mesh path"));
-    TetMesh m;
-    ASSERT_TRUE(tetMeshFromTets(results.back().points, results.back().tets, m).ok());
-    const DihedralSummary d = summarizeDihedrals(m);
+    const DihedralSummary d = dihedralsOf(results.back());
     EXPECT_EQ(d.inverted, 0) << threads;
     EXPECT_GE(d.minDihedral, ds.minDihedral - 3.0) << threads;
     EXPECT_LE(d.maxDihedral, ds.maxDihedral + 3.0) << threads;
