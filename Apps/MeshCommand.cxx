@@ -1,4 +1,5 @@
 // volgrid mesh: boundary-conforming tetrahedral mesh of the volume enclosed by closed surfaces.
+#include "AtomicStream.h"
 #include "CliSupport.h"
 #include "Commands.h"
 #include "FlagParser.h"
@@ -21,6 +22,7 @@
 
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridWriter.h"
 
@@ -164,16 +166,39 @@ int parseArguments(int argc, char** argv, Arguments& args)
   return -1;
 }
 
-// OUT.vtk: the legacy binary format (for tools that read only legacy VTK).
+// vtkDataWriter asks OpenVTKFile() for its stream and deletes it when done: a stream over the atomic
+// temporary (AtomicStream.h), never the target itself.
+class LegacyStreamWriter : public vtkUnstructuredGridWriter
+{
+public:
+  static LegacyStreamWriter* New()
+  {
+    auto* writer = new LegacyStreamWriter;
+    writer->InitializeObjectBase();
+    return writer;
+  }
+  std::ostream* Target = nullptr;
+  ostream* OpenVTKFile() override { return new std::ostream(Target->rdbuf()); }
+};
+
+// OUT.vtk: the legacy binary format (for tools that read only legacy VTK), written atomically.
 bool writeLegacy(const std::string& path, vtkUnstructuredGrid* data)
 {
-  vtkNew<vtkUnstructuredGridWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(data);
-  writer->SetFileTypeToBinary();
-  if (writer->Write() != 1)
+  auto write = [data](std::ostream& stream, const std::string& temporary, std::string& writerError)
   {
-    std::fprintf(stderr, "volgrid mesh: cannot write '%s'\n", path.c_str());
+    vtkSmartPointer<LegacyStreamWriter> writer = vtkSmartPointer<LegacyStreamWriter>::New();
+    writer->Target = &stream;
+    writer->SetFileName(temporary.c_str()); // what VTK's own messages name
+    writer->SetInputData(data);
+    writer->SetFileTypeToBinary();
+    const bool ok = writer->Write() == 1 && writer->GetErrorCode() == 0;
+    writerError = "VTK could not encode the mesh";
+    return ok;
+  };
+  std::string error;
+  if (!volgrid::cli::writeStreamAtomically(path, write, error))
+  {
+    std::fprintf(stderr, "volgrid mesh: %s\n", error.c_str());
     return false;
   }
   return true;

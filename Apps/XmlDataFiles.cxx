@@ -1,7 +1,7 @@
 #include "XmlDataFiles.h"
 
+#include "AtomicStream.h"
 #include "CliSupport.h"
-#include "LatchedFileBuffer.h"
 
 #include "vtkVolGridXMLPolyDataReader.h"
 #include "vtkVolGridXMLUnstructuredGridReader.h"
@@ -14,15 +14,9 @@
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
-#include "AtomicFile.h"
-
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
 #include <ostream>
-#include <unistd.h>
 
 namespace volgrid
 {
@@ -44,9 +38,8 @@ vtkSmartPointer<vtkDataSet> readWith(const std::string& path)
 }
 
 // vtkXMLWriter writes into a stream the caller owns when its protected Stream is set (VTK 9.2 has no
-// public setter). That stream goes to AtomicFile's temporary through LatchedFileBuffer: the document is never
-// held in memory (at 5M tets the in-memory document and its copies were about 200 MB, a third of the run's
-// peak), a failed write is reported once, and commit() checks the file's size against the bytes written.
+// public setter): AtomicStream.h's stream into the temporary. The document is never held in memory (at 5M
+// tets the in-memory document and its copies were about 200 MB, a third of the run's peak).
 template<class Writer>
 class StreamWriter : public Writer
 {
@@ -63,40 +56,22 @@ public:
 // Inline binary: every DataArray carries its own base64 text, so no <AppendedData> block exists. zlib at
 // level 1, not VTK's default 5: measured on a 1.06M-tet .vtu, 1.05 s of CPU instead of 4.12 s for a file 3%
 // larger (23.2 MB instead of 22.5 MB); LZ4 would be faster still but is not read by every VTK-based tool.
-// A failed write never leaves a cut file or destroys the earlier one (AtomicFile.h).
 template<class Writer>
 bool writeWith(const std::string& path, vtkDataSet* data, std::string& error)
 {
-  volgrid::AtomicFile file;
-  if (!file.open(path, error))
-    return false;
-  const std::string failed = "writing '" + path + "' failed: ";
-  const std::string kept = " (the earlier file, if any, is unchanged)";
-  const int fd = ::open(file.temporaryPath().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-  if (fd < 0)
+  auto write = [data](std::ostream& stream, const std::string&, std::string& writerError)
   {
-    error = failed + std::strerror(errno) + kept;
-    return false;
-  }
-  LatchedFileBuffer buffer(fd);
-  std::ostream stream(&buffer);
-  vtkSmartPointer<StreamWriter<Writer>> writer = vtkSmartPointer<StreamWriter<Writer>>::New();
-  writer->SetTargetStream(&stream);
-  writer->SetInputData(data);
-  writer->SetDataModeToBinary();
-  writer->SetCompressorTypeToZLib();
-  writer->SetCompressionLevel(1);
-  writer->Write();
-  const unsigned long code = writer->GetErrorCode();
-  const int writeError = buffer.finish();
-  ::close(fd); // AtomicFile's own descriptor is the one whose close and fsync commit() checks
-  if (writeError != 0 || code != 0)
-  {
-    error = failed +
-      (writeError != 0 ? std::string(std::strerror(writeError)) : "VTK error code " + std::to_string(code)) + kept;
-    return false;
-  }
-  return file.commit(error, buffer.size());
+    vtkSmartPointer<StreamWriter<Writer>> writer = vtkSmartPointer<StreamWriter<Writer>>::New();
+    writer->SetTargetStream(&stream);
+    writer->SetInputData(data);
+    writer->SetDataModeToBinary();
+    writer->SetCompressorTypeToZLib();
+    writer->SetCompressionLevel(1);
+    writer->Write();
+    writerError = "VTK error code " + std::to_string(writer->GetErrorCode());
+    return writer->GetErrorCode() == 0;
+  };
+  return writeStreamAtomically(path, write, error);
 }
 } // namespace
 

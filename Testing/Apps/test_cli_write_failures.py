@@ -107,6 +107,9 @@ def main():
         limit = "ulimit -f 8"  # 8 KiB
         expect_refusal("mesh --boundary past ulimit -f", [volgrid, "mesh", wing, old, "--boundary", old_vtp],
                        protected=[old, old_vtp], names=old, shell_prefix=limit)
+        old_vtk = write(os.path.join(tmp, "old.vtk"), "the earlier legacy result, which must survive\n")
+        expect_refusal("mesh to legacy .vtk past ulimit -f", [volgrid, "mesh", wing, old_vtk], protected=old_vtk,
+                       names=old_vtk, shell_prefix=limit)
         expect_refusal("prep past ulimit -f", [volgrid, "prep", wing, old_off], protected=old_off, names=old_off,
                        shell_prefix=limit)
         expect_refusal("refine past ulimit -f", [volgrid, "refine", cube, old, "--size-array", "TargetSize"],

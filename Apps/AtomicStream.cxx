@@ -1,6 +1,10 @@
-#include "LatchedFileBuffer.h"
+#include "AtomicStream.h"
+
+#include "AtomicFile.h"
 
 #include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace volgrid
@@ -86,6 +90,35 @@ int LatchedFileBuffer::finish()
 {
   flushBuffer();
   return Error;
+}
+
+bool writeStreamAtomically(const std::string& path,
+                           const std::function<bool(std::ostream&, const std::string&, std::string&)>& write,
+                           std::string& error)
+{
+  AtomicFile file;
+  if (!file.open(path, error))
+    return false;
+  const std::string failed = "writing '" + path + "' failed: ";
+  const std::string kept = " (the earlier file, if any, is unchanged)";
+  const int fd = ::open(file.temporaryPath().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0)
+  {
+    error = failed + std::strerror(errno) + kept;
+    return false;
+  }
+  LatchedFileBuffer buffer(fd);
+  std::ostream stream(&buffer);
+  std::string writerError;
+  const bool written = write(stream, file.temporaryPath(), writerError);
+  const int writeError = buffer.finish();
+  ::close(fd); // AtomicFile's own descriptor is the one whose fsync and close commit() checks
+  if (writeError != 0 || !written)
+  {
+    error = failed + (writeError != 0 ? std::string(std::strerror(writeError)) : writerError) + kept;
+    return false;
+  }
+  return file.commit(error, buffer.size());
 }
 } // namespace cli
 } // namespace volgrid
