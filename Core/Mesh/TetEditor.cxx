@@ -58,7 +58,8 @@ TetFrame tetFrame(const double* a, const double* b, const double* c, const doubl
 
 // The plain formula with one square root per edge and per face: the fallback of tetSineQuality() when the
 // squared products of the fast path would leave the normal double range (coordinates beyond ~1e+-38).
-double tetSineQualityPlain(const TetFrame& f)
+// Out of line and cold: inlined, its five square roots doubled the hot function's code.
+[[gnu::noinline, gnu::cold]] double tetSineQualityPlain(const TetFrame& f)
 {
   auto norm = [](const double* u) { return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]); };
   const double det = f.det;
