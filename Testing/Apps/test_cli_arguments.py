@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The argument messages and exit codes of volgrid mesh, refine and prep, word for word: a missing value, a
+"""The argument messages and exit codes of the volgrid sub-commands, word for word: a missing value, a
 malformed or out-of-range number (the option table's ranges for its rows), an unknown flag, a bad choice, a
 wrong count of file arguments, and --help (exit 0, usage on stdout). Each case names the first line of
 stderr, whether the usage text follows it, and the exit code; these are what a user or a script sees.
@@ -58,6 +58,9 @@ CASES = [
     ("prep", ["--bogus"], 2, "volgrid prep: unknown option --bogus", U),
     ("prep", [], 2, "volgrid prep: missing OUT", U),
     ("prep", ["--center", "0,0,0", "out.vtp"], 2, "volgrid prep: --center and --dimensions go together", U),
+    ("check", [], 2, "volgrid check: missing SURFACE", U),
+    ("check", ["--bogus"], 2, "volgrid check: unknown option --bogus", U),
+    ("check", ["a", "b"], 2, "volgrid check: only one surface file", U),
 ]
 
 
@@ -77,7 +80,8 @@ for command, args, code, first, usage in CASES:
 
 # --help (anywhere before a bad flag): usage on stdout, nothing on stderr, exit 0.
 for command, extra in [("mesh", ["Boundary layers", "--format"]), ("refine", ["--size-array NAME"]),
-                       ("prep", ["--fill-holes N"])]:
+                       ("prep", ["--fill-holes N"]),
+                       ("check", ["--keep-points"])]:
     r = subprocess.run([volgrid, command, "--help", "--bogus"], capture_output=True, text=True, timeout=60)
     ok = r.returncode == 0 and r.stderr == "" and r.stdout.startswith("usage: volgrid " + command)
     ok = ok and all(word in r.stdout for word in extra)
