@@ -58,6 +58,9 @@ CASES = [
     ("prep", ["--bogus"], 2, "volgrid prep: unknown option --bogus", U),
     ("prep", [], 2, "volgrid prep: missing OUT", U),
     ("prep", ["--center", "0,0,0", "out.vtp"], 2, "volgrid prep: --center and --dimensions go together", U),
+    ("convert", ["a"], 2, "volgrid convert: expected IN and OUT", U),
+    ("convert", ["--bogus"], 2, "volgrid convert: unknown option '--bogus'", U),
+    ("convert", ["--format"], 2, "volgrid convert: --format needs a value", False),
     ("check", [], 2, "volgrid check: missing SURFACE", U),
     ("check", ["--bogus"], 2, "volgrid check: unknown option --bogus", U),
     ("check", ["a", "b"], 2, "volgrid check: only one surface file", U),
@@ -81,6 +84,7 @@ for command, args, code, first, usage in CASES:
 # --help (anywhere before a bad flag): usage on stdout, nothing on stderr, exit 0.
 for command, extra in [("mesh", ["Boundary layers", "--format"]), ("refine", ["--size-array NAME"]),
                        ("prep", ["--fill-holes N"]),
+                       ("convert", ["--patch-type"]),
                        ("check", ["--keep-points"])]:
     r = subprocess.run([volgrid, command, "--help", "--bogus"], capture_output=True, text=True, timeout=60)
     ok = r.returncode == 0 and r.stderr == "" and r.stdout.startswith("usage: volgrid " + command)
