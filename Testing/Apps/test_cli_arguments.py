@@ -58,6 +58,14 @@ CASES = [
     ("prep", ["--bogus"], 2, "volgrid prep: unknown option --bogus", U),
     ("prep", [], 2, "volgrid prep: missing OUT", U),
     ("prep", ["--center", "0,0,0", "out.vtp"], 2, "volgrid prep: --center and --dimensions go together", U),
+    ("delaunay", [], 2, "volgrid delaunay: give either an input .node file or --random N", U),
+    ("delaunay", ["--random"], 2, "volgrid delaunay: --random needs a value", False),
+    ("delaunay", ["--random", "-1"], 2, "volgrid delaunay: --random needs a non-negative count", False),
+    ("delaunay", ["--seed", "x"], 2, "volgrid delaunay: --seed expects an integer, got 'x'", False),
+    ("delaunay", ["--threads", "1025"], 2, "volgrid delaunay: --threads is 0 (all cores) or 1..1024, not 1025", False),
+    ("delaunay", ["--location", "foo"], 2, "volgrid delaunay: --location is walk or grid, not 'foo'", False),
+    ("delaunay", ["a", "b"], 2, "volgrid delaunay: more than one input ('b')", False),
+    ("delaunay", ["--bogus"], 2, "volgrid delaunay: unknown option '--bogus'", U),
     ("convert", ["a"], 2, "volgrid convert: expected IN and OUT", U),
     ("convert", ["--bogus"], 2, "volgrid convert: unknown option '--bogus'", U),
     ("convert", ["--format"], 2, "volgrid convert: --format needs a value", False),
@@ -84,6 +92,7 @@ for command, args, code, first, usage in CASES:
 # --help (anywhere before a bad flag): usage on stdout, nothing on stderr, exit 0.
 for command, extra in [("mesh", ["Boundary layers", "--format"]), ("refine", ["--size-array NAME"]),
                        ("prep", ["--fill-holes N"]),
+                       ("delaunay", ["--location"]),
                        ("convert", ["--patch-type"]),
                        ("check", ["--keep-points"])]:
     r = subprocess.run([volgrid, command, "--help", "--bogus"], capture_output=True, text=True, timeout=60)
