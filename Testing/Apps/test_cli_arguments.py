@@ -58,6 +58,15 @@ CASES = [
     ("prep", ["--bogus"], 2, "volgrid prep: unknown option --bogus", U),
     ("prep", [], 2, "volgrid prep: missing OUT", U),
     ("prep", ["--center", "0,0,0", "out.vtp"], 2, "volgrid prep: --center and --dimensions go together", U),
+    ("quality", [], 2, "volgrid quality: no input file", U),
+    ("quality", ["--bins"], 2, "volgrid quality: missing number", U),
+    ("quality", ["--bins", "0"], 2, "volgrid quality: --bins needs an integer in 1..10000", U),
+    ("quality", ["--bins", "x"], 2, "volgrid quality: --bins expects an integer, got 'x'", False),
+    ("quality", ["--threads", "-1"], 2, "volgrid quality: --threads needs an integer >= 0", U),
+    ("quality", ["--metric"], 2, "volgrid quality: missing metric name", U),
+    ("quality", ["--metric", "Foo"], 2, "volgrid quality: unknown metric 'Foo'", U),
+    ("quality", ["--bogus"], 2, "volgrid quality: unknown option --bogus", U),
+    ("quality", ["a", "b"], 2, "volgrid quality: more than one input file", U),
     ("delaunay", [], 2, "volgrid delaunay: give either an input .node file or --random N", U),
     ("delaunay", ["--random"], 2, "volgrid delaunay: --random needs a value", False),
     ("delaunay", ["--random", "-1"], 2, "volgrid delaunay: --random needs a non-negative count", False),
@@ -92,6 +101,7 @@ for command, args, code, first, usage in CASES:
 # --help (anywhere before a bad flag): usage on stdout, nothing on stderr, exit 0.
 for command, extra in [("mesh", ["Boundary layers", "--format"]), ("refine", ["--size-array NAME"]),
                        ("prep", ["--fill-holes N"]),
+                       ("quality", ["--metric NAME"]),
                        ("delaunay", ["--location"]),
                        ("convert", ["--patch-type"]),
                        ("check", ["--keep-points"])]:
