@@ -48,7 +48,6 @@ int runCheckCommand(int argc, char** argv)
   bool intersections = true;
   bool merge = true;
   volgrid::cli::FlagParser p("check", kUsage);
-  p.quoteUnknown = false;
   p.add("--json", json, true);
   p.add("--no-intersections", intersections, false);
   p.add("--keep-points", merge, false);

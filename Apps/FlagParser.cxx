@@ -25,7 +25,6 @@ Flag& FlagParser::push(const std::string& name, FlagKind kind, const std::string
   flag.name = name;
   flag.kind = kind;
   flag.help = help;
-  flag.usageOnMissing = usageOnMissing;
   return flag;
 }
 
@@ -140,7 +139,7 @@ FlagParser::Result FlagParser::parse(int argc, char** argv, std::vector<std::str
     const Flag* flag = find(a);
     if (!flag && !a.empty() && a[0] == '-')
     {
-      fail(quoteUnknown ? "unknown option '" + a + "'" : "unknown option " + a, true);
+      reportUnknownFlag(command_, a);
       return Result::Error;
     }
     if (!flag)
@@ -149,7 +148,7 @@ FlagParser::Result FlagParser::parse(int argc, char** argv, std::vector<std::str
       take(*flag, "");
     else if (i + 1 >= argc)
     {
-      fail(flag->missing.empty() ? a + " needs a value" : flag->missing, flag->usageOnMissing);
+      reportMissingValue(command_, a);
       return Result::Error;
     }
     else if (!take(*flag, argv[++i]))

@@ -202,8 +202,6 @@ int runQualityCommand(int argc, char** argv)
   int metric = vtkVolGridQuality::MIN_DIHEDRAL_ANGLE;
   std::string metricName;
   volgrid::cli::FlagParser p("quality", kUsage);
-  p.quoteUnknown = false;
-  p.usageOnMissing = true;
   p.add("--json", json, true);
   p.add("--bins", bins).accept = [&p, &bins](const char*)
   { return (bins >= 1 && bins <= 10000) || p.fail("--bins needs an integer in 1..10000", true); };
@@ -217,8 +215,6 @@ int runQualityCommand(int argc, char** argv)
         metric = m;
     return metric >= 0 || p.fail(std::string("unknown metric '") + v + "'", true);
   };
-  p.find("--bins")->missing = p.find("--threads")->missing = "missing number";
-  p.find("--metric")->missing = "missing metric name";
   std::vector<std::string> positional;
   const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
   if (result != volgrid::cli::FlagParser::Result::Ok)
