@@ -314,31 +314,14 @@ void boxFace(SurfaceMesh& m, const EnclosureOptions& o, const int64_t n[3], int 
       const int32_t f = ids[static_cast<size_t>(i * (n[v] + 1) + j + 1)];
       // (u, v, k) is right-handed: a->b->e turns toward +k. Alternate diagonals.
       const bool alt = ((i + j) & 1) != 0;
-      if (side)
+      const int32_t tris[2][3] = { { a, b, alt ? e : f }, { alt ? a : b, e, f } };
+      for (const auto& t : tris)
       {
-        if (alt)
-        {
-          m.addTriangle(a, b, e, patch);
-          m.addTriangle(a, e, f, patch);
-        }
+        // The high side as listed, the low side reversed (outward on both).
+        if (side)
+          m.addTriangle(t[0], t[1], t[2], patch);
         else
-        {
-          m.addTriangle(a, b, f, patch);
-          m.addTriangle(b, e, f, patch);
-        }
-      }
-      else
-      {
-        if (alt)
-        {
-          m.addTriangle(a, e, b, patch);
-          m.addTriangle(a, f, e, patch);
-        }
-        else
-        {
-          m.addTriangle(a, f, b, patch);
-          m.addTriangle(b, f, e, patch);
-        }
+          m.addTriangle(t[0], t[2], t[1], patch);
       }
     }
   }
