@@ -51,13 +51,9 @@ int runCheckCommand(int argc, char** argv)
   p.add("--json", json, true);
   p.add("--no-intersections", intersections, false);
   p.add("--keep-points", merge, false);
-  std::vector<std::string> positional;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
-  if (positional.size() != 1)
-    return p.fail(positional.empty() ? "missing SURFACE" : "only one surface file", true), 2;
-  const std::string& path = positional[0];
+  std::string path;
+  if (const int code = p.scan(argc, argv, path, "missing SURFACE", "only one surface file"); code >= 0)
+    return code;
 
   volgrid::cli::Stopwatch clock;
   volgrid::SurfaceMesh mesh;

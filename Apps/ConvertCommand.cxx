@@ -28,9 +28,8 @@ int runConvertCommand(int argc, char** argv)
   volgrid::cli::FlagParser p("convert", kUsage);
   p.moreHelp = volgrid::cli::kExportUsage;
   std::vector<std::string> positional;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (const int code = p.scan(argc, argv, positional); code >= 0)
+    return code;
   if (positional.size() != 2)
     return p.fail("expected IN and OUT", true), 2;
   volgrid::MeshFormat format = volgrid::MeshFormat::Unknown;

@@ -83,9 +83,8 @@ int parseArguments(int argc, char** argv, Arguments& args)
   volgrid::cli::FlagParser p("delaunay", kUsage);
   declareFlags(p, args, threads, location);
   std::vector<std::string> positional;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (const int code = p.scan(argc, argv, positional); code >= 0)
+    return code;
   if (positional.size() > 1)
     return p.fail("more than one input ('" + positional[1] + "')"), 2;
   if (!positional.empty())

@@ -156,5 +156,20 @@ FlagParser::Result FlagParser::parse(int argc, char** argv, std::vector<std::str
   }
   return Result::Ok;
 }
+int FlagParser::scan(int argc, char** argv, std::vector<std::string>& positional)
+{
+  const Result result = parse(argc, argv, positional);
+  return result == Result::Ok ? -1 : result == Result::Help ? 0 : 2;
+}
+int FlagParser::scan(int argc, char** argv, std::string& file, const char* none, const char* more)
+{
+  std::vector<std::string> positional;
+  const int code = scan(argc, argv, positional);
+  if (code < 0 && positional.size() != 1)
+    return fail(positional.empty() ? none : more, true), 2;
+  if (code < 0)
+    file = positional[0];
+  return code;
+}
 } // namespace cli
 } // namespace volgrid

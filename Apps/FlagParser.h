@@ -72,6 +72,11 @@ public:
   // Scans argv[1..argc) in order: the declared flags; any other argument starting with '-' is unknown;
   // the rest is appended to `positional`. A flag given twice keeps its last value.
   Result parse(int argc, char** argv, std::vector<std::string>& positional);
+  // parse() as a command's exit code: -1 to go on, 0 after --help, 2 after the error message.
+  int scan(int argc, char** argv, std::vector<std::string>& positional);
+  // scan() for a command that takes exactly one file argument, into `file`; none or several are an error
+  // (exit code 2) with the message `none` or `more` and the usage text.
+  int scan(int argc, char** argv, std::string& file, const char* none, const char* more);
 
   // "volgrid COMMAND: PROBLEM\n", then the usage text when withUsage. Returns false (for accept).
   bool fail(const std::string& problem, bool withUsage = false) const;

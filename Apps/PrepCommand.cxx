@@ -247,9 +247,8 @@ int parseArguments(int argc, char** argv, Arguments& args, vtkVolGridSurfacePrep
   volgrid::cli::FlagParser p("prep", kHeader, kFooter);
   declareEnclosureFlags(p, args, prep);
   declareRepairFlags(p, args, prep);
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, args.files);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (const int code = p.scan(argc, argv, args.files); code >= 0)
+    return code;
   if (args.exact)
     prep->ExactMergeOnlyOn();
   if (!args.orient)

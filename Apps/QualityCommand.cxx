@@ -215,13 +215,9 @@ int runQualityCommand(int argc, char** argv)
         metric = m;
     return metric >= 0 || p.fail(std::string("unknown metric '") + v + "'", true);
   };
-  std::vector<std::string> positional;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
-  if (positional.size() != 1)
-    return p.fail(positional.empty() ? "no input file" : "more than one input file", true), 2;
-  const std::string& path = positional[0];
+  std::string path;
+  if (const int code = p.scan(argc, argv, path, "no input file", "more than one input file"); code >= 0)
+    return code;
   vtkSmartPointer<vtkDataSet> mesh = readMesh(path);
   if (!mesh)
     return 1;

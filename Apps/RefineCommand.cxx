@@ -87,9 +87,8 @@ int parseArguments(int argc, char** argv, Arguments& args)
         "                  the available memory holds)\n")
     .accept = [&args](const char* v) { return volgrid::cli::parseMaxTets("refine", v, args.maxTets); };
   std::vector<std::string> positional;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (const int code = p.scan(argc, argv, positional); code >= 0)
+    return code;
   if (positional.size() != 2 || args.arrayName.empty())
   {
     p.fail("expected MESH OUT --size-array NAME", true);
