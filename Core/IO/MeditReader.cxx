@@ -184,10 +184,9 @@ Status readMeditKeyword(Scanner& sc, std::string_view tok, int64_t limit, Surfac
 Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut,
                  const SurfaceReadOptions& options)
 {
-  ReadStart start(mesh, infoOut, "Medit");
-  Status s = start.load(path);
-  if (!s.ok())
-    return s;
+  ReadStart start(path, mesh, infoOut, "Medit");
+  if (!start.loaded.ok())
+    return start.loaded;
   SurfaceReadInfo& info = start.info;
   const std::string& text = start.text;
   if (lowerExtension(path) == "meshb" || text.find('\0') != std::string::npos)
@@ -200,7 +199,7 @@ Status readMedit(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* in
   std::string_view tok;
   while (sc.next(tok) && tok != "End")
   {
-    s = readMeditKeyword(sc, tok, limit, mesh, info, haveVertices);
+    const Status s = readMeditKeyword(sc, tok, limit, mesh, info, haveVertices);
     if (!s.ok())
     {
       return s;

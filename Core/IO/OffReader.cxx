@@ -155,10 +155,9 @@ Status readOffFaces(Scanner& sc, int64_t nv, int64_t nf, SurfaceMesh& mesh, Surf
 
 Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
-  ReadStart start(mesh, infoOut, "OFF");
-  Status s = start.load(path);
-  if (!s.ok())
-    return s;
+  ReadStart start(path, mesh, infoOut, "OFF");
+  if (!start.loaded.ok())
+    return start.loaded;
   SurfaceReadInfo& info = start.info;
   Scanner sc(start.text, path, true);
   std::vector<std::string_view> toks;
@@ -167,7 +166,7 @@ Status readOFF(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* info
     return Status::failure(ErrorKind::EmptyInput, path + ": empty file");
   }
   int64_t nv = 0, nf = 0;
-  s = readOffKeyword(sc, toks, info);
+  Status s = readOffKeyword(sc, toks, info);
   if (s.ok())
     s = readOffCounts(sc, toks, countLimit(start.text), nv, nf);
   if (s.ok())

@@ -283,12 +283,9 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
                   const SurfaceReadOptions& options)
 {
   const bool smesh = lowerExtension(path) == "smesh";
-  ReadStart start(mesh, infoOut, smesh ? "TetGen smesh" : "TetGen poly");
-  Status s = start.load(path);
-  if (!s.ok())
-  {
-    return s;
-  }
+  ReadStart start(path, mesh, infoOut, smesh ? "TetGen smesh" : "TetGen poly");
+  if (!start.loaded.ok())
+    return start.loaded;
   SurfaceReadInfo& info = start.info;
   const std::string& text = start.text;
   Scanner sc(text, path, true);
@@ -304,7 +301,8 @@ Status readTetGen(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* i
   {
     return sc.error("expected the node count, got '" + std::string(toks[0]) + "'");
   }
-  s = nodeCount == 0 ? readSiblingNodes(path, sc.line(), mesh, base) : readTetGenNodes(sc, toks, mesh, limit, base);
+  Status s =
+    nodeCount == 0 ? readSiblingNodes(path, sc.line(), mesh, base) : readTetGenNodes(sc, toks, mesh, limit, base);
   if (!s.ok())
   {
     return s;
