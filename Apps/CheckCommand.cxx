@@ -5,12 +5,14 @@
 // when it has defects or cannot be read, 2 for bad arguments.
 #include "CliSupport.h"
 #include "Commands.h"
+#include "FlagParser.h"
 #include "SurfaceFile.h"
 
 #include "SurfaceChecks.h"
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -21,12 +23,6 @@ const char* kUsage =
   "  self-intersecting triangles, shells and their nesting. Exactly coincident points are merged first\n"
   "  (as the mesher does); --keep-points keeps the file's point numbering (STL, OBJ merged).\n"
   "  Exit 0 when clean, 1 with defects or an unreadable file, 2 for bad arguments.\n";
-
-int usage(const char* problem)
-{
-  std::fprintf(stderr, "volgrid check: %s\n%s", problem, kUsage);
-  return 2;
-}
 
 int64_t misoriented(const volgrid::SurfaceCheckReport& r)
 {
@@ -48,33 +44,16 @@ std::string ids(const std::vector<int32_t>& v)
 
 int runCheckCommand(int argc, char** argv)
 {
-  std::string path;
   bool json = false;
   bool intersections = true;
   bool merge = true;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    if (a == "--json")
-      json = true;
-    else if (a == "--no-intersections")
-      intersections = false;
-    else if (a == "--keep-points")
-      merge = false;
-    else if (a == "-h" || a == "--help")
-    {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    else if (!a.empty() && a[0] == '-')
-      return usage(("unknown option " + a).c_str());
-    else if (path.empty())
-      path = a;
-    else
-      return usage("only one surface file");
-  }
-  if (path.empty())
-    return usage("missing SURFACE");
+  volgrid::cli::FlagParser p("check", kUsage);
+  p.add("--json", json, true);
+  p.add("--no-intersections", intersections, false);
+  p.add("--keep-points", merge, false);
+  std::string path;
+  if (const int code = p.scan(argc, argv, path, "missing SURFACE", "only one surface file"); code >= 0)
+    return code;
 
   volgrid::cli::Stopwatch clock;
   volgrid::SurfaceMesh mesh;

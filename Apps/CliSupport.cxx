@@ -28,6 +28,16 @@ bool parseLong(const char* command, const char* option, const char* text, long l
   return true;
 }
 
+void reportUnknownFlag(const char* command, const std::string& flag)
+{
+  std::fprintf(stderr, "volgrid %s: unknown option '%s' (see volgrid %s --help)\n", command, flag.c_str(), command);
+}
+
+void reportMissingValue(const char* command, const std::string& flag)
+{
+  std::fprintf(stderr, "volgrid %s: %s needs a value (see volgrid %s --help)\n", command, flag.c_str(), command);
+}
+
 bool parseDouble(const char* command, const char* option, const char* text, double& value)
 {
   char* end = nullptr;

@@ -13,6 +13,11 @@ namespace cli
 // Parses a number argument; prints "volgrid CMD: OPTION expects ..." and returns false when malformed.
 bool parseLong(const char* command, const char* option, const char* text, long long& value);
 bool parseDouble(const char* command, const char* option, const char* text, double& value);
+// The one wording of the two scan errors of every sub-command (FlagParser, and the scans of the export and
+// layer flags that run before it): "volgrid CMD: unknown option '--x' (see volgrid CMD --help)" and
+// "volgrid CMD: --x needs a value (see volgrid CMD --help)".
+void reportUnknownFlag(const char* command, const std::string& flag);
+void reportMissingValue(const char* command, const std::string& flag);
 // The value of an option of Core's table (OptionTable.h): a finite number (an integer for an integer
 // option) in the option's valid range; otherwise a message naming the range, and false.
 bool parseOption(const char* command, const OptionSpec& spec, const char* text, double& value);

@@ -1,11 +1,11 @@
 // volgrid convert: a volume mesh from one format to another, patches and regions kept by name.
 #include "Commands.h"
+#include "FlagParser.h"
 #include "MeshExport.h"
 
 #include "MeshReader.h"
 
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -24,27 +24,14 @@ int runConvertCommand(int argc, char** argv)
   volgrid::cli::ExportRequest request;
   if (!volgrid::cli::takeExportOptions("convert", argc, argv, request))
     return 2;
+  // --format, --patch and --patch-type were taken above; convert has no flags of its own.
+  volgrid::cli::FlagParser p("convert", kUsage);
+  p.moreHelp = volgrid::cli::kExportUsage;
   std::vector<std::string> positional;
-  for (int i = 1; i < argc; ++i)
-  {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
-    {
-      std::fputs(kUsage, stdout);
-      std::fputs(volgrid::cli::kExportUsage, stdout);
-      return 0;
-    }
-    if (argv[i][0] == '-')
-    {
-      std::fprintf(stderr, "volgrid convert: unknown option '%s'\n%s", argv[i], kUsage);
-      return 2;
-    }
-    positional.push_back(argv[i]);
-  }
+  if (const int code = p.scan(argc, argv, positional); code >= 0)
+    return code;
   if (positional.size() != 2)
-  {
-    std::fprintf(stderr, "volgrid convert: expected IN and OUT\n%s", kUsage);
-    return 2;
-  }
+    return p.fail("expected IN and OUT", true), 2;
   volgrid::MeshFormat format = volgrid::MeshFormat::Unknown;
   bool vtk = false;
   if (!volgrid::cli::chooseFormat("convert", positional[1], request, format, vtk))

@@ -1,6 +1,7 @@
 // volgrid delaunay: exact Delaunay tetrahedralization of a point set (TetGen .node file or random points).
 #include "CliSupport.h"
 #include "Commands.h"
+#include "FlagParser.h"
 #include "NodeFile.h"
 #include "OutputPaths.h"
 #include "SizeLimit.h"
@@ -45,109 +46,54 @@ struct Arguments
   volgrid::DelaunayOptions options;
 };
 
-bool parseArguments(int argc, char** argv, Arguments& args)
+// The flags of `volgrid delaunay` (the usage text is kUsage's).
+void declareFlags(volgrid::cli::FlagParser& p, Arguments& args, long long& threads, std::string& location)
 {
-  for (int i = 1; i < argc; ++i)
+  p.add("--random", args.randomCount).accept = [&p, &args](const char*)
+  { return args.randomCount >= 0 || p.fail("--random needs a non-negative count"); };
+  p.add("--max-tets", args.maxTets).accept = [&args](const char* v)
+  { return volgrid::cli::parseMaxTets("delaunay", v, args.maxTets); };
+  p.add("--seed", args.seed);
+  p.add("--out", args.out);
+  p.add("--location", location).accept = [&p, &args](const char* v)
   {
-    const std::string a = argv[i];
-    auto value = [&](const char* name) -> const char*
-    {
-      if (i + 1 >= argc)
-      {
-        std::fprintf(stderr, "volgrid delaunay: %s needs a value\n", name);
-        return nullptr;
-      }
-      return argv[++i];
-    };
-    if (a == "--random")
-    {
-      const char* v = value("--random");
-      if (!v || !volgrid::cli::parseLong("delaunay", "--random", v, args.randomCount))
-        return false;
-      if (args.randomCount < 0)
-      {
-        std::fprintf(stderr, "volgrid delaunay: --random needs a non-negative count\n");
-        return false;
-      }
-    }
-    else if (a == "--max-tets")
-    {
-      const char* v = value("--max-tets");
-      if (!v || !volgrid::cli::parseMaxTets("delaunay", v, args.maxTets))
-        return false;
-    }
-    else if (a == "--seed")
-    {
-      const char* v = value("--seed");
-      if (!v || !volgrid::cli::parseLong("delaunay", "--seed", v, args.seed))
-        return false;
-    }
-    else if (a == "--out")
-    {
-      const char* v = value("--out");
-      if (!v)
-        return false;
-      args.out = v;
-    }
-    else if (a == "--location")
-    {
-      const char* v = value("--location");
-      if (!v)
-        return false;
-      if (std::strcmp(v, "walk") == 0)
-        args.options.location = volgrid::PointLocation::Walk;
-      else if (std::strcmp(v, "grid") == 0)
-        args.options.location = volgrid::PointLocation::BucketGrid;
-      else
-      {
-        std::fprintf(stderr, "volgrid delaunay: --location is walk or grid, not '%s'\n", v);
-        return false;
-      }
-    }
-    else if (a == "--threads")
-    {
-      const char* v = value("--threads");
-      long long t = 0;
-      if (!v || !volgrid::cli::parseLong("delaunay", "--threads", v, t))
-        return false;
-      if (t < 0 || t > 1024)
-      {
-        std::fprintf(stderr, "volgrid delaunay: --threads is 0 (all cores) or 1..1024, not %lld\n", t);
-        return false;
-      }
-      args.options.threads = static_cast<int>(t);
-    }
-    else if (a == "--check")
-      args.check = true;
-    else if (a == "--json")
-      args.json = true;
-    else if (a == "--no-sort")
-      args.options.spatialSort = false;
-    else if (a == "--help" || a == "-h")
-    {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      std::fprintf(stderr, "volgrid delaunay: unknown option '%s'\n%s", a.c_str(), kUsage);
-      return false;
-    }
-    else if (args.nodeFile.empty())
-      args.nodeFile = a;
+    if (std::strcmp(v, "walk") == 0)
+      args.options.location = volgrid::PointLocation::Walk;
+    else if (std::strcmp(v, "grid") == 0)
+      args.options.location = volgrid::PointLocation::BucketGrid;
     else
-    {
-      std::fprintf(stderr, "volgrid delaunay: more than one input ('%s')\n", a.c_str());
-      return false;
-    }
-  }
-  if (args.nodeFile.empty() == (args.randomCount < 0))
+      return p.fail(std::string("--location is walk or grid, not '") + v + "'");
+    return true;
+  };
+  p.add("--threads", threads).accept = [&p, &threads](const char*)
   {
-    std::fprintf(stderr, "volgrid delaunay: give either an input .node file or --random N\n%s", kUsage);
-    return false;
-  }
+    return (threads >= 0 && threads <= 1024) ||
+      p.fail("--threads is 0 (all cores) or 1..1024, not " + std::to_string(threads));
+  };
+  p.add("--check", args.check, true);
+  p.add("--json", args.json, true);
+  p.add("--no-sort", args.options.spatialSort, false);
+}
+
+// 2 (after the message) when the arguments are bad, 0 after --help, -1 to go on.
+int parseArguments(int argc, char** argv, Arguments& args)
+{
+  long long threads = args.options.threads;
+  std::string location;
+  volgrid::cli::FlagParser p("delaunay", kUsage);
+  declareFlags(p, args, threads, location);
+  std::vector<std::string> positional;
+  if (const int code = p.scan(argc, argv, positional); code >= 0)
+    return code;
+  if (positional.size() > 1)
+    return p.fail("more than one input ('" + positional[1] + "')"), 2;
+  if (!positional.empty())
+    args.nodeFile = positional[0];
+  if (args.nodeFile.empty() == (args.randomCount < 0))
+    return p.fail("give either an input .node file or --random N", true), 2;
+  args.options.threads = static_cast<int>(threads);
   args.options.seed = static_cast<uint64_t>(args.seed) * 0x9E3779B97F4A7C15ull + 1;
-  return true;
+  return -1;
 }
 
 // The Delaunay kernel's own limit (Delaunay.cxx: 2^29 / 8 points).
@@ -174,10 +120,8 @@ std::vector<double> randomPoints(long long n, long long seed)
 int runDelaunayCommand(int argc, char** argv)
 {
   Arguments args;
-  if (!parseArguments(argc, argv, args))
-  {
-    return 2;
-  }
+  if (const int code = parseArguments(argc, argv, args); code >= 0)
+    return code;
   if (!args.out.empty())
   {
     if (const int code = volgrid::cli::checkOutputPath("delaunay", "--out", args.out, { "vtu" }, { args.nodeFile }))

@@ -25,7 +25,6 @@ Flag& FlagParser::push(const std::string& name, FlagKind kind, const std::string
   flag.name = name;
   flag.kind = kind;
   flag.help = help;
-  flag.usageOnMissing = usageOnMissing;
   return flag;
 }
 
@@ -140,7 +139,7 @@ FlagParser::Result FlagParser::parse(int argc, char** argv, std::vector<std::str
     const Flag* flag = find(a);
     if (!flag && !a.empty() && a[0] == '-')
     {
-      fail(quoteUnknown ? "unknown option '" + a + "'" : "unknown option " + a, true);
+      reportUnknownFlag(command_, a);
       return Result::Error;
     }
     if (!flag)
@@ -149,13 +148,28 @@ FlagParser::Result FlagParser::parse(int argc, char** argv, std::vector<std::str
       take(*flag, "");
     else if (i + 1 >= argc)
     {
-      fail(flag->missing.empty() ? a + " needs a value" : flag->missing, flag->usageOnMissing);
+      reportMissingValue(command_, a);
       return Result::Error;
     }
     else if (!take(*flag, argv[++i]))
       return Result::Error;
   }
   return Result::Ok;
+}
+int FlagParser::scan(int argc, char** argv, std::vector<std::string>& positional)
+{
+  const Result result = parse(argc, argv, positional);
+  return result == Result::Ok ? -1 : result == Result::Help ? 0 : 2;
+}
+int FlagParser::scan(int argc, char** argv, std::string& file, const char* none, const char* more)
+{
+  std::vector<std::string> positional;
+  const int code = scan(argc, argv, positional);
+  if (code < 0 && positional.size() != 1)
+    return fail(positional.empty() ? none : more, true), 2;
+  if (code < 0)
+    file = positional[0];
+  return code;
 }
 } // namespace cli
 } // namespace volgrid

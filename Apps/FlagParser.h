@@ -1,7 +1,8 @@
 // One argument parser for the CLI sub-commands. A command declares its flags (name, kind, where the value
 // goes, its lines of the usage text); parse() then does the lookup, the missing values, the numbers
 // (cli::parseLong / parseDouble messages), the rows of Core's option table (cli::parseOption: the table's
-// range and message), unknown flags and --help, so every command words these the same way.
+// range and message), unknown flags (cli::reportUnknownFlag) and --help, so every command words these the
+// same way.
 #pragma once
 
 #include "OptionTable.h"
@@ -39,9 +40,7 @@ struct Flag
   // After the value is stored: the command's own check of it (range, choice), given the text as typed;
   // prints its message (FlagParser::fail) and returns false to stop with exit code 2.
   std::function<bool(const char* text)> accept;
-  std::string help;    // its lines of the usage text, newlines included ("" when the synopsis names it)
-  std::string missing; // the message when the value is missing ("" = "NAME needs a value")
-  bool usageOnMissing = false;
+  std::string help; // its lines of the usage text, newlines included ("" when the synopsis names it)
 };
 
 class FlagParser
@@ -67,16 +66,17 @@ public:
 
   // Lines after the usage text on --help only (the errors print the usage text alone).
   std::string moreHelp;
-  // The default of Flag::usageOnMissing for the flags added from now on.
-  bool usageOnMissing = false;
-  // "unknown option '--x'" (or without the quotes), then the usage text.
-  bool quoteUnknown = true;
   // Tried before the flags at argv[i]: 1 taken (i advanced past its value), 0 not its flag, -1 error.
   std::function<int(int argc, char** argv, int& i)> before;
 
   // Scans argv[1..argc) in order: the declared flags; any other argument starting with '-' is unknown;
   // the rest is appended to `positional`. A flag given twice keeps its last value.
   Result parse(int argc, char** argv, std::vector<std::string>& positional);
+  // parse() as a command's exit code: -1 to go on, 0 after --help, 2 after the error message.
+  int scan(int argc, char** argv, std::vector<std::string>& positional);
+  // scan() for a command that takes exactly one file argument, into `file`; none or several are an error
+  // (exit code 2) with the message `none` or `more` and the usage text.
+  int scan(int argc, char** argv, std::string& file, const char* none, const char* more);
 
   // "volgrid COMMAND: PROBLEM\n", then the usage text when withUsage. Returns false (for accept).
   bool fail(const std::string& problem, bool withUsage = false) const;

@@ -133,9 +133,8 @@ int parseArguments(int argc, char** argv, Arguments& args)
   p.moreHelp = volgrid::cli::kLayerUsage + volgrid::cli::kExportUsage;
   p.before = [&args](int n, char** v, int& i) { return volgrid::cli::parseLayerOption(n, v, i, args.layers); };
   std::vector<std::string> positional;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (const int code = p.scan(argc, argv, positional); code >= 0)
+    return code;
   args.options.threads = static_cast<int>(threads);
   args.given = p.given();
   if (!args.layers.enabled() &&

@@ -1,6 +1,8 @@
 // Export options, patch renaming and solver-format output for the CLI (see MeshExport.h).
 #include "MeshExport.h"
 
+#include "CliSupport.h"
+
 #include "Mesher.h"
 #include "SurfaceFile.h"
 #include "SurfaceMesh.h"
@@ -38,7 +40,7 @@ bool takeExportOptions(const char* command, int& argc, char** argv, ExportReques
     }
     if (i + 1 >= argc)
     {
-      std::fprintf(stderr, "volgrid %s: %s needs a value\n", command, argv[i]);
+      reportMissingValue(command, argv[i]);
       return false;
     }
     const std::string value = argv[++i];

@@ -65,7 +65,7 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
   }
   if (i + 1 >= argc)
   {
-    std::fprintf(stderr, "volgrid mesh: %s needs a value\n", a.c_str());
+    volgrid::cli::reportMissingValue("mesh", a);
     return -1;
   }
   const char* v = argv[++i];

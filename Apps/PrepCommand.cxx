@@ -149,14 +149,12 @@ const char* kBadEnclosure = "--enclosure expects box, sphere, cylinder, hemisphe
 const char* kBadAxis = "--axis expects x, y or z";
 const char* kBadTriple = " expects one to three numbers X[,Y[,Z]]";
 
-// A real flag of the filter's in [lo, hi] (a missing value "needs a number"); outside, "NAME PROBLEM" and
+// A real flag of the filter's in [lo, hi]; outside, "NAME PROBLEM" and
 // the usage; inside, `set` hands it to the filter.
 void addRanged(volgrid::cli::FlagParser& p, const char* name, double& value, double lo, double hi, const char* problem,
                const char* help, std::function<void(double)> set)
 {
-  volgrid::cli::Flag& flag = p.add(name, value, help);
-  flag.missing = std::string(name) + " needs a number";
-  flag.accept = [&p, &value, lo, hi, name, problem, set](const char*)
+  p.add(name, value, help).accept = [&p, &value, lo, hi, name, problem, set](const char*)
   {
     if (value < lo || value > hi)
       return p.fail(std::string(name) + " " + problem, true);
@@ -247,19 +245,10 @@ void declareRepairFlags(volgrid::cli::FlagParser& p, Arguments& args, vtkVolGrid
 int parseArguments(int argc, char** argv, Arguments& args, vtkVolGridSurfacePrep* prep)
 {
   volgrid::cli::FlagParser p("prep", kHeader, kFooter);
-  p.usageOnMissing = true;
-  p.quoteUnknown = false;
   declareEnclosureFlags(p, args, prep);
   declareRepairFlags(p, args, prep);
-  // A missing value is worded as a bad one, or "needs a number".
-  p.find("--fill-holes")->missing = "--fill-holes needs a number";
-  p.find("--enclosure")->missing = kBadEnclosure;
-  p.find("--axis")->missing = kBadAxis;
-  p.find("--center")->missing = std::string("--center") + kBadTriple;
-  p.find("--dimensions")->missing = std::string("--dimensions") + kBadTriple;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, args.files);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (const int code = p.scan(argc, argv, args.files); code >= 0)
+    return code;
   if (args.exact)
     prep->ExactMergeOnlyOn();
   if (!args.orient)

@@ -4,6 +4,7 @@
 // prints a summary table, or with --json one JSON line. Errors go to stderr with a non-zero exit code:
 // 2 for bad arguments, 1 for unreadable input.
 #include "Commands.h"
+#include "FlagParser.h"
 #include "MeshReader.h"
 #include "SurfaceFile.h"
 #include "VolGridConversion.h"
@@ -27,7 +28,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,17 +40,12 @@
 
 namespace
 {
-int usage(const char* problem)
-{
-  std::fprintf(stderr, "volgrid quality: %s\n", problem);
-  std::fprintf(stderr,
-               "usage: volgrid quality MESH.{vtu,vtk,vtp} | SURFACE [--json] [--bins N] [--metric NAME] [--threads N]\n"
-               "  SURFACE: any file `volgrid mesh` reads (.stl .obj .ply .off .mesh .poly .smesh .msh, also .gz)\n"
-               "  --bins N      histogram bins per metric (1..10000, default 20)\n"
-               "  --metric NAME metric copied to the Quality array (AspectRatio, MinDihedralAngle, ...)\n"
-               "  --threads N   threads (default 0: all cores)\n");
-  return 2;
-}
+const char* kUsage =
+  "usage: volgrid quality MESH.{vtu,vtk,vtp} | SURFACE [--json] [--bins N] [--metric NAME] [--threads N]\n"
+  "  SURFACE: any file `volgrid mesh` reads (.stl .obj .ply .off .mesh .poly .smesh .msh, also .gz)\n"
+  "  --bins N      histogram bins per metric (1..10000, default 20)\n"
+  "  --metric NAME metric copied to the Quality array (AspectRatio, MinDihedralAngle, ...)\n"
+  "  --threads N   threads (default 0: all cores)\n";
 
 // A legacy .vtk data set (VTK's reader, after checking that the path is a regular file).
 vtkSmartPointer<vtkDataSet> readLegacy(const std::string& path)
@@ -202,61 +197,39 @@ const char* kSurfaceFigures[] = { "NumberOfElements", "SurfaceArea",      "Enclo
 
 int runQualityCommand(int argc, char** argv)
 {
-  std::string path;
   bool json = false;
-  int bins = 20, threads = 0, metric = vtkVolGridQuality::MIN_DIHEDRAL_ANGLE;
-  for (int i = 1; i < argc; ++i)
+  long long bins = 20, threads = 0;
+  int metric = vtkVolGridQuality::MIN_DIHEDRAL_ANGLE;
+  std::string metricName;
+  volgrid::cli::FlagParser p("quality", kUsage);
+  p.add("--json", json, true);
+  p.add("--bins", bins).accept = [&p, &bins](const char*)
+  { return (bins >= 1 && bins <= 10000) || p.fail("--bins needs an integer in 1..10000", true); };
+  p.add("--threads", threads).accept = [&p, &threads](const char*)
+  { return (threads >= 0 && threads <= 10000) || p.fail("--threads needs an integer >= 0", true); };
+  p.add("--metric", metricName).accept = [&p, &metric](const char* v)
   {
-    const std::string arg = argv[i];
-    auto value = [&](const char* what) -> const char* { return i + 1 < argc ? argv[++i] : (usage(what), nullptr); };
-    if (arg == "--json")
-      json = true;
-    else if (arg == "--bins" || arg == "--threads")
-    {
-      const char* v = value("missing number");
-      if (!v)
-        return 2;
-      char* end = nullptr;
-      errno = 0;
-      const long n = std::strtol(v, &end, 10);
-      if (end == v || *end != '\0' || errno != 0 || n < (arg == "--bins" ? 1 : 0) || n > 10000)
-        return usage((arg + " needs an integer" + (arg == "--bins" ? " in 1..10000" : " >= 0")).c_str());
-      (arg == "--bins" ? bins : threads) = static_cast<int>(n);
-    }
-    else if (arg == "--metric")
-    {
-      const char* v = value("missing metric name");
-      if (!v)
-        return 2;
-      metric = -1;
-      for (int m = vtkVolGridQuality::ASPECT_RATIO; m <= vtkVolGridQuality::WEDGE_SCALED_JACOBIAN; ++m)
-        if (std::strcmp(v, vtkVolGridQuality::GetMetricName(m)) == 0)
-          metric = m;
-      if (metric < 0)
-        return usage((std::string("unknown metric '") + v + "'").c_str());
-    }
-    else if (arg == "-h" || arg == "--help")
-      return usage("help"), 0;
-    else if (!arg.empty() && arg[0] == '-')
-      return usage(("unknown option " + arg).c_str());
-    else if (path.empty())
-      path = arg;
-    else
-      return usage("more than one input file");
-  }
-  if (path.empty())
-    return usage("no input file");
+    metric = -1;
+    for (int m = vtkVolGridQuality::ASPECT_RATIO; m <= vtkVolGridQuality::WEDGE_SCALED_JACOBIAN; ++m)
+      if (std::strcmp(v, vtkVolGridQuality::GetMetricName(m)) == 0)
+        metric = m;
+    return metric >= 0 || p.fail(std::string("unknown metric '") + v + "'", true);
+  };
+  std::string path;
+  if (const int code = p.scan(argc, argv, path, "no input file", "more than one input file"); code >= 0)
+    return code;
   vtkSmartPointer<vtkDataSet> mesh = readMesh(path);
   if (!mesh)
     return 1;
 
   vtkNew<vtkVolGridQuality> quality;
   quality->SetInputData(mesh);
-  quality->SetBinCount(bins);
+  quality->SetBinCount(static_cast<int>(bins));
   quality->SetMetric(metric);
   if (threads > 0)
   {
-    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() { quality->Update(); });
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ static_cast<int>(threads), "STDThread", false },
+                            [&]() { quality->Update(); });
   }
   else
   {

@@ -72,7 +72,6 @@ int parseArguments(int argc, char** argv, Arguments& args)
   volgrid::RefineOptions& options = args.options;
   options.optimization = volgrid::ImprovementOptions().optimization;
   volgrid::cli::FlagParser p("refine", kHeader, kFooter);
-  p.usageOnMissing = true;
   p.add("--json", args.json, true);
   p.add("--no-optimize", options.optimize, false);
   p.add("--size-array", args.arrayName);
@@ -83,16 +82,13 @@ int parseArguments(int argc, char** argv, Arguments& args)
   p.add(option::beta, "B", set);
   p.add(option::targetAngle, "DEG", set);
   p.add(option::passes, "N", set);
-  volgrid::cli::Flag& maxTets =
-    p.add("--max-tets", args.maxTets,
-          "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
-          "                  the available memory holds)\n");
-  maxTets.usageOnMissing = false;
-  maxTets.accept = [&args](const char* v) { return volgrid::cli::parseMaxTets("refine", v, args.maxTets); };
+  p.add("--max-tets", args.maxTets,
+        "  --max-tets N    refuse before any work when the result is estimated to exceed N tets (default: what\n"
+        "                  the available memory holds)\n")
+    .accept = [&args](const char* v) { return volgrid::cli::parseMaxTets("refine", v, args.maxTets); };
   std::vector<std::string> positional;
-  const volgrid::cli::FlagParser::Result result = p.parse(argc, argv, positional);
-  if (result != volgrid::cli::FlagParser::Result::Ok)
-    return result == volgrid::cli::FlagParser::Result::Help ? 0 : 2;
+  if (const int code = p.scan(argc, argv, positional); code >= 0)
+    return code;
   if (positional.size() != 2 || args.arrayName.empty())
   {
     p.fail("expected MESH OUT --size-array NAME", true);

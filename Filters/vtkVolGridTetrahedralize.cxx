@@ -163,6 +163,60 @@ void addBlockIds(vtkUnstructuredGrid* mesh)
 }
 } // namespace
 
+namespace
+{
+// The point data of the input points on the output points (the first input point of each merged
+// location); the points the mesher added get the arrays' null values.
+void copyInputPointData(vtkPointSet* input, const volgrid::MesherResult& result, vtkUnstructuredGrid* output)
+{
+  const vtkIdType numPoints = output->GetNumberOfPoints();
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  std::vector<vtkIdType> outputToInput(static_cast<size_t>(numPoints), -1);
+  for (size_t i = 0; i < result.inputToOutputPoint.size(); ++i)
+  {
+    const int32_t o = result.inputToOutputPoint[i];
+    if (o >= 0 && outputToInput[o] < 0)
+      outputToInput[o] = static_cast<vtkIdType>(i);
+  }
+  outPD->CopyAllocate(inPD, numPoints);
+  for (vtkIdType o = 0; o < numPoints; ++o)
+  {
+    if (outputToInput[o] >= 0)
+      outPD->CopyData(inPD, outputToInput[o], o);
+    else
+      outPD->NullData(o);
+  }
+}
+
+// The input's cell data on the boundary triangles (each from its input triangle), the mesher's
+// PatchId kept; only when every input cell was one triangle, so that the ids correspond.
+void copyInputCellData(vtkPointSet* input, const volgrid::MesherResult& result, vtkPolyData* boundary)
+{
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = boundary->GetCellData();
+  const vtkIdType numBoundary = static_cast<vtkIdType>(result.boundaryInputTriangle.size());
+  // CopyAllocate clears the output's arrays: keep the mesher's PatchId aside.
+  vtkSmartPointer<vtkDataArray> patch = outCD->GetArray("PatchId");
+  outCD->CopyAllocate(inCD, numBoundary);
+  for (vtkIdType b = 0; b < numBoundary; ++b)
+    outCD->CopyData(inCD, result.boundaryInputTriangle[b], b);
+  outCD->RemoveArray("PatchId");
+  outCD->AddArray(patch);
+}
+
+// Surface Prep's diagnostic arrays describe its surface, not the mesh: they stop here.
+void dropSurfaceDiagnostics(vtkUnstructuredGrid* output, vtkPolyData* boundary)
+{
+  for (const char* name : { "DefectFlags", "OpenEdge", "NonManifoldEdge", "SelfIntersecting", "Degenerate" })
+  {
+    boundary->GetCellData()->RemoveArray(name);
+  }
+  output->GetPointData()->RemoveArray("NonManifoldVertex");
+  boundary->GetPointData()->RemoveArray("NonManifoldVertex");
+}
+} // namespace
+
 int vtkVolGridTetrahedralize::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                           vtkInformationVector* outputVector)
 {
@@ -217,27 +271,9 @@ int vtkVolGridTetrahedralize::Execute(vtkPointSet* input, vtkDataSet* sources, v
   return ok;
 }
 
-int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output,
-                                          vtkPolyData* boundary)
+// The filter's properties as the mesher's options.
+volgrid::MesherOptions vtkVolGridTetrahedralize::MakeMesherOptions() const
 {
-  volgrid::SurfaceMesh surface;
-  VolGridSurfaceConversionInfo converted;
-  if (!VolGridPolyDataToSurfaceMesh(input, surface, &converted))
-  {
-    vtkErrorMacro(<< "VolGrid Tetrahedralize: the input has no triangles or polygons to mesh.");
-    return 0;
-  }
-  if (converted.polygons + converted.strips > 0)
-  {
-    vtkWarningMacro(<< converted.polygons << " polygon(s) and " << converted.strips
-                    << " strip(s) were triangulated before meshing.");
-  }
-  if (converted.skippedCells + converted.invalidCells > 0)
-  {
-    vtkWarningMacro(<< converted.skippedCells << " cell(s) that are not surface cells and " << converted.invalidCells
-                    << " cell(s) with invalid point ids were ignored.");
-  }
-
   volgrid::MesherOptions options;
   options.regionRule = this->RegionRule == ORIENTATION ? volgrid::RegionRule::Orientation
     : this->RegionRule == KEEP_ALL                     ? volgrid::RegionRule::KeepAll
@@ -256,42 +292,78 @@ int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* source
   im.optimization.targetDegrees = this->TargetMinDihedral;
   im.optimization.maxPasses = this->MaxPasses;
   im.optimization.smoothing = this->Smoothing;
-  if (sources && sources->GetNumberOfPoints() > 0)
+  return options;
+}
+
+// The Sources points as sizing samples (SizingFromSources) and/or cluster points (ClusterSourcePoints),
+// with their SourceSizeArray values; false (after the error) when a named array is missing.
+bool vtkVolGridTetrahedralize::TakeSourcePoints(vtkDataSet* sources, volgrid::ImprovementOptions& im)
+{
+  if (!sources || sources->GetNumberOfPoints() == 0)
   {
-    const vtkIdType n = sources->GetNumberOfPoints();
-    std::vector<double> xyz(3 * static_cast<size_t>(n)), sizes;
-    for (vtkIdType i = 0; i < n; ++i)
-      sources->GetPoint(i, xyz.data() + 3 * i);
-    vtkDataArray* sizeArray = nullptr;
-    if (this->SourceSizeArray && *this->SourceSizeArray)
-    {
-      sizeArray = sources->GetPointData()->GetArray(this->SourceSizeArray);
-      if (!sizeArray)
-      {
-        vtkErrorMacro(<< "VolGrid Tetrahedralize: Sources has no point array '" << this->SourceSizeArray << "'.");
-        return 0;
-      }
-      sizes.resize(static_cast<size_t>(n));
-      for (vtkIdType i = 0; i < n; ++i)
-        sizes[i] = sizeArray->GetComponent(i, 0);
-    }
-    if (this->SizingFromSources)
-    {
-      if (!sizeArray)
-      {
-        vtkErrorMacro(<< "VolGrid Tetrahedralize: SizingFromSources needs SourceSizeArray.");
-        return 0;
-      }
-      im.sizingPoints = xyz;
-      im.sizingValues = sizes;
-    }
-    if (this->ClusterSourcePoints)
-    {
-      im.clusterPoints = std::move(xyz);
-      im.clusterSizes = std::move(sizes);
-    }
+    return true;
   }
-  // Absurd sizes are refused before any work (not after running out of memory).
+  const vtkIdType n = sources->GetNumberOfPoints();
+  std::vector<double> xyz(3 * static_cast<size_t>(n)), sizes;
+  for (vtkIdType i = 0; i < n; ++i)
+    sources->GetPoint(i, xyz.data() + 3 * i);
+  vtkDataArray* sizeArray = nullptr;
+  if (this->SourceSizeArray && *this->SourceSizeArray)
+  {
+    sizeArray = sources->GetPointData()->GetArray(this->SourceSizeArray);
+    if (!sizeArray)
+    {
+      vtkErrorMacro(<< "VolGrid Tetrahedralize: Sources has no point array '" << this->SourceSizeArray << "'.");
+      return false;
+    }
+    sizes.resize(static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+      sizes[i] = sizeArray->GetComponent(i, 0);
+  }
+  if (this->SizingFromSources)
+  {
+    if (!sizeArray)
+    {
+      vtkErrorMacro(<< "VolGrid Tetrahedralize: SizingFromSources needs SourceSizeArray.");
+      return false;
+    }
+    im.sizingPoints = xyz;
+    im.sizingValues = sizes;
+  }
+  if (this->ClusterSourcePoints)
+  {
+    im.clusterPoints = std::move(xyz);
+    im.clusterSizes = std::move(sizes);
+  }
+  return true;
+}
+
+// The input's triangles (polygons and strips triangulated, with a warning; other cells ignored, with a
+// warning); false (after the error) when there are none.
+bool vtkVolGridTetrahedralize::ConvertInput(vtkPointSet* input, volgrid::SurfaceMesh& surface,
+                                            VolGridSurfaceConversionInfo& converted)
+{
+  if (!VolGridPolyDataToSurfaceMesh(input, surface, &converted))
+  {
+    vtkErrorMacro(<< "VolGrid Tetrahedralize: the input has no triangles or polygons to mesh.");
+    return false;
+  }
+  if (converted.polygons + converted.strips > 0)
+  {
+    vtkWarningMacro(<< converted.polygons << " polygon(s) and " << converted.strips
+                    << " strip(s) were triangulated before meshing.");
+  }
+  if (converted.skippedCells + converted.invalidCells > 0)
+  {
+    vtkWarningMacro(<< converted.skippedCells << " cell(s) that are not surface cells and " << converted.invalidCells
+                    << " cell(s) with invalid point ids were ignored.");
+  }
+  return true;
+}
+
+// False (after the error) when the estimated mesh would not fit in the available memory.
+bool vtkVolGridTetrahedralize::FitsInMemory(const volgrid::SurfaceMesh& surface, const volgrid::MesherOptions& options)
+{
   const volgrid::SizeEstimate estimate = volgrid::estimateMeshSize(surface, options.improvement);
   if (estimate.bytes > volgrid::availableMemoryBytes())
   {
@@ -300,6 +372,41 @@ int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* source
       << " points, needing about " << estimate.bytes / 1073741824.0 << " GiB of memory, more than the "
       << volgrid::availableMemoryBytes() / 1073741824.0
       << " GiB available: refused before any work (choose a larger MaxEdgeLength, MaxVolume or SizeScale).");
+    return false;
+  }
+  return true;
+}
+
+// The names of the boundary patches: the input's PatchNames, then the PatchAssignment property (which
+// also renumbers result.boundaryPatch); false (after the error) on a bad assignment.
+bool vtkVolGridTetrahedralize::AssignPatches(vtkPointSet* input, volgrid::MesherResult& result,
+                                             std::map<int32_t, std::string>& patchNames)
+{
+  patchNames = VolGridReadLabelNames(input, "PatchNames");
+  if (this->PatchAssignment && *this->PatchAssignment)
+  {
+    volgrid::PatchAssignment assignment;
+    volgrid::Status s = volgrid::parsePatchAssignment(this->PatchAssignment, assignment);
+    if (s.ok())
+      s = volgrid::applyPatchAssignment(assignment, result.boundaryPatch, patchNames);
+    if (!s.ok())
+    {
+      vtkErrorMacro(<< "VolGrid Tetrahedralize: PatchAssignment: " << s.message);
+      return false;
+    }
+  }
+  return true;
+}
+
+int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output,
+                                          vtkPolyData* boundary)
+{
+  volgrid::SurfaceMesh surface;
+  VolGridSurfaceConversionInfo converted;
+  volgrid::MesherOptions options = this->MakeMesherOptions();
+  if (!this->ConvertInput(input, surface, converted) || !this->TakeSourcePoints(sources, options.improvement) ||
+      !this->FitsInMemory(surface, options))
+  {
     return 0;
   }
   if (this->NumberOfLayers > 0)
@@ -316,69 +423,24 @@ int vtkVolGridTetrahedralize::MeshSurface(vtkPointSet* input, vtkDataSet* source
   {
     vtkWarningMacro(<< warning);
   }
-
-  std::map<int32_t, std::string> patchNames = VolGridReadLabelNames(input, "PatchNames");
-  if (this->PatchAssignment && *this->PatchAssignment)
+  std::map<int32_t, std::string> patchNames;
+  if (!this->AssignPatches(input, result, patchNames))
   {
-    volgrid::PatchAssignment assignment;
-    volgrid::Status s = volgrid::parsePatchAssignment(this->PatchAssignment, assignment);
-    if (s.ok())
-      s = volgrid::applyPatchAssignment(assignment, result.boundaryPatch, patchNames);
-    if (!s.ok())
-    {
-      vtkErrorMacro(<< "VolGrid Tetrahedralize: PatchAssignment: " << s.message);
-      return 0;
-    }
+    return 0;
   }
   VolGridFillFromMesherResult(result, output, boundary);
   VolGridSetPatchAndRegionNames(result, patchNames, VolGridReadLabelNames(input, "RegionNames"), output, boundary);
-  const vtkIdType numPoints = output->GetNumberOfPoints();
-
-  // Point data of the input points (the first input point of each merged location); added points get
-  // the arrays' null values.
-  vtkPointData* inPD = input->GetPointData();
-  vtkPointData* outPD = output->GetPointData();
-  std::vector<vtkIdType> outputToInput(static_cast<size_t>(numPoints), -1);
-  for (size_t i = 0; i < result.inputToOutputPoint.size(); ++i)
-  {
-    const int32_t o = result.inputToOutputPoint[i];
-    if (o >= 0 && outputToInput[o] < 0)
-      outputToInput[o] = static_cast<vtkIdType>(i);
-  }
-  outPD->CopyAllocate(inPD, numPoints);
-  for (vtkIdType o = 0; o < numPoints; ++o)
-  {
-    if (outputToInput[o] >= 0)
-      outPD->CopyData(inPD, outputToInput[o], o);
-    else
-      outPD->NullData(o);
-  }
-
+  copyInputPointData(input, result, output);
   // Port 1 (boundary triangles with PatchId): the point data, and the input's cell data.
-  boundary->GetPointData()->ShallowCopy(outPD);
+  boundary->GetPointData()->ShallowCopy(output->GetPointData());
   const bool allTriangles =
     converted.polygons + converted.strips + converted.skippedCells + converted.invalidCells == 0 &&
     input->GetNumberOfCells() == surface.numberOfTriangles();
   if (allTriangles)
   {
-    vtkCellData* inCD = input->GetCellData();
-    vtkCellData* outCD = boundary->GetCellData();
-    const vtkIdType numBoundary = static_cast<vtkIdType>(result.boundaryInputTriangle.size());
-    // CopyAllocate clears the output's arrays: keep the mesher's PatchId aside.
-    vtkSmartPointer<vtkDataArray> patch = outCD->GetArray("PatchId");
-    outCD->CopyAllocate(inCD, numBoundary);
-    for (vtkIdType b = 0; b < numBoundary; ++b)
-      outCD->CopyData(inCD, result.boundaryInputTriangle[b], b);
-    outCD->RemoveArray("PatchId");
-    outCD->AddArray(patch);
+    copyInputCellData(input, result, boundary);
   }
-  // Surface Prep's diagnostic arrays describe its surface, not the mesh: they stop here.
-  for (const char* name : { "DefectFlags", "OpenEdge", "NonManifoldEdge", "SelfIntersecting", "Degenerate" })
-  {
-    boundary->GetCellData()->RemoveArray(name);
-  }
-  outPD->RemoveArray("NonManifoldVertex");
-  boundary->GetPointData()->RemoveArray("NonManifoldVertex");
+  dropSurfaceDiagnostics(output, boundary);
   output->GetCellData()->SetActiveScalars("Region");
   boundary->GetCellData()->SetActiveScalars("PatchId");
   this->UpdateProgress(1.0);

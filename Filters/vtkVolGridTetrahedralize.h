@@ -45,13 +45,20 @@
 #include "vtkUnstructuredGridAlgorithm.h"
 #include "vtkVolGridFiltersModule.h" // for export macro
 
+#include <cstdint> // for the patch names
+#include <map>     // for the patch names
+#include <string>  // for the patch names
+
 class vtkAlgorithmOutput;
 class vtkDataSet;
 class vtkPointSet;
 class vtkPolyData;
+struct VolGridSurfaceConversionInfo;
 namespace volgrid
 {
+struct ImprovementOptions;
 struct MesherOptions;
+struct MesherResult;
 struct SurfaceMesh;
 }
 
@@ -296,6 +303,12 @@ protected:
   int Execute(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary);
   int TetrahedralizePoints(vtkPointSet* input, vtkUnstructuredGrid* output);
   int MeshSurface(vtkPointSet* input, vtkDataSet* sources, vtkUnstructuredGrid* output, vtkPolyData* boundary);
+  // The steps of MeshSurface (each returns false after its error message).
+  volgrid::MesherOptions MakeMesherOptions() const;
+  bool ConvertInput(vtkPointSet* input, volgrid::SurfaceMesh& surface, VolGridSurfaceConversionInfo& converted);
+  bool TakeSourcePoints(vtkDataSet* sources, volgrid::ImprovementOptions& im);
+  bool FitsInMemory(const volgrid::SurfaceMesh& surface, const volgrid::MesherOptions& options);
+  bool AssignPatches(vtkPointSet* input, volgrid::MesherResult& result, std::map<int32_t, std::string>& patchNames);
   // MeshSurface with boundary layers (NumberOfLayers > 0): prisms plus tets.
   int MeshWithLayers(const volgrid::SurfaceMesh& surface, const volgrid::MesherOptions& options,
                      vtkUnstructuredGrid* output, vtkPolyData* boundary);

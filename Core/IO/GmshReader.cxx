@@ -386,10 +386,10 @@ struct GmshSurfaceReader
 
 Status readGmsh(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
-  ReadStart start(mesh, infoOut, "gmsh");
-  Status s = start.load(path);
-  if (!s.ok())
-    return s;
+  ReadStart start(path, mesh, infoOut, "gmsh");
+  if (!start.loaded.ok())
+    return start.loaded;
+  Status s;
   Scanner sc(start.text, path, false);
   GmshSurfaceReader r(sc, mesh, start.info, countLimit(start.text));
   std::string_view tok;

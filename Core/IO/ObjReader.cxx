@@ -125,10 +125,10 @@ Status checkReferences(const std::string& path, const ObjFaces& faces, int64_t v
 
 Status readOBJ(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions& options)
 {
-  ReadStart start(mesh, infoOut, "OBJ");
-  Status s = start.load(path);
-  if (!s.ok())
-    return s;
+  ReadStart start(path, mesh, infoOut, "OBJ");
+  if (!start.loaded.ok())
+    return start.loaded;
+  Status s;
   SurfaceReadInfo& info = start.info;
   const std::string& text = start.text;
   Scanner sc(text, path, true);

@@ -179,10 +179,10 @@ void readBinarySTL(const std::string& text, uint32_t count, SurfaceMesh& mesh, S
 
 Status readSTL(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const SurfaceReadOptions&)
 {
-  ReadStart start(mesh, infoOut, "");
-  Status s = start.load(path);
-  if (!s.ok())
-    return s;
+  ReadStart start(path, mesh, infoOut, "");
+  if (!start.loaded.ok())
+    return start.loaded;
+  Status s;
   SurfaceReadInfo& info = start.info;
   const std::string& text = start.text;
   if (text.empty())

@@ -75,12 +75,13 @@ int64_t fileSize(const std::string& path)
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) ? static_cast<int64_t>(st.st_size) : -1;
 }
 
-ReadStart::ReadStart(SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const char* format)
+ReadStart::ReadStart(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const char* format)
   : info(infoOut ? *infoOut : Own)
 {
   mesh.clear();
   this->info = SurfaceReadInfo();
   this->info.format = format;
+  this->loaded = loadFile(path, this->text);
 }
 
 Status loadFile(const std::string& path, std::string& text)

@@ -34,14 +34,13 @@ int64_t fileSize(const std::string& path);
 Status loadFile(const std::string& path, std::string& text);
 
 // The start every text reader shares: the mesh cleared, the caller's info (or a local one when it passed
-// none) reset with the format's name, then load() reads the whole file into `text`.
+// none) reset with the format's name, the whole file read into `text` (`loaded` says whether it was).
 class ReadStart
 {
 public:
-  ReadStart(SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const char* format);
+  ReadStart(const std::string& path, SurfaceMesh& mesh, SurfaceReadInfo* infoOut, const char* format);
   ReadStart(const ReadStart&) = delete;
   ReadStart& operator=(const ReadStart&) = delete;
-  Status load(const std::string& path) { return loadFile(path, this->text); }
 
 private:
   SurfaceReadInfo Own; // before `info`, which may refer to it
@@ -49,6 +48,7 @@ private:
 public:
   SurfaceReadInfo& info;
   std::string text;
+  Status loaded;
 };
 
 // True when the whole token is a number (a leading '+' is allowed).

@@ -230,9 +230,12 @@ double enclosureExactVolume(const EnclosureOptions& o)
   return 0.0;
 }
 
-Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
+namespace
 {
-  m.clear();
+// The options' own checks (axis, the shape's dimensions, centre) and the target edge length h (given, or
+// 1/16 of the size), refused when it would make more than ~20 M triangles.
+Status checkEnclosure(const EnclosureOptions& o, double& h)
+{
   if (o.axis < 0 || o.axis > 2)
   {
     return Status::failure(ErrorKind::InvalidOption, "enclosure axis must be 0, 1 or 2");
@@ -267,155 +270,178 @@ Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
     }
   }
   const double reference = o.shape == EnclosureShape::Box ? size : 2.0 * size;
-  double h = o.targetEdgeLength > 0 ? o.targetEdgeLength : reference / 16.0;
+  h = o.targetEdgeLength > 0 ? o.targetEdgeLength : reference / 16.0;
   if (!std::isfinite(h) || (reference / h) > 3000.0)
   {
     return Status::failure(ErrorKind::InvalidOption,
                            "enclosure target edge length " + std::to_string(o.targetEdgeLength) +
                              " is too small for size " + std::to_string(reference) + " (more than ~20 M triangles)");
   }
+  return Status::success();
+}
+
+// One face of the box: axis k fixed at side (0 low, 1 high), an n[u] x n[v] grid over the other two axes
+// (cyclic), split into triangles with alternating diagonals, oriented outward.
+void boxFace(SurfaceMesh& m, const EnclosureOptions& o, const int64_t n[3], int k, int side, int32_t patch)
+{
+  const double* c = o.center;
+  const double* d = o.dimensions;
+  auto coord = [&](int axis, int64_t i)
+  {
+    return i == n[axis] ? c[axis] + 0.5 * d[axis]
+                        : c[axis] - 0.5 * d[axis] + d[axis] * static_cast<double>(i) / static_cast<double>(n[axis]);
+  };
+  const int u = (k + 1) % 3, v = (k + 2) % 3;
+  std::vector<int32_t> ids(static_cast<size_t>((n[u] + 1) * (n[v] + 1)));
+  for (int64_t i = 0; i <= n[u]; ++i)
+  {
+    for (int64_t j = 0; j <= n[v]; ++j)
+    {
+      double p[3];
+      p[k] = side ? c[k] + 0.5 * d[k] : c[k] - 0.5 * d[k];
+      p[u] = coord(u, i);
+      p[v] = coord(v, j);
+      ids[static_cast<size_t>(i * (n[v] + 1) + j)] = m.addPoint(p[0], p[1], p[2]);
+    }
+  }
+  for (int64_t i = 0; i < n[u]; ++i)
+  {
+    for (int64_t j = 0; j < n[v]; ++j)
+    {
+      const int32_t a = ids[static_cast<size_t>(i * (n[v] + 1) + j)];
+      const int32_t b = ids[static_cast<size_t>((i + 1) * (n[v] + 1) + j)];
+      const int32_t e = ids[static_cast<size_t>((i + 1) * (n[v] + 1) + j + 1)];
+      const int32_t f = ids[static_cast<size_t>(i * (n[v] + 1) + j + 1)];
+      // (u, v, k) is right-handed: a->b->e turns toward +k. Alternate diagonals.
+      const bool alt = ((i + j) & 1) != 0;
+      const int32_t tris[2][3] = { { a, b, alt ? e : f }, { alt ? a : b, e, f } };
+      for (const auto& t : tris)
+      {
+        // The high side as listed, the low side reversed (outward on both).
+        if (side)
+          m.addTriangle(t[0], t[1], t[2], patch);
+        else
+          m.addTriangle(t[0], t[2], t[1], patch);
+      }
+    }
+  }
+}
+
+// The box: six faces of about h spacing, their shared edge points merged.
+void boxEnclosure(SurfaceMesh& m, const EnclosureOptions& o, double h, int32_t patch)
+{
+  int64_t n[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(o.dimensions[k] / h)));
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      boxFace(m, o, n, k, side, patch);
+    }
+  }
+  mergeCoincidentPoints(m);
+}
+
+// A sphere or an axis-aligned ellipsoid: a subdivided icosahedron scaled to the radii.
+void ellipsoidEnclosure(SurfaceMesh& m, const EnclosureOptions& o, double h, int32_t patch)
+{
+  const double* c = o.center;
+  const double* d = o.dimensions;
+  const double r = o.shape == EnclosureShape::Sphere ? d[0] : std::max({ d[0], d[1], d[2] });
+  // Icosahedron edge = 1.0515 R; a frequency-n subdivision has edges of about that / n.
+  const int64_t freq = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(1.0515 * r / h)));
+  icosphere(m, freq, patch);
+  for (int32_t i = 0; i < m.numberOfPoints(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const double s = o.shape == EnclosureShape::Sphere ? d[0] : d[k];
+      m.points[3 * size_t(i) + k] = c[k] + s * m.points[3 * size_t(i) + k];
+    }
+  }
+}
+
+// A cylinder along o.axis: rings zipped into the side, closed by two disks.
+void cylinderEnclosure(SurfaceMesh& m, const EnclosureOptions& o, double h, int32_t patch)
+{
+  const double* c = o.center;
+  const double* d = o.dimensions;
+  const Frame f{ { c[0], c[1], c[2] }, o.axis };
+  const double r = d[0], height = d[1];
+  const int64_t nt = std::max<int64_t>(6, static_cast<int64_t>(std::ceil(2.0 * kPi * r / h)));
+  const int64_t nz = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(height / h)));
+  std::vector<std::vector<int32_t>> rings;
+  for (int64_t k = 0; k <= nz; ++k)
+  {
+    const double z = k == nz ? 0.5 * height : -0.5 * height + height * static_cast<double>(k) / static_cast<double>(nz);
+    rings.push_back(ring(m, f, r, z, nt));
+  }
+  for (int64_t k = 0; k < nz; ++k)
+  {
+    zipRings(m, rings[k], rings[k + 1], false, patch);
+  }
+  disk(m, f, rings[nz], r, 0.5 * height, h, false, patch);
+  disk(m, f, rings[0], r, -0.5 * height, h, true, patch);
+}
+
+// A hemisphere on o.axis (dome on + or -, domeNegative): shrinking rings up to the pole, closed by the
+// equator disk.
+void hemisphereEnclosure(SurfaceMesh& m, const EnclosureOptions& o, double h, int32_t patch)
+{
+  const double* c = o.center;
+  const double* d = o.dimensions;
+  const Frame f{ { c[0], c[1], c[2] }, o.axis };
+  const double r = d[0];
+  const double s = o.domeNegative ? -1.0 : 1.0;
+  const int64_t nt = std::max<int64_t>(6, static_cast<int64_t>(std::ceil(2.0 * kPi * r / h)));
+  const int64_t nphi = std::max<int64_t>(2, static_cast<int64_t>(std::ceil(0.5 * kPi * r / h)));
+  std::vector<int32_t> equator = ring(m, f, r, 0.0, nt);
+  std::vector<int32_t> prev = equator;
+  for (int64_t k = 1; k <= nphi; ++k)
+  {
+    const double phi = 0.5 * kPi * static_cast<double>(k) / static_cast<double>(nphi);
+    const int64_t count = k == nphi ? 1 : std::max<int64_t>(6, std::llround(static_cast<double>(nt) * std::cos(phi)));
+    std::vector<int32_t> cur = ring(m, f, k == nphi ? 0.0 : r * std::cos(phi), s * r * std::sin(phi), count);
+    // Dome on -axis: mirrored, so the triangles flip.
+    zipRings(m, prev, cur, o.domeNegative, patch);
+    prev.swap(cur);
+  }
+  disk(m, f, equator, r, 0.0, h, !o.domeNegative, patch);
+}
+} // namespace
+
+Status makeEnclosure(const EnclosureOptions& o, SurfaceMesh& m)
+{
+  m.clear();
+  double h = 0;
+  const Status s = checkEnclosure(o, h);
+  if (!s.ok())
+  {
+    return s;
+  }
   const int32_t patch = o.patchId;
   if (patch >= 0)
   {
     m.patchNames[patch] = "farfield"; // a generated enclosure is the far field of an external flow
   }
-  const double* c = o.center;
-  const double* d = o.dimensions;
   switch (o.shape)
   {
     case EnclosureShape::Box:
-    {
-      int64_t n[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        n[k] = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(d[k] / h)));
-      }
-      auto coord = [&](int k, int64_t i)
-      {
-        return i == n[k] ? c[k] + 0.5 * d[k]
-                         : c[k] - 0.5 * d[k] + d[k] * static_cast<double>(i) / static_cast<double>(n[k]);
-      };
-      // Each face: fixed axis k at side s, grid over axes u = k+1, v = k+2 (cyclic).
-      for (int k = 0; k < 3; ++k)
-      {
-        const int u = (k + 1) % 3, v = (k + 2) % 3;
-        for (int side = 0; side < 2; ++side)
-        {
-          std::vector<int32_t> ids(static_cast<size_t>((n[u] + 1) * (n[v] + 1)));
-          for (int64_t i = 0; i <= n[u]; ++i)
-          {
-            for (int64_t j = 0; j <= n[v]; ++j)
-            {
-              double p[3];
-              p[k] = side ? c[k] + 0.5 * d[k] : c[k] - 0.5 * d[k];
-              p[u] = coord(u, i);
-              p[v] = coord(v, j);
-              ids[static_cast<size_t>(i * (n[v] + 1) + j)] = m.addPoint(p[0], p[1], p[2]);
-            }
-          }
-          for (int64_t i = 0; i < n[u]; ++i)
-          {
-            for (int64_t j = 0; j < n[v]; ++j)
-            {
-              const int32_t a = ids[static_cast<size_t>(i * (n[v] + 1) + j)];
-              const int32_t b = ids[static_cast<size_t>((i + 1) * (n[v] + 1) + j)];
-              const int32_t e = ids[static_cast<size_t>((i + 1) * (n[v] + 1) + j + 1)];
-              const int32_t f = ids[static_cast<size_t>(i * (n[v] + 1) + j + 1)];
-              // (u, v, k) is right-handed: a->b->e turns toward +k. Alternate diagonals.
-              const bool alt = ((i + j) & 1) != 0;
-              if (side)
-              {
-                if (alt)
-                {
-                  m.addTriangle(a, b, e, patch);
-                  m.addTriangle(a, e, f, patch);
-                }
-                else
-                {
-                  m.addTriangle(a, b, f, patch);
-                  m.addTriangle(b, e, f, patch);
-                }
-              }
-              else
-              {
-                if (alt)
-                {
-                  m.addTriangle(a, e, b, patch);
-                  m.addTriangle(a, f, e, patch);
-                }
-                else
-                {
-                  m.addTriangle(a, f, b, patch);
-                  m.addTriangle(b, f, e, patch);
-                }
-              }
-            }
-          }
-        }
-      }
-      mergeCoincidentPoints(m);
+      boxEnclosure(m, o, h, patch);
       break;
-    }
     case EnclosureShape::Sphere:
     case EnclosureShape::Ellipsoid:
-    {
-      const double r = o.shape == EnclosureShape::Sphere ? d[0] : std::max({ d[0], d[1], d[2] });
-      // Icosahedron edge = 1.0515 R; a frequency-n subdivision has edges of about that / n.
-      const int64_t freq = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(1.0515 * r / h)));
-      icosphere(m, freq, patch);
-      for (int32_t i = 0; i < m.numberOfPoints(); ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          const double s = o.shape == EnclosureShape::Sphere ? d[0] : d[k];
-          m.points[3 * size_t(i) + k] = c[k] + s * m.points[3 * size_t(i) + k];
-        }
-      }
+      ellipsoidEnclosure(m, o, h, patch);
       break;
-    }
     case EnclosureShape::Cylinder:
-    {
-      const Frame f{ { c[0], c[1], c[2] }, o.axis };
-      const double r = d[0], height = d[1];
-      const int64_t nt = std::max<int64_t>(6, static_cast<int64_t>(std::ceil(2.0 * kPi * r / h)));
-      const int64_t nz = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(height / h)));
-      std::vector<std::vector<int32_t>> rings;
-      for (int64_t k = 0; k <= nz; ++k)
-      {
-        const double z =
-          k == nz ? 0.5 * height : -0.5 * height + height * static_cast<double>(k) / static_cast<double>(nz);
-        rings.push_back(ring(m, f, r, z, nt));
-      }
-      for (int64_t k = 0; k < nz; ++k)
-      {
-        zipRings(m, rings[k], rings[k + 1], false, patch);
-      }
-      disk(m, f, rings[nz], r, 0.5 * height, h, false, patch);
-      disk(m, f, rings[0], r, -0.5 * height, h, true, patch);
+      cylinderEnclosure(m, o, h, patch);
       break;
-    }
     case EnclosureShape::Hemisphere:
-    {
-      const Frame f{ { c[0], c[1], c[2] }, o.axis };
-      const double r = d[0];
-      const double s = o.domeNegative ? -1.0 : 1.0;
-      const int64_t nt = std::max<int64_t>(6, static_cast<int64_t>(std::ceil(2.0 * kPi * r / h)));
-      const int64_t nphi = std::max<int64_t>(2, static_cast<int64_t>(std::ceil(0.5 * kPi * r / h)));
-      std::vector<int32_t> equator = ring(m, f, r, 0.0, nt);
-      std::vector<int32_t> prev = equator;
-      for (int64_t k = 1; k <= nphi; ++k)
-      {
-        const double phi = 0.5 * kPi * static_cast<double>(k) / static_cast<double>(nphi);
-        const int64_t count =
-          k == nphi ? 1 : std::max<int64_t>(6, std::llround(static_cast<double>(nt) * std::cos(phi)));
-        std::vector<int32_t> cur = ring(m, f, k == nphi ? 0.0 : r * std::cos(phi), s * r * std::sin(phi), count);
-        // Dome on -axis: mirrored, so the triangles flip.
-        zipRings(m, prev, cur, o.domeNegative, patch);
-        prev.swap(cur);
-      }
-      disk(m, f, equator, r, 0.0, h, !o.domeNegative, patch);
+      hemisphereEnclosure(m, o, h, patch);
       break;
-    }
   }
   return Status::success();
 }

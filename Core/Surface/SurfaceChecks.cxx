@@ -41,24 +41,17 @@ bool SurfaceCheckReport::meshable() const
     shellIntersectingPairs == 0;
 }
 
-SurfaceCheckReport checkSurface(const SurfaceMesh& mesh, const SurfaceCheckOptions& options)
+namespace
 {
-  SilentProgress silent;
-  Progress* progress = options.progress ? options.progress : &silent;
-  const int maxIds = std::max(0, options.maxReportedIds);
-  SurfaceCheckReport r;
+// Marks the triangles whose ids are all in range (valid) and the points they use (referenced); counts
+// invalid triangles, unreferenced points and non-finite referenced points into r.
+void checkIdsAndPoints(const SurfaceMesh& mesh, int maxIds, SurfaceCheckReport& r, std::vector<char>& valid,
+                       std::vector<char>& referenced)
+{
   const int32_t np = mesh.numberOfPoints();
   const int32_t nt = mesh.numberOfTriangles();
-  r.points = np;
-  r.triangles = nt;
-  r.triangleFlags.assign(nt, 0);
-  r.triangleShell.assign(nt, -1);
-  r.pointNonManifold.assign(np, 0);
-  progress->report(0.0, "Checking surface");
-
-  // Valid triangles and referenced points.
-  std::vector<char> valid(nt, 1);
-  std::vector<char> referenced(np, 0);
+  valid.assign(nt, 1);
+  referenced.assign(np, 0);
   for (int32_t t = 0; t < nt; ++t)
   {
     const int32_t* v = mesh.triangle(t);
@@ -95,29 +88,32 @@ SurfaceCheckReport checkSurface(const SurfaceMesh& mesh, const SurfaceCheckOptio
       }
     }
   }
-  if (r.nonFinitePoints > 0)
+}
+
+// Counts the referenced points that coincide exactly with an earlier referenced one (canon: each point's
+// canonical id, exactCoincidenceMap).
+void countCoincidentPoints(const std::vector<char>& referenced, const std::vector<int32_t>& canon,
+                           SurfaceCheckReport& r)
+{
+  std::vector<char> seen(referenced.size(), 0);
+  for (size_t i = 0; i < referenced.size(); ++i)
   {
-    return r; // no geometry can be trusted
-  }
-  // Exactly coincident points: canonical ids for the geometric tests.
-  std::vector<int32_t> canon;
-  exactCoincidenceMap(mesh.points, canon);
-  {
-    std::vector<char> seen(np, 0);
-    for (int32_t i = 0; i < np; ++i)
+    if (referenced[i])
     {
-      if (referenced[i])
+      if (seen[canon[i]])
       {
-        if (seen[canon[i]])
-        {
-          ++r.coincidentPoints;
-        }
-        seen[canon[i]] = 1;
+        ++r.coincidentPoints;
       }
+      seen[canon[i]] = 1;
     }
   }
+}
 
-  // Degenerate and duplicate triangles.
+// Flags the valid triangles with a repeated vertex or collinear corners (exact); returns the flags.
+std::vector<char> flagDegenerateTriangles(const SurfaceMesh& mesh, const std::vector<char>& valid, int maxIds,
+                                          SurfaceCheckReport& r)
+{
+  const int32_t nt = mesh.numberOfTriangles();
   std::vector<char> degenerate(nt, 0);
   for (int32_t t = 0; t < nt; ++t)
   {
@@ -135,91 +131,124 @@ SurfaceCheckReport checkSurface(const SurfaceMesh& mesh, const SurfaceCheckOptio
       keepFirstId(r.firstDegenerateTriangles, t, maxIds);
     }
   }
+  return degenerate;
+}
+
+// Flags every valid triangle with the same vertex set as a lower-numbered one as a duplicate.
+void flagDuplicateTriangles(const SurfaceMesh& mesh, const std::vector<char>& valid, int maxIds, SurfaceCheckReport& r)
+{
+  struct Key
   {
-    struct Key
+    int32_t v[3];
+    int32_t t;
+  };
+  const int32_t nt = mesh.numberOfTriangles();
+  std::vector<Key> keys;
+  keys.reserve(nt);
+  for (int32_t t = 0; t < nt; ++t)
+  {
+    if (valid[t])
     {
-      int32_t v[3];
-      int32_t t;
-    };
-    std::vector<Key> keys;
-    keys.reserve(nt);
-    for (int32_t t = 0; t < nt; ++t)
-    {
-      if (valid[t])
-      {
-        Key k;
-        std::copy(mesh.triangle(t), mesh.triangle(t) + 3, k.v);
-        std::sort(k.v, k.v + 3);
-        k.t = t;
-        keys.push_back(k);
-      }
+      Key k;
+      std::copy(mesh.triangle(t), mesh.triangle(t) + 3, k.v);
+      std::sort(k.v, k.v + 3);
+      k.t = t;
+      keys.push_back(k);
     }
-    std::sort(keys.begin(), keys.end(),
-              [](const Key& a, const Key& b) {
-                return std::lexicographical_compare(a.v, a.v + 3, b.v, b.v + 3) ||
-                  (std::equal(a.v, a.v + 3, b.v) && a.t < b.t);
-              });
-    for (size_t i = 1; i < keys.size(); ++i)
-    {
-      if (std::equal(keys[i].v, keys[i].v + 3, keys[i - 1].v))
-      {
-        const int32_t t = keys[i].t;
-        r.triangleFlags[t] |= TriangleDuplicate;
-        ++r.duplicateTriangles;
-        keepFirstId(r.firstDuplicateTriangles, t, maxIds);
-      }
-    }
-    std::sort(r.firstDuplicateTriangles.begin(), r.firstDuplicateTriangles.end());
   }
+  std::sort(keys.begin(), keys.end(),
+            [](const Key& a, const Key& b) {
+              return std::lexicographical_compare(a.v, a.v + 3, b.v, b.v + 3) ||
+                (std::equal(a.v, a.v + 3, b.v) && a.t < b.t);
+            });
+  for (size_t i = 1; i < keys.size(); ++i)
+  {
+    if (std::equal(keys[i].v, keys[i].v + 3, keys[i - 1].v))
+    {
+      const int32_t t = keys[i].t;
+      r.triangleFlags[t] |= TriangleDuplicate;
+      ++r.duplicateTriangles;
+      keepFirstId(r.firstDuplicateTriangles, t, maxIds);
+    }
+  }
+  std::sort(r.firstDuplicateTriangles.begin(), r.firstDuplicateTriangles.end());
+}
+
+// Finds the intersecting pairs among the valid, non-degenerate triangles (exact) and sorts them into
+// self-intersections (same shell; r.triangleShell must be set) and intersections between shells.
+void checkIntersections(const SurfaceMesh& mesh, const std::vector<char>& valid, const std::vector<char>& degenerate,
+                        const std::vector<int32_t>& canon, int threads, int maxIds, SurfaceCheckReport& r)
+{
+  r.intersectionsChecked = true;
+  std::vector<int32_t> candidates;
+  candidates.reserve(valid.size());
+  for (int32_t t = 0; t < static_cast<int32_t>(valid.size()); ++t)
+  {
+    if (valid[t] && !degenerate[t])
+    {
+      candidates.push_back(t);
+    }
+  }
+  const std::vector<std::pair<int32_t, int32_t>> pairs =
+    detail::findIntersectingPairs(mesh, candidates, canon, threads);
+  for (const auto& pr : pairs)
+  {
+    const int32_t sa = r.triangleShell[pr.first], sb = r.triangleShell[pr.second];
+    const bool self = sa == sb;
+    const int flag = self ? TriangleSelfIntersecting : TriangleShellIntersecting;
+    ++(self ? r.selfIntersectingPairs : r.shellIntersectingPairs);
+    r.triangleFlags[pr.first] |= flag;
+    r.triangleFlags[pr.second] |= flag;
+    if (!self)
+    {
+      r.shells[sa].intersectsOtherShell = true;
+      r.shells[sb].intersectsOtherShell = true;
+    }
+    std::vector<int32_t>& first = self ? r.firstSelfIntersectingPairs : r.firstShellIntersectingPairs;
+    if (static_cast<int>(first.size()) < 2 * maxIds)
+    {
+      first.push_back(pr.first);
+      first.push_back(pr.second);
+    }
+  }
+}
+} // namespace
+
+SurfaceCheckReport checkSurface(const SurfaceMesh& mesh, const SurfaceCheckOptions& options)
+{
+  SilentProgress silent;
+  Progress* progress = options.progress ? options.progress : &silent;
+  const int maxIds = std::max(0, options.maxReportedIds);
+  SurfaceCheckReport r;
+  const int32_t np = mesh.numberOfPoints();
+  const int32_t nt = mesh.numberOfTriangles();
+  r.points = np;
+  r.triangles = nt;
+  r.triangleFlags.assign(nt, 0);
+  r.triangleShell.assign(nt, -1);
+  r.pointNonManifold.assign(np, 0);
+  progress->report(0.0, "Checking surface");
+
+  std::vector<char> valid, referenced;
+  checkIdsAndPoints(mesh, maxIds, r, valid, referenced);
+  if (r.nonFinitePoints > 0)
+  {
+    return r; // no geometry can be trusted
+  }
+  // Exactly coincident points: canonical ids for the geometric tests.
+  std::vector<int32_t> canon;
+  exactCoincidenceMap(mesh.points, canon);
+  countCoincidentPoints(referenced, canon, r);
+  const std::vector<char> degenerate = flagDegenerateTriangles(mesh, valid, maxIds, r);
+  flagDuplicateTriangles(mesh, valid, maxIds, r);
   progress->report(0.1, "Checking surface");
 
   const std::vector<std::vector<int32_t>> shellTris = detail::checkEdgeTopology(mesh, valid, maxIds, r);
   progress->report(0.2, "Checking surface");
 
-  // Self-intersections.
   if (options.selfIntersections && !progress->cancelled())
   {
-    r.intersectionsChecked = true;
-    std::vector<int32_t> candidates;
-    candidates.reserve(nt);
-    for (int32_t t = 0; t < nt; ++t)
-    {
-      if (!valid[t] || degenerate[t])
-      {
-        continue;
-      }
-      candidates.push_back(t);
-    }
-    const std::vector<std::pair<int32_t, int32_t>> pairs =
-      detail::findIntersectingPairs(mesh, candidates, canon, options.threads);
-    for (const auto& pr : pairs)
-    {
-      const int32_t sa = r.triangleShell[pr.first], sb = r.triangleShell[pr.second];
-      if (sa == sb)
-      {
-        ++r.selfIntersectingPairs;
-        r.triangleFlags[pr.first] |= TriangleSelfIntersecting;
-        r.triangleFlags[pr.second] |= TriangleSelfIntersecting;
-        if (static_cast<int>(r.firstSelfIntersectingPairs.size()) < 2 * maxIds)
-        {
-          r.firstSelfIntersectingPairs.push_back(pr.first);
-          r.firstSelfIntersectingPairs.push_back(pr.second);
-        }
-      }
-      else
-      {
-        ++r.shellIntersectingPairs;
-        r.triangleFlags[pr.first] |= TriangleShellIntersecting;
-        r.triangleFlags[pr.second] |= TriangleShellIntersecting;
-        r.shells[sa].intersectsOtherShell = true;
-        r.shells[sb].intersectsOtherShell = true;
-        if (static_cast<int>(r.firstShellIntersectingPairs.size()) < 2 * maxIds)
-        {
-          r.firstShellIntersectingPairs.push_back(pr.first);
-          r.firstShellIntersectingPairs.push_back(pr.second);
-        }
-      }
-    }
+    checkIntersections(mesh, valid, degenerate, canon, options.threads, maxIds, r);
   }
   progress->report(0.8, "Checking surface");
 

@@ -389,17 +389,12 @@ int64_t orientShellsForDomain(SurfaceMesh& mesh)
 
 namespace
 {
-struct Patch
-{
-  std::vector<std::array<int32_t, 3>> tris;
-};
+using Patch = std::vector<std::array<int32_t, 3>>;
 
-void fillLoop(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_set<uint64_t>& edgeSet, bool refine,
-              int fairing, int32_t patch, int64_t& pointsAdded, int64_t& trianglesAdded)
+// The loop's normal (Newell); the hole lies to the left of the loop around it.
+Vec loopNormal(const SurfaceMesh& m, const std::vector<int32_t>& loop)
 {
   const size_t n = loop.size();
-  Patch p;
-  // Loop normal (Newell); the hole lies to the left of the loop around it.
   Vec nrm{ 0, 0, 0 };
   for (size_t i = 0; i < n; ++i)
   {
@@ -408,6 +403,14 @@ void fillLoop(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_s
     nrm.y += (a.z - b.z) * (a.x + b.x);
     nrm.z += (a.x - b.x) * (a.y + b.y);
   }
+  return nrm;
+}
+
+// Triangulates the loop by clipping the ear of smallest interior angle first (about the normal nrm);
+// the new diagonals go into edgeSet.
+void clipEars(const SurfaceMesh& m, const std::vector<int32_t>& loop, const Vec& nrm,
+              std::unordered_set<uint64_t>& edgeSet, Patch& tris)
+{
   std::vector<int32_t> poly = loop;
   auto interior = [&](size_t i)
   {
@@ -441,149 +444,177 @@ void fillLoop(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_s
     }
     const size_t k = poly.size();
     const int32_t a = poly[(best + k - 1) % k], b = poly[best], c = poly[(best + 1) % k];
-    p.tris.push_back({ a, b, c });
+    tris.push_back({ a, b, c });
     edgeSet.insert(edgeKey(a, c));
     poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(best));
   }
-  p.tris.push_back({ poly[0], poly[1], poly[2] });
+  tris.push_back({ poly[0], poly[1], poly[2] });
+}
 
+// Flips patch-interior edges whose opposite angles sum above pi, up to 8 sweeps; edgeSet follows.
+void relaxPatch(const SurfaceMesh& m, std::unordered_set<uint64_t>& edgeSet, Patch& tris)
+{
+  for (int sweep = 0; sweep < 8; ++sweep)
+  {
+    std::unordered_map<uint64_t, std::vector<std::pair<size_t, int>>> own;
+    for (size_t t = 0; t < tris.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        own[edgeKey(tris[t][k], tris[t][(k + 1) % 3])].push_back({ t, k });
+      }
+    }
+    bool flippedAny = false;
+    std::vector<char> touched(tris.size(), 0);
+    for (const auto& e : own)
+    {
+      if (e.second.size() != 2)
+      {
+        continue;
+      }
+      const size_t t1 = e.second[0].first, t2 = e.second[1].first;
+      if (touched[t1] || touched[t2])
+      {
+        continue;
+      }
+      const int k1 = e.second[0].second, k2 = e.second[1].second;
+      const int32_t a = tris[t1][k1], b = tris[t1][(k1 + 1) % 3], c = tris[t1][(k1 + 2) % 3];
+      const int32_t d = tris[t2][(k2 + 2) % 3];
+      if (tris[t2][k2] != b || c == d || edgeSet.count(edgeKey(c, d)))
+      {
+        continue;
+      }
+      if (angleAt(P(m, c), P(m, a), P(m, b)) + angleAt(P(m, d), P(m, a), P(m, b)) <= 3.14159265358979323846 + 1e-9)
+      {
+        continue;
+      }
+      tris[t1] = { c, a, d };
+      tris[t2] = { d, b, c };
+      edgeSet.erase(edgeKey(a, b));
+      edgeSet.insert(edgeKey(c, d));
+      touched[t1] = touched[t2] = 1;
+      flippedAny = true;
+    }
+    if (!flippedAny)
+    {
+      break;
+    }
+  }
+}
+
+// Splits the patch's triangles at their centroids while they are large against the loop's spacing
+// (sigma, carried to the new points), relaxing after each pass (at most 12 passes); adds the points to m.
+void refinePatch(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_set<uint64_t>& edgeSet, Patch& tris)
+{
+  const size_t n = loop.size();
+  std::unordered_map<int32_t, double> sigma;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const Vec c = P(m, loop[i]);
+    sigma[loop[i]] = 0.5 * (norm(sub(P(m, loop[(i + n - 1) % n]), c)) + norm(sub(P(m, loop[(i + 1) % n]), c)));
+  }
+  for (int pass = 0; pass < 12; ++pass)
+  {
+    bool split = false;
+    const size_t count = tris.size();
+    for (size_t t = 0; t < count; ++t)
+    {
+      const auto tri = tris[t];
+      const Vec a = P(m, tri[0]), b = P(m, tri[1]), c = P(m, tri[2]);
+      const Vec g{ (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3 };
+      const double sg = (sigma[tri[0]] + sigma[tri[1]] + sigma[tri[2]]) / 3.0;
+      bool big = true;
+      for (int k = 0; k < 3 && big; ++k)
+      {
+        const double d = std::sqrt(2.0) * norm(sub(g, P(m, tri[k])));
+        big = d > sg && d > sigma[tri[k]];
+      }
+      if (!big)
+      {
+        continue;
+      }
+      const int32_t v = m.addPoint(g.x, g.y, g.z);
+      sigma[v] = sg;
+      tris[t] = { tri[0], tri[1], v };
+      tris.push_back({ tri[1], tri[2], v });
+      tris.push_back({ tri[2], tri[0], v });
+      for (int k = 0; k < 3; ++k)
+      {
+        edgeSet.insert(edgeKey(tri[k], v));
+      }
+      split = true;
+    }
+    relaxPatch(m, edgeSet, tris);
+    if (!split)
+    {
+      break;
+    }
+  }
+}
+
+// Umbrella smoothing of the points from firstNew on (the inserted ones) with the loop fixed: a membrane
+// spanning the loop.
+void fairPatch(SurfaceMesh& m, const Patch& tris, int32_t firstNew, int fairing)
+{
+  const int32_t added = m.numberOfPoints() - firstNew;
+  std::vector<std::vector<int32_t>> nb(added);
+  for (const auto& t : tris)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (t[k] >= firstNew)
+      {
+        nb[t[k] - firstNew].push_back(t[(k + 1) % 3]);
+        nb[t[k] - firstNew].push_back(t[(k + 2) % 3]);
+      }
+    }
+  }
+  for (int it = 0; it < fairing; ++it)
+  {
+    for (int32_t i = 0; i < added; ++i)
+    {
+      double s[3] = { 0, 0, 0 };
+      for (int32_t j : nb[i])
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          s[k] += m.point(j)[k];
+        }
+      }
+      if (!nb[i].empty())
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          m.points[3 * size_t(firstNew + i) + k] = s[k] / static_cast<double>(nb[i].size());
+        }
+      }
+    }
+  }
+}
+
+// Fills one hole loop: ear clipping, then (refine) centroid refinement, then (fairing) smoothing of the new
+// points; the triangles get `patch` when the mesh has patch ids.
+void fillLoop(SurfaceMesh& m, const std::vector<int32_t>& loop, std::unordered_set<uint64_t>& edgeSet, bool refine,
+              int fairing, int32_t patch, int64_t& pointsAdded, int64_t& trianglesAdded)
+{
+  Patch tris;
+  clipEars(m, loop, loopNormal(m, loop), edgeSet, tris);
   const int32_t firstNew = m.numberOfPoints();
   if (refine)
   {
-    std::unordered_map<int32_t, double> sigma;
-    for (size_t i = 0; i < n; ++i)
-    {
-      const Vec c = P(m, loop[i]);
-      sigma[loop[i]] = 0.5 * (norm(sub(P(m, loop[(i + n - 1) % n]), c)) + norm(sub(P(m, loop[(i + 1) % n]), c)));
-    }
-    for (int pass = 0; pass < 12; ++pass)
-    {
-      bool split = false;
-      const size_t count = p.tris.size();
-      for (size_t t = 0; t < count; ++t)
-      {
-        const auto tri = p.tris[t];
-        const Vec a = P(m, tri[0]), b = P(m, tri[1]), c = P(m, tri[2]);
-        const Vec g{ (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3 };
-        const double sg = (sigma[tri[0]] + sigma[tri[1]] + sigma[tri[2]]) / 3.0;
-        bool big = true;
-        for (int k = 0; k < 3 && big; ++k)
-        {
-          const double d = std::sqrt(2.0) * norm(sub(g, P(m, tri[k])));
-          big = d > sg && d > sigma[tri[k]];
-        }
-        if (!big)
-        {
-          continue;
-        }
-        const int32_t v = m.addPoint(g.x, g.y, g.z);
-        sigma[v] = sg;
-        p.tris[t] = { tri[0], tri[1], v };
-        p.tris.push_back({ tri[1], tri[2], v });
-        p.tris.push_back({ tri[2], tri[0], v });
-        for (int k = 0; k < 3; ++k)
-        {
-          edgeSet.insert(edgeKey(tri[k], v));
-        }
-        split = true;
-      }
-      // Relax: flip patch-interior edges whose opposite angles sum above pi.
-      for (int sweep = 0; sweep < 8; ++sweep)
-      {
-        std::unordered_map<uint64_t, std::vector<std::pair<size_t, int>>> own;
-        for (size_t t = 0; t < p.tris.size(); ++t)
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            own[edgeKey(p.tris[t][k], p.tris[t][(k + 1) % 3])].push_back({ t, k });
-          }
-        }
-        bool flippedAny = false;
-        std::vector<char> touched(p.tris.size(), 0);
-        for (const auto& e : own)
-        {
-          if (e.second.size() != 2)
-          {
-            continue;
-          }
-          const size_t t1 = e.second[0].first, t2 = e.second[1].first;
-          if (touched[t1] || touched[t2])
-          {
-            continue;
-          }
-          const int k1 = e.second[0].second, k2 = e.second[1].second;
-          const int32_t a = p.tris[t1][k1], b = p.tris[t1][(k1 + 1) % 3], c = p.tris[t1][(k1 + 2) % 3];
-          const int32_t d = p.tris[t2][(k2 + 2) % 3];
-          if (p.tris[t2][k2] != b || c == d || edgeSet.count(edgeKey(c, d)))
-          {
-            continue;
-          }
-          if (angleAt(P(m, c), P(m, a), P(m, b)) + angleAt(P(m, d), P(m, a), P(m, b)) <= 3.14159265358979323846 + 1e-9)
-          {
-            continue;
-          }
-          p.tris[t1] = { c, a, d };
-          p.tris[t2] = { d, b, c };
-          edgeSet.erase(edgeKey(a, b));
-          edgeSet.insert(edgeKey(c, d));
-          touched[t1] = touched[t2] = 1;
-          flippedAny = true;
-        }
-        if (!flippedAny)
-        {
-          break;
-        }
-      }
-      if (!split)
-      {
-        break;
-      }
-    }
+    refinePatch(m, loop, edgeSet, tris);
   }
   const int32_t added = m.numberOfPoints() - firstNew;
   if (added > 0 && fairing > 0)
   {
-    // Umbrella smoothing of the inserted points with the loop fixed: a membrane spanning the loop.
-    std::vector<std::vector<int32_t>> nb(added);
-    for (const auto& t : p.tris)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        if (t[k] >= firstNew)
-        {
-          nb[t[k] - firstNew].push_back(t[(k + 1) % 3]);
-          nb[t[k] - firstNew].push_back(t[(k + 2) % 3]);
-        }
-      }
-    }
-    for (int it = 0; it < fairing; ++it)
-    {
-      for (int32_t i = 0; i < added; ++i)
-      {
-        double s[3] = { 0, 0, 0 };
-        for (int32_t j : nb[i])
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            s[k] += m.point(j)[k];
-          }
-        }
-        if (!nb[i].empty())
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            m.points[3 * size_t(firstNew + i) + k] = s[k] / static_cast<double>(nb[i].size());
-          }
-        }
-      }
-    }
+    fairPatch(m, tris, firstNew, fairing);
   }
-  for (const auto& t : p.tris)
+  for (const auto& t : tris)
   {
     m.addTriangle(t[0], t[1], t[2], m.hasPatchIds() ? patch : -1);
   }
   pointsAdded += added;
-  trianglesAdded += static_cast<int64_t>(p.tris.size());
+  trianglesAdded += static_cast<int64_t>(tris.size());
 }
 } // namespace
 
