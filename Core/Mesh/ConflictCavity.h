@@ -5,9 +5,11 @@
 // caller turns into the cone of new tets.
 //
 // The caller's Rule (each editor keeps its own insphere and its own constrained faces):
-//   bool blocks(int32_t t, int i)  growth never crosses face i of cavity tet t (true on every hull face)
+//   bool blocks(int32_t t, int i)  growth never crosses face i of cavity tet t
 //   bool wall(int32_t t, int i)    face i of t bounds the cavity even with the tet beyond inside it, and the
-//                                  connected part is never joined across it (true on every hull face)
+//                                  connected part is never joined across it
+//   (Hull faces always stop growth and bound the cavity; neither is asked about them, and both are asked
+//   only when the tet beyond matters, as they may be hash look-ups.)
 //   bool conflicts(int32_t u)      u is in conflict with the point (the insphere rule)
 //   bool mustKeep(int32_t t)       the cavity cannot do without t (its closure holds the point): the
 //                                  shrink fails rather than drop it
@@ -55,6 +57,9 @@ public:
   // would go. The cavity ends in breadth-first order from the roots.
   template<class Rule>
   bool shrinkToStar(const double* p, Rule& rule, const int32_t* roots, size_t n, int maxRounds);
+  // Whether the last shrinkToStar() ended with a pass that found every boundary face seeing p strictly (so
+  // the cone needs no second orient3d per face); false when it stopped at maxRounds.
+  bool starShaped() const { return starShaped_; }
   // Calls emit(t, i) for each boundary face i of cavity tet t, in cavity order; stops and returns false
   // as soon as emit does.
   template<class Rule, class Emit>
@@ -67,13 +72,18 @@ private:
   // Keeps the part connected to the roots across non-wall faces, in breadth-first order.
   template<class Rule>
   void keepConnected(Rule& rule, const int32_t* roots, size_t n);
-  bool boundaryFace(int32_t t, int i, bool wall) const
+  // A face on the cavity's boundary: the hull, a face to a tet outside, or a wall (asked last: it may be
+  // a hash look-up).
+  template<class Rule>
+  bool boundaryFace(Rule& rule, int32_t t, int i) const
   {
-    return wall || nav_.tetStamp[nav_.mesh.neighbor(t, i)] != stamp_;
+    const int32_t u = nav_.mesh.neighbor(t, i);
+    return u < 0 || nav_.tetStamp[u] != stamp_ || rule.wall(t, i);
   }
 
   MeshNavigator& nav_;
   uint32_t stamp_ = 0;
+  bool starShaped_ = false;
   std::vector<int32_t> queue_;
 };
 
@@ -87,10 +97,9 @@ void ConflictCavity::grow(Rule& rule, size_t maxTets)
     const int32_t t = tets[k];
     for (int i = 0; i < 4; ++i)
     {
-      if (rule.blocks(t, i))
-        continue;
+      // Visited tets first: blocks() may be a hash look-up (and is true on the hull).
       const int32_t u = mesh.neighbor(t, i);
-      if (nav_.tetStamp[u] == stamp_ || nav_.tetStamp[u] == sOut)
+      if (u < 0 || nav_.tetStamp[u] == stamp_ || nav_.tetStamp[u] == sOut || rule.blocks(t, i))
         continue;
       if (rule.conflicts(u))
         add(u);
@@ -111,7 +120,7 @@ int ConflictCavity::dropInvisible(const double* p, Rule& rule)
       continue;
     for (int i = 0; i < 4; ++i)
     {
-      if (!boundaryFace(t, i, rule.wall(t, i)))
+      if (!boundaryFace(rule, t, i))
         continue;
       int32_t f[3];
       mesh.faceVertices(t, i, f);
@@ -142,10 +151,8 @@ void ConflictCavity::keepConnected(Rule& rule, const int32_t* roots, size_t n)
     const int32_t t = queue_[k];
     for (int i = 0; i < 4; ++i)
     {
-      if (rule.wall(t, i))
-        continue;
       const int32_t u = nav_.mesh.neighbor(t, i);
-      if (nav_.tetStamp[u] == stamp_)
+      if (u >= 0 && nav_.tetStamp[u] == stamp_ && !rule.wall(t, i))
       {
         nav_.tetStamp[u] = sConn;
         queue_.push_back(u);
@@ -162,6 +169,7 @@ void ConflictCavity::keepConnected(Rule& rule, const int32_t* roots, size_t n)
 template<class Rule>
 bool ConflictCavity::shrinkToStar(const double* p, Rule& rule, const int32_t* roots, size_t n, int maxRounds)
 {
+  starShaped_ = false;
   for (int round = 0; round < maxRounds; ++round)
   {
     const int changed = dropInvisible(p, rule);
@@ -170,6 +178,9 @@ bool ConflictCavity::shrinkToStar(const double* p, Rule& rule, const int32_t* ro
       release();
       return false;
     }
+    // Nothing dropped: every boundary face sees p strictly (and keepConnected() below removes nothing,
+    // the cavity being connected already).
+    starShaped_ = !changed;
     // Growth across exactly the non-wall faces is already breadth first from the roots: nothing to redo.
     if (!changed && Rule::kBlocksAreWalls)
       break;
@@ -185,7 +196,7 @@ bool ConflictCavity::forBoundaryFaces(Rule& rule, Emit&& emit) const
 {
   for (int32_t t : tets)
     for (int i = 0; i < 4; ++i)
-      if (boundaryFace(t, i, rule.wall(t, i)) && !emit(t, i))
+      if (boundaryFace(rule, t, i) && !emit(t, i))
         return false;
   return true;
 }

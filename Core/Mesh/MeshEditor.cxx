@@ -312,15 +312,16 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
     cavity_.start(roots.data(), roots.size());
   if (!cavity_.shrinkToStar(p, rule, roots.data(), roots.size(), 1000))
     return false;
-  // Final validation and the cone (v last: its face 3 is the boundary face).
+  // The cone (v last: its face 3 is the boundary face), validated unless the shrink's last pass did.
   cone_.clear();
+  const bool checked = cavity_.starShaped();
   const bool starShaped =
     cavity_.forBoundaryFaces(rule,
                              [&](int32_t t, int i)
                              {
                                int32_t f[3];
                                mesh.faceVertices(t, i, f);
-                               if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
+                               if (!checked && orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
                                  return false;
                                cone_.add({ { f[0], f[1], f[2], v } }, mesh.neighborCode(t, i), 3);
                                return true;

@@ -278,7 +278,8 @@ TetEditor::InsertStatus TetEditor::checkCavityVertices(int32_t v, const double* 
 {
   if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
     vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
-  // Mark the cone's base vertices, then look for an unmarked cavity vertex and the nearest one to p.
+  // Mark the cone's base vertices (1), then look for an unmarked cavity vertex and the nearest one to p
+  // (2: distance taken).
   for (const auto& q : coneTets_.tets)
     for (int k = 0; k < 4; ++k)
       if (q[k] != v)
@@ -290,7 +291,12 @@ TetEditor::InsertStatus TetEditor::checkCavityVertices(int32_t v, const double* 
     const int32_t* w = mesh.vertices(t);
     for (int i = 0; i < 4; ++i)
     {
-      if (vstamp_[w[i]] != 1)
+      int32_t& mark = vstamp_[w[i]];
+      if (mark == 2)
+        continue;
+      if (mark == 1)
+        mark = 2;
+      else
         lost = true;
       const double* q = mesh.point(w[i]);
       const double d2 = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]);
@@ -325,7 +331,7 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   cavity_.grow(rule, SIZE_MAX);
   if (!cavity_.shrinkToStar(p, rule, &start, 1, 64))
     return InsertStatus::NoCavity;
-  if (!buildCone(v, p))
+  if (!buildCone(v, cavity_.starShaped() ? nullptr : p))
   {
     cavity_.release();
     return InsertStatus::NoCavity;

@@ -138,8 +138,8 @@ public:
 
 private:
   // insertPoint()'s steps.
-  // The cone of v over the cavity's boundary faces into coneTets_; with p, false as soon as a face does
-  // not see p strictly (the cavity is not star-shaped).
+  // The cone of v over the cavity's boundary faces into coneTets_; with p (null: checked already), false as soon as a
+  // face does not see p strictly (the cavity is not star-shaped).
   bool buildCone(int32_t v, const double* p);
   // Inserted when every cavity vertex is on the cone and none is closer to p than minDistance (nearest:
   // the distance to the closest); NoCavity or TooClose otherwise.
