@@ -4,6 +4,7 @@
 #include "ConflictCavity.h"
 #include "Delaunay.h"
 #include "Predicates.h"
+#include "RandomDelaunay.h"
 
 #include <gtest/gtest.h>
 
@@ -17,19 +18,6 @@ using namespace volgrid;
 
 namespace
 {
-void randomDelaunay(TetMesh& mesh, int n)
-{
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> xyz;
-  for (int i = 0; i < 3 * n; ++i)
-    xyz.push_back(u(rng));
-  std::vector<int32_t> map;
-  DelaunayOptions opt;
-  opt.keepGhosts = false;
-  ASSERT_TRUE(buildDelaunay(xyz.data(), static_cast<size_t>(n), opt, mesh, map).ok());
-}
-
 // Hull faces stop growth and bound the cavity; `all` makes every tet a conflict (a blob, not a cavity).
 struct TestRule
 {
@@ -69,14 +57,19 @@ int32_t containing(const TetMesh& mesh, const TestRule& rule)
       return t;
   return -1;
 }
+
+class MeshConflictCavity : public ::testing::Test
+{
+protected:
+  void SetUp() override { randomDelaunay(mesh, 400, 11); }
+  TetMesh mesh;
+  MeshNavigator nav{ mesh, MeshNavigator::StaleEntries::Trust };
+  ConflictCavity cavity{ nav };
+};
 } // namespace
 
-TEST(MeshConflictCavity, DelaunayCavityIsTheConflictSet)
+TEST_F(MeshConflictCavity, DelaunayCavityIsTheConflictSet)
 {
-  TetMesh mesh;
-  randomDelaunay(mesh, 400);
-  MeshNavigator nav(mesh, MeshNavigator::StaleEntries::Trust);
-  ConflictCavity cavity(nav);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0.2, 0.8);
   for (int trial = 0; trial < 50; ++trial)
@@ -110,12 +103,8 @@ TEST(MeshConflictCavity, DelaunayCavityIsTheConflictSet)
   }
 }
 
-TEST(MeshConflictCavity, ShrinksABlobToAStarShapedCavity)
+TEST_F(MeshConflictCavity, ShrinksABlobToAStarShapedCavity)
 {
-  TetMesh mesh;
-  randomDelaunay(mesh, 400);
-  MeshNavigator nav(mesh, MeshNavigator::StaleEntries::Trust);
-  ConflictCavity cavity(nav);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.3, 0.7);
   int shrunk = 0, refused = 0;
