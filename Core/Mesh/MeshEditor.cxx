@@ -238,134 +238,59 @@ bool MeshEditor::insertionRoots(int32_t v, int32_t t0, const BoundaryConstraints
   return true;
 }
 
-// Grows cavity_ (the roots, stamped sCav) by Bowyer-Watson up to 4096 tets, never across a hull or
-// constraint face; insphere only sizes the cavity here, shrinkToStar() makes it valid exactly.
-void MeshEditor::growCavity(const double* p, const BoundaryConstraints* bc, const std::vector<int32_t>& roots,
-                            uint32_t sCav)
+namespace
 {
-  std::vector<int32_t>& cav = cavity_;
-  int32_t f[3];
-  // Bowyer-Watson growth; when it would delete a recovered boundary edge (every tet around the edge in
-  // the cavity) the cavity falls back to the tets whose closure contains p (1-4, 2-6 or n-2n split, the
-  // paper's "connect the intersection point to the polyhedron").
-  const size_t maxCavity = 4096;
-  for (size_t k = 0; k < cav.size() && cav.size() < maxCavity; ++k)
-  {
-    const int32_t t = cav[k];
-    for (int i = 0; i < 4; ++i)
-    {
-      const int32_t u = mesh.neighbor(t, i);
-      if (u < 0 || tetStamp[u] == sCav)
-        continue;
-      mesh.faceVertices(t, i, f);
-      if (bc && bc->findSubface(f[0], f[1], f[2]) >= 0)
-        continue;
-      const int32_t* w = mesh.vertices(u);
-      if (predicates::insphere(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), p) > 0)
-      {
-        tetStamp[u] = sCav;
-        cav.push_back(u);
-      }
-    }
-  }
-  if (bc && cav.size() > roots.size())
-  {
-    bool kills = false;
-    std::vector<int32_t> ring, rtets;
-    static const int kE[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
-    for (size_t k = 0; k < cav.size() && !kills; ++k)
-    {
-      const int32_t* w = mesh.vertices(cav[k]);
-      for (auto& e : kE)
-      {
-        if (!bc->isEdge(w[e[0]], w[e[1]]))
-          continue;
-        if (!edgeRing(cav[k], w[e[0]], w[e[1]], ring, rtets))
-          continue;
-        bool all = true;
-        for (int32_t u : rtets)
-          all = all && tetStamp[u] == sCav;
-        if (all)
-        {
-          kills = true;
-          break;
-        }
-      }
-    }
-    if (kills)
-    {
-      for (int32_t t : cav)
-        tetStamp[t] = 0;
-      cav = roots;
-      for (int32_t t : cav)
-        tetStamp[t] = sCav;
-    }
-  }
-}
+// MeshEditor's cavity rule (ConflictCavity.h): growth stops at hull faces and boundary subfaces, the plain
+// exact insphere decides conflicts (a cospherical tet stays out), only hull faces bound the cavity, and the
+// roots (the tets whose closure holds p) must stay.
+struct RecoveryCavityRule
+{
+  const TetMesh& mesh;
+  const BoundaryConstraints* bc;
+  const double* p;
+  const std::vector<int32_t>& roots;
+  static constexpr bool kBlocksAreWalls = false;
 
-// Makes cavity_ (stamped sCav) star-shaped from p: drops the tets with a boundary face p does not see
-// strictly and keeps the part connected to the roots, until nothing changes. False when a root would go.
-bool MeshEditor::shrinkToStar(const double* p, const std::vector<int32_t>& roots, uint32_t sCav)
-{
-  std::vector<int32_t>& cav = cavity_;
-  int32_t f[3];
-  auto isRoot = [&](int32_t t) { return std::find(roots.begin(), roots.end(), t) != roots.end(); };
-  // Make it star-shaped from p: drop tets with a boundary face p does not see strictly.
-  for (int round = 0; round < 1000; ++round)
+  bool wall(int32_t t, int i) const { return mesh.neighbor(t, i) < 0; }
+  bool blocks(int32_t t, int i) const
   {
-    bool changed = false;
-    for (size_t k = 0; k < cav.size(); ++k)
-    {
-      const int32_t t = cav[k];
-      if (tetStamp[t] != sCav)
-        continue;
-      for (int i = 0; i < 4; ++i)
-      {
-        const int32_t u = mesh.neighbor(t, i);
-        if (u >= 0 && tetStamp[u] == sCav)
-          continue;
-        mesh.faceVertices(t, i, f);
-        if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) > 0)
-          continue;
-        if (isRoot(t))
-          return false;
-        tetStamp[t] = 0;
-        changed = true;
-        break;
-      }
-    }
-    // Keep only what is connected to the roots.
-    const uint32_t sConn = newStamp();
-    std::vector<int32_t>& q = queue_;
-    q.clear();
-    for (int32_t r : roots)
-    {
-      q.push_back(r);
-      tetStamp[r] = sConn;
-    }
-    for (size_t k = 0; k < q.size(); ++k)
-      for (int i = 0; i < 4; ++i)
-      {
-        const int32_t u = mesh.neighbor(q[k], i);
-        if (u >= 0 && tetStamp[u] == sCav)
-        {
-          tetStamp[u] = sConn;
-          q.push_back(u);
-        }
-      }
-    const size_t before = cav.size();
-    cav.clear();
-    for (int32_t t : q)
-      cav.push_back(t);
-    // Re-stamp as the cavity stamp for the next round.
-    for (int32_t t : cav)
-      tetStamp[t] = sCav;
-    if (!changed && cav.size() == before)
-      break;
-    if (!changed)
-      break;
+    if (wall(t, i))
+      return true;
+    if (!bc)
+      return false;
+    int32_t f[3];
+    mesh.faceVertices(t, i, f);
+    return bc->findSubface(f[0], f[1], f[2]) >= 0;
   }
-  return true;
+  bool conflicts(int32_t u) const
+  {
+    const int32_t* w = mesh.vertices(u);
+    return predicates::insphere(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), p) > 0;
+  }
+  bool mustKeep(int32_t t) const { return std::find(roots.begin(), roots.end(), t) != roots.end(); }
+};
+} // namespace
+
+// Whether the grown cavity holds every tet around a recovered boundary edge (it would delete the edge).
+bool MeshEditor::cavityKillsBoundaryEdge(const BoundaryConstraints& bc)
+{
+  std::vector<int32_t> ring, rtets;
+  static const int kE[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+  for (int32_t t : cavity_.tets)
+  {
+    const int32_t* w = mesh.vertices(t);
+    for (auto& e : kE)
+    {
+      if (!bc.isEdge(w[e[0]], w[e[1]]) || !edgeRing(t, w[e[0]], w[e[1]], ring, rtets))
+        continue;
+      bool all = true;
+      for (int32_t u : rtets)
+        all = all && cavity_.contains(u);
+      if (all)
+        return true;
+    }
+  }
+  return false;
 }
 
 bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraints* bc)
@@ -377,30 +302,36 @@ bool MeshEditor::insertVertex(int32_t v, int32_t start, const BoundaryConstraint
   std::vector<int32_t>& roots = roots_;
   if (!insertionRoots(v, t0, bc, roots))
     return false;
-  // The cavity: the roots grown by Bowyer-Watson, then made star-shaped from p.
-  const uint32_t sCav = newStamp();
-  std::vector<int32_t>& cav = cavity_;
-  cav = roots;
-  for (int32_t t : cav)
-    tetStamp[t] = sCav;
-  growCavity(p, bc, roots, sCav);
-  if (!shrinkToStar(p, roots, sCav))
+  // The cavity: the roots grown by Bowyer-Watson up to 4096 tets (insphere only sizes it), then made
+  // star-shaped from p exactly. When growth would delete a recovered boundary edge the cavity falls back
+  // to the roots (1-4, 2-6 or n-2n split, the paper's "connect the intersection point to the polyhedron").
+  RecoveryCavityRule rule{ mesh, bc, p, roots };
+  cavity_.start(roots.data(), roots.size());
+  cavity_.grow(rule, 4096);
+  if (bc && cavity_.tets.size() > roots.size() && cavityKillsBoundaryEdge(*bc))
+    cavity_.start(roots.data(), roots.size());
+  if (!cavity_.shrinkToStar(p, rule, roots.data(), roots.size(), 1000))
     return false;
-  int32_t f[3];
-  // Final validation and the cone (v last: its face 3 is the boundary face).
+  // The cone (v last: its face 3 is the boundary face), validated unless the shrink's last pass did.
   cone_.clear();
-  for (int32_t t : cav)
-    for (int i = 0; i < 4; ++i)
-    {
-      const int32_t u = mesh.neighbor(t, i);
-      if (u >= 0 && tetStamp[u] == sCav)
-        continue;
-      mesh.faceVertices(t, i, f);
-      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
-        return false;
-      cone_.add({ { f[0], f[1], f[2], v } }, mesh.neighborCode(t, i), 3);
-    }
-  replaceByCone(cav, cone_, nullptr);
+  const bool checked = cavity_.starShaped();
+  const bool starShaped =
+    cavity_.forBoundaryFaces(rule,
+                             [&](int32_t t, int i)
+                             {
+                               int32_t f[3];
+                               mesh.faceVertices(t, i, f);
+                               if (!checked && orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p) <= 0)
+                                 return false;
+                               cone_.add({ { f[0], f[1], f[2], v } }, mesh.neighborCode(t, i), 3);
+                               return true;
+                             });
+  if (!starShaped)
+  {
+    cavity_.release();
+    return false;
+  }
+  replaceByCone(cavity_.tets, cone_, nullptr);
   ++edits;
   return true;
 }

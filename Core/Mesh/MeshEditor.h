@@ -3,6 +3,7 @@
 #pragma once
 
 #include "BoundaryConstraints.h"
+#include "ConflictCavity.h"
 #include "MeshNavigator.h"
 #include "TetMesh.h"
 #include "VertexKeys.h"
@@ -66,11 +67,11 @@ public:
   std::vector<int32_t> lastRemovedIds;
 
 private:
-  std::vector<int32_t> tmpRing_, cavity_, queue_, roots_;
-  // insertVertex()'s steps.
+  std::vector<int32_t> tmpRing_, roots_;
+  // insertVertex()'s steps and cavity.
   bool insertionRoots(int32_t v, int32_t t0, const BoundaryConstraints* bc, std::vector<int32_t>& roots);
-  void growCavity(const double* p, const BoundaryConstraints* bc, const std::vector<int32_t>& roots, uint32_t sCav);
-  bool shrinkToStar(const double* p, const std::vector<int32_t>& roots, uint32_t sCav);
+  bool cavityKillsBoundaryEdge(const BoundaryConstraints& bc);
+  ConflictCavity cavity_{ *this };
   std::vector<std::array<int32_t, 4>> tmpNew_;
   Cone cone_; // insertVertex()
 };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace volgrid
 {
@@ -208,157 +209,95 @@ int32_t TetEditor::locateRobust(const double* p, int32_t start) const
   return -1;
 }
 
-TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double minDistance, double* nearest,
-                                               std::vector<int32_t>* created)
+namespace
 {
-  const double* p = mesh.point(v);
-  if (start < 0 || mesh.isFree(start))
-    return InsertStatus::NotInside;
-  auto faceSide = [&](int32_t t, int i)
+// TetEditor's cavity rule (ConflictCavity.h): every constrained face (hull or listed) stops growth and
+// bounds the cavity, the SoS insphere decides conflicts (ties broken by vertex id, v the newest), and no
+// tet whose closure holds p may go.
+struct ConstrainedCavityRule
+{
+  const TetEditor& editor;
+  const double* p;
+  int32_t v;
+  static constexpr bool kBlocksAreWalls = true;
+
+  bool wall(int32_t t, int i) const { return editor.isConstrainedFace(t, i); }
+  bool blocks(int32_t t, int i) const { return wall(t, i); }
+  bool conflicts(int32_t u) const
   {
+    const TetMesh& mesh = editor.mesh;
+    const int32_t* w = mesh.vertices(u);
+    return predicates::insphereSoSInline(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), p,
+                                         w[0], w[1], w[2], w[3], v) > 0;
+  }
+  int faceSide(int32_t t, int i) const
+  {
+    const TetMesh& mesh = editor.mesh;
     int32_t f[3];
     mesh.faceVertices(t, i, f);
     return predicates::orient3dInline(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), p);
-  };
-  auto containsP = [&](int32_t t)
+  }
+  bool mustKeep(int32_t t) const
   {
     for (int i = 0; i < 4; ++i)
       if (faceSide(t, i) < 0)
         return false;
     return true;
-  };
-  if (!containsP(start))
-    return InsertStatus::NotInside;
-  // p on a constrained face of its tet: not an interior point.
-  for (int i = 0; i < 4; ++i)
-    if (faceSide(start, i) == 0 && isConstrainedFace(start, i))
-      return InsertStatus::NotInside;
+  }
+};
 
-  // 1. Conflict region (exact SoS insphere), not crossing constrained faces.
-  uint32_t s = newStamp();
-  cavity_.clear();
-  cavity_.push_back(start);
-  tetStamp[start] = s;
-  const uint32_t sOut = newStamp(); // tets tested and found not in conflict
-  for (size_t k = 0; k < cavity_.size(); ++k)
-  {
-    const int32_t t = cavity_[k];
-    for (int i = 0; i < 4; ++i)
-    {
-      if (isConstrainedFace(t, i))
-        continue;
-      const int32_t u = mesh.neighbor(t, i);
-      if (tetStamp[u] == s || tetStamp[u] == sOut)
-        continue;
-      const int32_t* w = mesh.vertices(u);
-      const int c = predicates::insphereSoSInline(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]),
-                                                  mesh.point(w[3]), p, w[0], w[1], w[2], w[3], v);
-      if (c > 0)
-      {
-        tetStamp[u] = s;
-        cavity_.push_back(u);
-      }
-      else
-        tetStamp[u] = sOut;
-    }
-  }
-  // 2. Shrink until star-shaped from p: a cavity tet with a boundary face that does not see p strictly is
-  // dropped (never the tets whose closure contains p), then the part connected to `start` is kept.
-  for (int round = 0; round < 64; ++round)
-  {
-    bool changed = false;
-    for (int32_t t : cavity_)
-    {
-      if (tetStamp[t] != s)
-        continue;
-      for (int i = 0; i < 4; ++i)
-      {
-        const int32_t u = mesh.neighbor(t, i);
-        const bool boundary = isConstrainedFace(t, i) || tetStamp[u] != s;
-        if (!boundary)
-          continue;
-        if (faceSide(t, i) <= 0)
-        {
-          if (containsP(t))
-          {
-            // p lies on this face and the tet beyond cannot join: reject.
-            for (int32_t c : cavity_)
-              if (tetStamp[c] == s)
-                tetStamp[c] = 0;
-            return InsertStatus::NoCavity;
-          }
-          tetStamp[t] = 0;
-          changed = true;
-          break;
-        }
-      }
-    }
-    if (!changed)
-      break;
-    // Connected part containing start.
-    const uint32_t s2 = newStamp();
-    queue_.clear();
-    queue_.push_back(start);
-    tetStamp[start] = s2;
-    for (size_t k = 0; k < queue_.size(); ++k)
-    {
-      const int32_t t = queue_[k];
-      for (int i = 0; i < 4; ++i)
-      {
-        if (isConstrainedFace(t, i))
-          continue;
-        const int32_t u = mesh.neighbor(t, i);
-        if (tetStamp[u] == s)
-        {
-          tetStamp[u] = s2;
-          queue_.push_back(u);
-        }
-      }
-    }
-    for (int32_t t : cavity_)
-      if (tetStamp[t] == s)
-        tetStamp[t] = 0;
-    cavity_.swap(queue_);
-    s = s2; // the cavity marker from now on
-  }
-  // 3. Boundary faces, vertex preservation and the spacing test.
+// Whether p (the rule's point) lies in the closure of `start` but on none of its constrained faces.
+bool interiorStart(const ConstrainedCavityRule& rule, int32_t start)
+{
+  if (!rule.mustKeep(start))
+    return false;
+  for (int i = 0; i < 4; ++i)
+    if (rule.faceSide(start, i) == 0 && rule.editor.isConstrainedFace(start, i))
+      return false;
+  return true;
+}
+} // namespace
+
+bool TetEditor::buildCone(int32_t v, const double* p)
+{
+  ConstrainedCavityRule rule{ *this, p, v };
   coneTets_.clear();
+  return cavity_.forBoundaryFaces(rule,
+                                  [&](int32_t t, int i)
+                                  {
+                                    if (p && rule.faceSide(t, i) <= 0)
+                                      return false;
+                                    const int32_t* w = mesh.vertices(t);
+                                    std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+                                    q[i] = v;
+                                    coneTets_.add(q, mesh.neighborCode(t, i), i);
+                                    return true;
+                                  });
+}
+
+TetEditor::InsertStatus TetEditor::checkCavityVertices(int32_t v, const double* p, double minDistance, double* nearest)
+{
   if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
     vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
-  double best = 1e300;
-  for (int32_t t : cavity_)
-  {
-    const int32_t* w = mesh.vertices(t);
-    for (int i = 0; i < 4; ++i)
-    {
-      const int32_t u = mesh.neighbor(t, i);
-      const bool boundary = isConstrainedFace(t, i) || tetStamp[u] != s;
-      if (!boundary)
-        continue;
-      if (faceSide(t, i) <= 0)
-      {
-        for (int32_t c : cavity_)
-          tetStamp[c] = 0;
-        return InsertStatus::NoCavity;
-      }
-      std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
-      q[i] = v;
-      coneTets_.add(q, mesh.neighborCode(t, i), i);
-    }
-  }
-  // Vertices of the cavity must all be on its boundary (stamp them with a round marker).
-  const int32_t mark = static_cast<int32_t>(s & 0x7fffffff) | 1;
+  // Mark the cone's base vertices (1), then look for an unmarked cavity vertex and the nearest one to p
+  // (2: distance taken).
   for (const auto& q : coneTets_.tets)
     for (int k = 0; k < 4; ++k)
       if (q[k] != v)
-        vstamp_[q[k]] = mark;
+        vstamp_[q[k]] = 1;
   bool lost = false;
-  for (int32_t t : cavity_)
+  double best = 1e300;
+  for (int32_t t : cavity_.tets)
   {
     const int32_t* w = mesh.vertices(t);
     for (int i = 0; i < 4; ++i)
     {
-      if (vstamp_[w[i]] != mark)
+      int32_t& mark = vstamp_[w[i]];
+      if (mark == 2)
+        continue;
+      if (mark == 1)
+        mark = 2;
+      else
         lost = true;
       const double* q = mesh.point(w[i]);
       const double d2 = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]);
@@ -373,93 +312,146 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   if (nearest)
     *nearest = best;
   if (lost)
+    return InsertStatus::NoCavity;
+  if (best < minDistance || best == 0)
+    return InsertStatus::TooClose;
+  return InsertStatus::Inserted;
+}
+
+TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double minDistance, double* nearest,
+                                               std::vector<int32_t>* created)
+{
+  const double* p = mesh.point(v);
+  if (start < 0 || mesh.isFree(start))
+    return InsertStatus::NotInside;
+  ConstrainedCavityRule rule{ *this, p, v };
+  if (!interiorStart(rule, start))
+    return InsertStatus::NotInside;
+  // Conflict region not crossing constrained faces, shrunk until strictly star-shaped from p.
+  cavity_.start(&start, 1);
+  cavity_.grow(rule, SIZE_MAX);
+  if (!cavity_.shrinkToStar(p, rule, &start, 1, 64))
+    return InsertStatus::NoCavity;
+  if (!buildCone(v, cavity_.starShaped() ? nullptr : p))
   {
-    for (int32_t c : cavity_)
-      tetStamp[c] = 0;
+    cavity_.release();
     return InsertStatus::NoCavity;
   }
-  if (best < minDistance || best == 0)
+  const InsertStatus status = checkCavityVertices(v, p, minDistance, nearest);
+  if (status != InsertStatus::Inserted)
   {
-    for (int32_t c : cavity_)
-      tetStamp[c] = 0;
-    return InsertStatus::TooClose;
+    cavity_.release();
+    return status;
   }
-  replaceByCone(cavity_, coneTets_, created);
+  replaceByCone(cavity_.tets, coneTets_, created);
   ++replacements;
   return InsertStatus::Inserted;
 }
 
-double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,
-                                   std::vector<int32_t>* created, int maxCavity, double mustBeat)
+bool TetEditor::seedQualityCavity(int32_t start, int32_t mustReplace)
 {
-  if (start < 0 || mesh.isFree(start))
-    return -3;
-  if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
-    vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
-  // Seed: start, or the shortest path of tets (across unconstrained faces, at most 4 steps) from start to
-  // mustReplace.
-  cavity_.assign(1, start);
-  if (mustReplace >= 0 && mustReplace != start)
+  if (mustReplace < 0 || mustReplace == start)
   {
-    const uint32_t seen = newStamp();
-    bfsTets_.assign(1, { start, -1 });
-    tetStamp[start] = seen;
-    int32_t found = -1;
-    for (size_t k = 0, levelEnd = 1, depth = 0; k < bfsTets_.size() && found < 0; ++k)
-    {
-      if (k == levelEnd)
-      {
-        levelEnd = bfsTets_.size();
-        if (++depth == 4)
-          break;
-      }
-      const int32_t t = bfsTets_[k].first;
-      for (int i = 0; i < 4 && found < 0; ++i)
-      {
-        if (isConstrainedFace(t, i))
-          continue;
-        const int32_t u = mesh.neighbor(t, i);
-        if (tetStamp[u] == seen)
-          continue;
-        tetStamp[u] = seen;
-        bfsTets_.push_back({ u, static_cast<int32_t>(k) });
-        if (u == mustReplace)
-          found = static_cast<int32_t>(bfsTets_.size() - 1);
-      }
-    }
-    if (found < 0)
-      return -3;
-    cavity_.clear();
-    for (int32_t k = found; k >= 0; k = bfsTets_[k].second)
-      cavity_.push_back(bfsTets_[k].first);
+    cavity_.start(&start, 1);
+    return true;
   }
-  const uint32_t s = newStamp();
-  for (int32_t t : cavity_)
-    tetStamp[t] = s;
-  // The cone over the cavity's boundary faces, kept up to date as the cavity grows.
-  cone_.clear();
-  auto addFaces = [&](int32_t t)
+  // Breadth first across unconstrained faces, at most 4 levels, remembering each tet's parent.
+  const uint32_t seen = newStamp();
+  bfsTets_.assign(1, { start, -1 });
+  tetStamp[start] = seen;
+  int32_t found = -1;
+  for (size_t k = 0, levelEnd = 1, depth = 0; k < bfsTets_.size() && found < 0; ++k)
+  {
+    if (k == levelEnd)
+    {
+      levelEnd = bfsTets_.size();
+      if (++depth == 4)
+        break;
+    }
+    const int32_t t = bfsTets_[k].first;
+    for (int i = 0; i < 4 && found < 0; ++i)
+    {
+      if (isConstrainedFace(t, i))
+        continue;
+      const int32_t u = mesh.neighbor(t, i);
+      if (tetStamp[u] == seen)
+        continue;
+      tetStamp[u] = seen;
+      bfsTets_.push_back({ u, static_cast<int32_t>(k) });
+      if (u == mustReplace)
+        found = static_cast<int32_t>(bfsTets_.size() - 1);
+    }
+  }
+  if (found < 0)
+    return false;
+  seed_.clear();
+  for (int32_t k = found; k >= 0; k = bfsTets_[k].second)
+    seed_.push_back(bfsTets_[k].first);
+  cavity_.start(seed_.data(), seed_.size());
+  return true;
+}
+
+void TetEditor::addConeFaces(int32_t v, int32_t t)
+{
+  const int32_t* w = mesh.vertices(t);
+  for (int i = 0; i < 4; ++i)
+  {
+    const bool constrained = isConstrainedFace(t, i);
+    if (!constrained && cavity_.contains(mesh.neighbor(t, i)))
+      continue;
+    std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
+    q[i] = v;
+    double qc = -1; // not strictly positive: the cavity is not star-shaped from v
+    if (predicates::orient3dInline(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3])) > 0)
+      qc = tetSineQuality(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3]));
+    cone_.push_back({ t, i, constrained, qc });
+  }
+}
+
+bool TetEditor::coneKeepsCavityVertices()
+{
+  for (const ConeFace& f : cone_)
+  {
+    const int32_t* w = mesh.vertices(f.tet);
+    for (int m = 0; m < 4; ++m)
+      if (m != f.face)
+        vstamp_[w[m]] = 1;
+  }
+  bool kept = true;
+  for (int32_t t : cavity_.tets)
   {
     const int32_t* w = mesh.vertices(t);
-    for (int i = 0; i < 4; ++i)
-    {
-      const bool constrained = isConstrainedFace(t, i);
-      if (!constrained && tetStamp[mesh.neighbor(t, i)] == s)
-        continue;
-      std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
-      q[i] = v;
-      double qc = -1; // not strictly positive: the cavity is not star-shaped from v
-      if (predicates::orient3dInline(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3])) > 0)
-        qc = tetSineQuality(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3]));
-      cone_.push_back({ t, i, constrained, qc });
-    }
-  };
-  for (int32_t t : cavity_)
-    addFaces(t);
+    for (int m = 0; m < 4; ++m)
+      kept &= vstamp_[w[m]] == 1;
+  }
+  for (int32_t t : cavity_.tets)
+  {
+    const int32_t* w = mesh.vertices(t);
+    for (int m = 0; m < 4; ++m)
+      vstamp_[w[m]] = 0;
+  }
+  return kept;
+}
+
+void TetEditor::growCavity(int32_t u)
+{
+  cavity_.add(u);
+  size_t kept = 0;
+  for (size_t k = 0; k < cone_.size(); ++k)
+    if (cone_[k].constrained || !cavity_.contains(mesh.neighbor(cone_[k].tet, cone_[k].face)))
+      cone_[kept++] = cone_[k];
+  cone_.resize(kept);
+}
+
+double TetEditor::growByQuality(int32_t v, int maxCavity, double mustBeat)
+{
+  cone_.clear();
+  for (int32_t t : cavity_.tets)
+    addConeFaces(v, t);
   double bestQ = -3;
   for (int step = 0; step < maxCavity; ++step)
   {
-    // Its worst tet, and whether it is valid (star-shaped, no cavity vertex swallowed).
+    // Its worst tet, whether it is star-shaped, and the unconstrained face with the worst tet.
     double qMin = 2, qGrow = 3, qConstrained = 2;
     int growK = -1;
     bool valid = true;
@@ -476,51 +468,32 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
         growK = static_cast<int>(k);
       }
     }
-    const double bar = std::max(bestQ, mustBeat);
-    if (valid && qMin > bar)
+    if (valid && qMin > std::max(bestQ, mustBeat) && coneKeepsCavityVertices())
     {
-      // Every cavity vertex must be on the cone (else it would be swallowed).
-      for (const ConeFace& f : cone_)
-      {
-        const int32_t* w = mesh.vertices(f.tet);
-        for (int m = 0; m < 4; ++m)
-          if (m != f.face)
-            vstamp_[w[m]] = 1;
-      }
-      for (int32_t t : cavity_)
-      {
-        const int32_t* w = mesh.vertices(t);
-        for (int m = 0; m < 4; ++m)
-          valid &= vstamp_[w[m]] == 1;
-      }
-      for (int32_t t : cavity_)
-      {
-        const int32_t* w = mesh.vertices(t);
-        for (int m = 0; m < 4; ++m)
-          vstamp_[w[m]] = 0;
-      }
-      if (valid)
-      {
-        bestQ = qMin;
-        bestCavity_ = cavity_;
-      }
+      bestQ = qMin;
+      bestCavity_ = cavity_.tets;
     }
     // Constrained faces stay on the boundary of every larger cavity: no growth can beat their worst tet.
     if (growK < 0 || qConstrained <= std::max(bestQ, mustBeat))
       break;
-    // Grow across the worst unconstrained face.
     const int32_t u = mesh.neighbor(cone_[growK].tet, cone_[growK].face);
-    tetStamp[u] = s;
-    cavity_.push_back(u);
-    size_t kept = 0;
-    for (size_t k = 0; k < cone_.size(); ++k)
-      if (cone_[k].constrained || tetStamp[mesh.neighbor(cone_[k].tet, cone_[k].face)] != s)
-        cone_[kept++] = cone_[k];
-    cone_.resize(kept);
-    addFaces(u);
+    growCavity(u);
+    addConeFaces(v, u);
   }
-  for (int32_t t : cavity_)
-    tetStamp[t] = 0;
+  cavity_.release();
+  return bestQ;
+}
+
+double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,
+                                   std::vector<int32_t>* created, int maxCavity, double mustBeat)
+{
+  if (start < 0 || mesh.isFree(start))
+    return -3;
+  if (vstamp_.size() < static_cast<size_t>(mesh.numVertices()))
+    vstamp_.resize(static_cast<size_t>(mesh.numVertices()) + 256, 0);
+  if (!seedQualityCavity(start, mustReplace))
+    return -3;
+  const double bestQ = growByQuality(v, maxCavity, mustBeat);
   if (bestQ == -3)
     return -3;
   double qOld = 2;
@@ -537,25 +510,9 @@ double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace
     *replacedQuality = qOld;
   if (commit)
   {
-    // The cone's tets and their outer links, as insertPoint() builds them.
-    const uint32_t c = newStamp();
-    cavity_ = bestCavity_;
-    for (int32_t t : cavity_)
-      tetStamp[t] = c;
-    coneTets_.clear();
-    for (int32_t t : cavity_)
-    {
-      const int32_t* w = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
-      {
-        if (!isConstrainedFace(t, i) && tetStamp[mesh.neighbor(t, i)] == c)
-          continue;
-        std::array<int32_t, 4> q = { w[0], w[1], w[2], w[3] };
-        q[i] = v;
-        coneTets_.add(q, mesh.neighborCode(t, i), i);
-      }
-    }
-    replaceByCone(cavity_, coneTets_, created);
+    cavity_.start(bestCavity_.data(), bestCavity_.size());
+    buildCone(v, nullptr);
+    replaceByCone(cavity_.tets, coneTets_, created);
     ++replacements;
   }
   return bestQ;

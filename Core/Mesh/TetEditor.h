@@ -18,12 +18,13 @@
 //   rebuilt from the old tets' outer faces. It validates that the new tets' faces match the old outer
 //   faces exactly before touching the mesh. New tets inherit the kUser flag bits and the label (optional
 //   per-tet-slot vector) of the first old tet, so region tags survive.
-//   insertPoint(): Bowyer-Watson insertion whose cavity grows by the exact SoS insphere test from the tet
-//   containing the point, never crosses a constrained face, and is shrunk until star-shaped from the point
-//   (every cavity boundary face sees the point strictly positively, exact orient3d), so the new tets are
-//   all positive whether or not the mesh is Delaunay (e.g. after boundary recovery flips).
+//   insertPoint(): Bowyer-Watson insertion (ConflictCavity.h, shared with MeshEditor) whose cavity grows by the exact
+//   SoS insphere test from the tet containing the point, never crosses a constrained face, and is shrunk until
+//   star-shaped from the point (every cavity boundary face sees the point strictly positively, exact orient3d), so the
+//   new tets are all positive whether or not the mesh is Delaunay (e.g. after boundary recovery flips).
 #pragma once
 
+#include "ConflictCavity.h"
 #include "EditJournal.h"
 #include "MeshNavigator.h"
 #include "TetMesh.h"
@@ -136,8 +137,30 @@ public:
   uint64_t replacements = 0;
 
 private:
-  // scratch
-  std::vector<int32_t> cavity_, queue_, bfaces_, vstamp_, bestCavity_;
+  // insertPoint()'s steps.
+  // The cone of v over the cavity's boundary faces into coneTets_; with p (null: checked already), false as soon as a
+  // face does not see p strictly (the cavity is not star-shaped).
+  bool buildCone(int32_t v, const double* p);
+  // Inserted when every cavity vertex is on the cone and none is closer to p than minDistance (nearest:
+  // the distance to the closest); NoCavity or TooClose otherwise.
+  InsertStatus checkCavityVertices(int32_t v, const double* p, double minDistance, double* nearest);
+  // qualityInsertion()'s steps.
+  // The first cavity: start, or the shortest path of at most 5 tets from start to mustReplace (false when
+  // there is none).
+  bool seedQualityCavity(int32_t start, int32_t mustReplace);
+  // The faces of cavity tet t on the cavity's boundary, with the quality of v's tet over each, into cone_.
+  void addConeFaces(int32_t v, int32_t t);
+  // Whether every vertex of the cavity is on cone_ (else the cone would swallow it).
+  bool coneKeepsCavityVertices();
+  // Adds tet u to the cavity and drops the cone faces it covers.
+  void growCavity(int32_t u);
+  // Grows the seed one tet at a time across the unconstrained face with the worst new tet; keeps the
+  // valid cavity with the best worst new tet above mustBeat in bestCavity_. Returns its worst quality, -3
+  // when none.
+  double growByQuality(int32_t v, int maxCavity, double mustBeat);
+
+  ConflictCavity cavity_{ *this };
+  std::vector<int32_t> seed_, vstamp_, bestCavity_;
   std::vector<std::pair<int32_t, int32_t>> bfsTets_; // (tet, index of its parent)
   struct ConeFace
   {

@@ -77,30 +77,35 @@ std::string BoundaryCheckReport::summary() const
   return os.str();
 }
 
-BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, int32_t numInputPoints,
-                                            const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
-                                            double expected)
+namespace
 {
-  BoundaryCheckReport r;
+using InputTriangles = std::unordered_map<TriKey, int32_t, TriKeyHash>;
+
+// Face code & 3 of tet code >> 2, as vertex ids.
+void faceOf(const std::vector<int32_t>& tets, uint32_t code, int32_t f[3])
+{
+  const int32_t* v = tets.data() + 4 * static_cast<int64_t>(code >> 2);
+  const int* fv = TetMesh::kFaceVertex[code & 3];
+  f[0] = v[fv[0]];
+  f[1] = v[fv[1]];
+  f[2] = v[fv[2]];
+}
+
+size_t smallestVertex(const int32_t f[3])
+{
+  return static_cast<size_t>(std::min({ f[0], f[1], f[2] }));
+}
+
+// The tet loop: ids and orientation (problems noted as 8 * tet in events), the volume, valid[t] = 1 for
+// tets with valid ids, and the faces of those counted per smallest vertex v in start[v + 1].
+void scanTets(const std::vector<double>& points, const std::vector<int32_t>& tets, BoundaryCheckReport& r,
+              std::vector<uint8_t>& valid, std::vector<int64_t>& start, std::vector<int64_t>& events)
+{
   const int64_t np = static_cast<int64_t>(points.size() / 3);
   const int64_t nt = static_cast<int64_t>(tets.size() / 4);
-  r.tets = nt;
-  // Tets with valid ids: orientation and volume; their faces are then matched by a counting sort on the
-  // smallest vertex (4 bytes per face and 8 per vertex; a hash table of faces took about 150 bytes per tet,
-  // the CLI's peak at a million tets). Face codes are 4 * tet + face in 32 bits (TetMesh's own limit is
-  // lower: 2^29 tets).
-  std::vector<uint8_t> valid(static_cast<size_t>(nt), 0);
-  std::vector<int64_t> events; // 8 * tet + slot (0 bad or inverted, 1 + face): notes in tet order
+  valid.assign(static_cast<size_t>(nt), 0);
+  start.assign(static_cast<size_t>(np) + 1, 0);
   Sum vol;
-  std::vector<int64_t> start(static_cast<size_t>(np) + 1, 0);
-  auto faceOf = [&](uint32_t code, int32_t f[3])
-  {
-    const int32_t* v = tets.data() + 4 * static_cast<int64_t>(code >> 2);
-    const int* fv = TetMesh::kFaceVertex[code & 3];
-    f[0] = v[fv[0]];
-    f[1] = v[fv[1]];
-    f[2] = v[fv[2]];
-  };
   for (int64_t t = 0; t < nt; ++t)
   {
     const int32_t* v = tets.data() + 4 * t;
@@ -130,46 +135,55 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
     for (int i = 0; i < 4; ++i)
     {
       int32_t f[3];
-      faceOf(static_cast<uint32_t>(4 * t + i), f);
-      ++start[static_cast<size_t>(std::min({ f[0], f[1], f[2] })) + 1];
+      faceOf(tets, static_cast<uint32_t>(4 * t + i), f);
+      ++start[smallestVertex(f) + 1];
     }
   }
   r.tetVolume = vol.value();
-  r.enclosedVolume = expected;
-  r.relativeVolumeError = std::fabs(r.tetVolume - expected) / std::max(std::fabs(expected), 1e-300);
-  for (int64_t v = 0; v < np; ++v)
-    start[static_cast<size_t>(v) + 1] += start[static_cast<size_t>(v)];
-  std::vector<uint32_t> codes(static_cast<size_t>(start[static_cast<size_t>(np)]));
-  {
-    std::vector<int64_t> next(start.begin(), start.end() - 1);
-    for (int64_t t = 0; t < nt; ++t)
-      if (valid[static_cast<size_t>(t)])
-        for (int i = 0; i < 4; ++i)
-        {
-          int32_t f[3];
-          faceOf(static_cast<uint32_t>(4 * t + i), f);
-          codes[static_cast<size_t>(next[static_cast<size_t>(std::min({ f[0], f[1], f[2] }))]++)] =
-            static_cast<uint32_t>(4 * t + i);
-        }
-  }
-  std::vector<uint8_t>().swap(valid);
-  // Input triangles by key; per triangle, how many tets use it as a face (0 = missing).
-  std::unordered_map<TriKey, int32_t, TriKeyHash> input;
-  const int64_t ntri = static_cast<int64_t>(triangles.size() / 3);
-  input.reserve(static_cast<size_t>(ntri) * 2 + 16);
-  for (int64_t t = 0; t < ntri; ++t)
-    input.emplace(TriKey(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]), static_cast<int32_t>(t));
-  std::vector<int32_t> uses(static_cast<size_t>(ntri), 0);
-  std::vector<uint8_t> onBoundary(static_cast<size_t>(np), 0);
+}
+
+// The face codes (4 * tet + face) of the valid tets bucketed by smallest vertex, in tet order within a
+// bucket; start (the counts) becomes the buckets' offsets.
+std::vector<uint32_t> bucketFaces(const std::vector<int32_t>& tets, const std::vector<uint8_t>& valid,
+                                  std::vector<int64_t>& start)
+{
+  const size_t np = start.size() - 1;
+  for (size_t v = 0; v < np; ++v)
+    start[v + 1] += start[v];
+  std::vector<uint32_t> codes(static_cast<size_t>(start[np]));
+  std::vector<int64_t> next(start.begin(), start.end() - 1);
+  for (size_t t = 0; t < valid.size(); ++t)
+    if (valid[t])
+      for (int i = 0; i < 4; ++i)
+      {
+        int32_t f[3];
+        faceOf(tets, static_cast<uint32_t>(4 * t + i), f);
+        codes[static_cast<size_t>(next[smallestVertex(f)]++)] = static_cast<uint32_t>(4 * t + i);
+      }
+  return codes;
+}
+
+// What matching the faces finds besides the report's counts.
+struct FaceMatch
+{
+  std::vector<int32_t> uses;          // per input triangle: tets having it as a face (0 missing, at most 3)
+  std::vector<uint8_t> onBoundary;    // per point: on a face of a single tet
+  std::vector<int64_t> boundaryNotes; // tets with a boundary face that is not an input triangle
+};
+
+// Groups the faces of each bucket (equal faces together, in tet order) and counts badly oriented and
+// over-shared faces (noted in events), boundary faces and the input triangles' uses.
+void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& start, const std::vector<uint32_t>& codes,
+                const InputTriangles& input, BoundaryCheckReport& r, std::vector<int64_t>& events, FaceMatch& m)
+{
   std::vector<std::pair<std::array<int32_t, 2>, uint32_t>> group; // (other two vertices sorted, code)
-  std::vector<int64_t> boundaryNotes;
-  for (int64_t v = 0; v < np; ++v)
+  for (size_t v = 0; v + 1 < start.size(); ++v)
   {
     group.clear();
-    for (int64_t k = start[static_cast<size_t>(v)]; k < start[static_cast<size_t>(v) + 1]; ++k)
+    for (int64_t k = start[v]; k < start[v + 1]; ++k)
     {
       int32_t f[3];
-      faceOf(codes[static_cast<size_t>(k)], f);
+      faceOf(tets, codes[static_cast<size_t>(k)], f);
       std::sort(f, f + 3);
       group.push_back({ { f[1], f[2] }, codes[static_cast<size_t>(k)] });
     }
@@ -183,8 +197,8 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
       if (count >= 2)
       {
         int32_t f0[3], f1[3];
-        faceOf(group[k].second, f0);
-        faceOf(group[k + 1].second, f1);
+        faceOf(tets, group[k].second, f0);
+        faceOf(tets, group[k + 1].second, f1);
         if (sameCyclic(f1, f0))
         {
           ++r.sameOrientationFaces;
@@ -196,45 +210,76 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
         ++r.overSharedFaces;
         events.push_back(8 * static_cast<int64_t>(group[k + 2].second >> 2) + 1 + (group[k + 2].second & 3));
       }
-      const TriKey key(static_cast<int32_t>(v), group[k].first[0], group[k].first[1]);
-      const auto it = input.find(key);
+      const auto it = input.find(TriKey(static_cast<int32_t>(v), group[k].first[0], group[k].first[1]));
       if (it != input.end())
-        uses[static_cast<size_t>(it->second)] = static_cast<int32_t>(std::min<int64_t>(count, 3));
+        m.uses[static_cast<size_t>(it->second)] = static_cast<int32_t>(std::min<int64_t>(count, 3));
       if (count == 1)
       {
         ++r.boundaryFaces;
         if (it == input.end())
         {
           ++r.boundaryFacesNotInput;
-          boundaryNotes.push_back(group[k].second >> 2);
+          m.boundaryNotes.push_back(group[k].second >> 2);
         }
-        onBoundary[static_cast<size_t>(v)] = 1;
-        onBoundary[static_cast<size_t>(group[k].first[0])] = 1;
-        onBoundary[static_cast<size_t>(group[k].first[1])] = 1;
+        m.onBoundary[v] = 1;
+        m.onBoundary[static_cast<size_t>(group[k].first[0])] = 1;
+        m.onBoundary[static_cast<size_t>(group[k].first[1])] = 1;
       }
       k = e;
     }
   }
+}
+} // namespace
+
+BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, int32_t numInputPoints,
+                                            const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
+                                            double expected)
+{
+  BoundaryCheckReport r;
+  const int64_t np = static_cast<int64_t>(points.size() / 3);
+  r.tets = static_cast<int64_t>(tets.size() / 4);
+  // Tets with valid ids: orientation and volume; their faces are then matched by a counting sort on the
+  // smallest vertex (4 bytes per face and 8 per vertex; a hash table of faces took about 150 bytes per tet,
+  // the CLI's peak at a million tets). Face codes are 4 * tet + face in 32 bits (TetMesh's own limit is
+  // lower: 2^29 tets).
+  std::vector<uint8_t> valid;
+  std::vector<int64_t> events; // 8 * tet + slot (0 bad or inverted, 1 + face): notes in tet order
+  std::vector<int64_t> start;
+  scanTets(points, tets, r, valid, start, events);
+  r.enclosedVolume = expected;
+  r.relativeVolumeError = std::fabs(r.tetVolume - expected) / std::max(std::fabs(expected), 1e-300);
+  const std::vector<uint32_t> codes = bucketFaces(tets, valid, start);
+  std::vector<uint8_t>().swap(valid);
+  // Input triangles by key; per triangle, how many tets use it as a face (0 = missing).
+  InputTriangles input;
+  const int64_t ntri = static_cast<int64_t>(triangles.size() / 3);
+  input.reserve(static_cast<size_t>(ntri) * 2 + 16);
+  for (int64_t t = 0; t < ntri; ++t)
+    input.emplace(TriKey(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]), static_cast<int32_t>(t));
+  FaceMatch m;
+  m.uses.assign(static_cast<size_t>(ntri), 0);
+  m.onBoundary.assign(static_cast<size_t>(np), 0);
+  matchFaces(tets, start, codes, input, r, events, m);
   // The first problems: the tet loop's (in tet order), then the boundary's, then the input's.
   std::sort(events.begin(), events.end());
   for (size_t k = 0; k < events.size() && r.firstProblems.size() < 8; ++k)
     r.firstProblems.push_back(events[k] / 8);
-  for (size_t k = 0; k < boundaryNotes.size() && r.firstProblems.size() < 8; ++k)
-    r.firstProblems.push_back(boundaryNotes[k]);
+  for (size_t k = 0; k < m.boundaryNotes.size() && r.firstProblems.size() < 8; ++k)
+    r.firstProblems.push_back(m.boundaryNotes[k]);
   for (int64_t v = numInputPoints; v < np; ++v)
-    r.boundaryPointsAdded += onBoundary[static_cast<size_t>(v)];
+    r.boundaryPointsAdded += m.onBoundary[static_cast<size_t>(v)];
   for (int64_t t = 0; t < ntri; ++t)
   {
     const auto it = input.find(TriKey(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]));
     if (it->second != t)
       continue; // a repeated input triangle: counted once
-    if (uses[static_cast<size_t>(t)] == 0)
+    if (m.uses[static_cast<size_t>(t)] == 0)
     {
       ++r.inputTrianglesNotFaces;
       if (r.firstProblems.size() < 8)
         r.firstProblems.push_back(t);
     }
-    else if (uses[static_cast<size_t>(t)] == 2)
+    else if (m.uses[static_cast<size_t>(t)] == 2)
       ++r.inputTrianglesInterior;
   }
   return r;

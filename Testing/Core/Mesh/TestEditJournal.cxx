@@ -5,6 +5,7 @@
 #include "EditJournal.h"
 #include "MeshChecker.h"
 #include "MeshOptimization.h"
+#include "RandomDelaunay.h"
 #include "TetEditor.h"
 
 #include <gtest/gtest.h>
@@ -16,19 +17,6 @@ using namespace volgrid;
 
 namespace
 {
-void randomDelaunay(TetMesh& mesh, int n)
-{
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> xyz;
-  for (int i = 0; i < 3 * n; ++i)
-    xyz.push_back(u(rng));
-  std::vector<int32_t> map;
-  DelaunayOptions opt;
-  opt.keepGhosts = false;
-  ASSERT_TRUE(buildDelaunay(xyz.data(), static_cast<size_t>(n), opt, mesh, map).ok());
-}
-
 void expectSame(const TetMesh& a, const TetMesh& b)
 {
   EXPECT_EQ(a.points, b.points);
