@@ -79,23 +79,14 @@ void markForcedTets(MesherResult& result)
   }
 }
 
-} // namespace
-
-Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, MesherResult& result, Progress* progress)
+// Step 1: the input's ids checked and its coincident points merged into `surf`; with options.checkSurface
+// the surface checks (closed, manifold, not self-intersecting, nesting) decide whether it can be meshed.
+// Fills result.inputToOutputPoint, result.triangleShell, the statistics of the input, and shellDepth.
+Status checkAndMerge(const SurfaceMesh& input, const MesherOptions& options, Progress* pr, SurfaceMesh& surf,
+                     MesherResult& result, std::vector<int>& shellDepth)
 {
-  const auto tStart = std::chrono::steady_clock::now();
-  result = MesherResult();
-  SilentProgress silent;
-  Progress* pr = progress ? progress : &silent;
   MesherStatistics& st = result.stats;
-  if (input.numberOfTriangles() == 0)
-    return Status::failure(ErrorKind::EmptyInput, "The surface has no triangles.");
-  if (options.maxSteinerPoints < -1)
-    return Status::failure(ErrorKind::InvalidOption, "maxSteinerPoints must be -1 (automatic) or >= 0.");
-
-  // 1. Merge and validate.
-  auto t0 = std::chrono::steady_clock::now();
-  SurfaceMesh surf = input;
+  surf = input;
   for (int32_t t = 0; t < surf.numberOfTriangles(); ++t)
     for (int k = 0; k < 3; ++k)
     {
@@ -108,11 +99,8 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   MergeResult merge = mergeCoincidentPoints(surf);
   st.mergedPoints = merge.mergedPoints;
   result.inputToOutputPoint = merge.oldToNew;
-  const int32_t N = surf.numberOfPoints();
-  const int32_t NT = surf.numberOfTriangles();
-  st.inputPoints = N;
-  st.inputTriangles = NT;
-  std::vector<int> shellDepth;
+  st.inputPoints = surf.numberOfPoints();
+  st.inputTriangles = surf.numberOfTriangles();
   int32_t nshell = 0;
   if (options.checkSurface)
   {
@@ -128,7 +116,6 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     if (!s.ok())
       return s;
     result.triangleShell = rep.triangleShell;
-    nshell = static_cast<int32_t>(rep.shells.size());
     for (auto& sh : rep.shells)
       shellDepth.push_back(sh.depth);
   }
@@ -137,11 +124,17 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     result.triangleShell = shellsOf(surf, &nshell);
     shellDepth.assign(static_cast<size_t>(nshell), 0); // unknown nesting: volume check not meaningful
   }
-  st.secondsCheck = since(t0);
+  return Status::success();
+}
 
-  // 2. Delaunay of the referenced points and a far box.
-  t0 = std::chrono::steady_clock::now();
-  std::vector<uint8_t> used(static_cast<size_t>(N), 0);
+// Step 2: the Delaunay tetrahedralisation of the points the triangles use plus the 8 corners of a box
+// around them (one extent away). Vertex i of `mesh` is merged input point i; the corners are N..N+7.
+// `used` marks the referenced points.
+Status delaunayInFarBox(const SurfaceMesh& surf, const MesherOptions& options, Progress* pr, TetMesh& mesh,
+                        std::vector<uint8_t>& used)
+{
+  const int32_t N = surf.numberOfPoints();
+  used.assign(static_cast<size_t>(N), 0);
   for (int32_t v : surf.triangles)
     used[v] = 1;
   std::vector<int32_t> compactToFull;
@@ -175,7 +168,6 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     compactToFull.push_back(N + c);
     xyz.insert(xyz.end(), corners.begin() + 3 * c, corners.begin() + 3 * c + 3);
   }
-  TetMesh mesh;
   std::vector<int32_t> inputToVertex;
   DelaunayOptions dopt;
   dopt.keepGhosts = false;
@@ -189,28 +181,25 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   for (auto& v : mesh.tetVertices)
     if (v >= 0)
       v = compactToFull[v];
-  st.secondsDelaunay = since(t0);
-  if (pr->cancelled())
-    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+  return Status::success();
+}
 
-  // 3-5. Recovery, exterior removal, removal of the boundary Steiner points. When recovery or that removal
-  // fails, both are retried from the Delaunay mesh: first splitting the input segments the first attempt
-  // had to split while the mesh is still Delaunay (RecoveryOptions::presplitSegments), then, as the last
-  // resort, with segment cones (RecoveryOptions::segmentCones).
-  std::vector<VertexKind> kinds(static_cast<size_t>(N + 8), VertexKind::Unused);
-  for (int32_t v = 0; v < N; ++v)
-    if (used[v])
-      kinds[v] = VertexKind::Boundary;
-  for (int c = 0; c < 8; ++c)
-    kinds[N + c] = VertexKind::Box;
+// Steps 3-5: recovery, exterior removal, removal of the boundary Steiner points. When recovery or that
+// removal fails, both are retried from the Delaunay mesh: first splitting the input segments the first
+// attempt had to split while the mesh is still Delaunay (RecoveryOptions::presplitSegments), then, as the
+// last resort, with segment cones (RecoveryOptions::segmentCones). On success `ed`'s mesh is the domain
+// with its regions, and `kinds` says what each vertex is.
+Status recoverDomain(const SurfaceMesh& surf, const MesherOptions& options, Progress* pr, MeshEditor& ed,
+                     BoundaryConstraints& bc, std::vector<VertexKind>& kinds, RegionResult& regions,
+                     MesherStatistics& st)
+{
+  TetMesh& mesh = ed.mesh;
   const bool mayRetry = options.allowSteinerPoints && options.removeBoundarySteiner;
   TetMesh delaunayMesh = mayRetry ? mesh : TetMesh();
-  std::vector<VertexKind> delaunayKinds = kinds;
-  BoundaryConstraints bc;
-  MeshEditor ed(mesh);
-  RegionResult regions;
+  const std::vector<VertexKind> delaunayKinds = kinds;
   std::unordered_set<uint64_t> presplit;
   Status firstFailure = Status::success();
+  Status s = Status::success();
   constexpr int kAttempts = 3;
   for (int attempt = 0; attempt < kAttempts; ++attempt)
   {
@@ -221,9 +210,9 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
       ed.rebuildVertexMap();
       regions = RegionResult();
     }
-    t0 = std::chrono::steady_clock::now();
+    auto t0 = std::chrono::steady_clock::now();
     bc = BoundaryConstraints();
-    bc.init(surf.triangles.data(), NT);
+    bc.init(surf.triangles.data(), surf.numberOfTriangles());
     RecoveryOptions ro;
     ro.allowSteiner = options.allowSteinerPoints;
     ro.maxSteinerPoints = options.maxSteinerPoints;
@@ -271,22 +260,16 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
       presplit = rr.splitSegments;
     }
   }
-  // The retries' start is not needed past recovery: released before the quality stage grows the mesh.
-  delaunayMesh = TetMesh();
-  std::vector<VertexKind>().swap(delaunayKinds);
-  if (!s.ok())
-    return s;
+  return s;
+}
 
-  // 5b. Grid control and quality (MeshImprovement.h).
-  t0 = std::chrono::steady_clock::now();
-  ImprovementOptions improvement = options.improvement;
-  improvement.threads = options.threads;
-  s = improveDomainMesh(ed, bc, surf, kinds, regions.tetRegion, improvement, st.improvement, pr);
-  if (!s.ok())
-    return s;
-  st.secondsImprovement = since(t0);
-
-  // 6. Output.
+// Step 6: the domain's tets and the points they use into `result` (input points first, with their ids),
+// the Forced flags, and the input triangles that are faces of the mesh with their patch.
+Status emitResult(const TetMesh& mesh, const SurfaceMesh& surf, const std::vector<VertexKind>& kinds,
+                  const std::vector<int32_t>& tetRegion, MesherResult& result)
+{
+  MesherStatistics& st = result.stats;
+  const int32_t N = surf.numberOfPoints();
   const int32_t nv = mesh.numVertices();
   std::vector<int32_t> outId(static_cast<size_t>(nv), -1);
   std::vector<uint8_t> inTet(static_cast<size_t>(nv), 0);
@@ -321,14 +304,14 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     {
       for (int i = 0; i < 4; ++i)
         result.tets.push_back(outId[mesh.vertex(t, i)]);
-      result.tetRegion.push_back(regions.tetRegion[t]);
+      result.tetRegion.push_back(tetRegion[t]);
     });
   markForcedTets(result);
   // Boundary triangles: input triangles that are faces of the mesh (all of them unless keep-all
   // interfaces... which are faces too), found by one sweep over the tets.
   BoundaryCensus inputFaces;
-  inputFaces.take(mesh, surf.triangles.data(), NT, /*withEdges=*/false);
-  for (int32_t t = 0; t < NT; ++t)
+  inputFaces.take(mesh, surf.triangles.data(), surf.numberOfTriangles(), /*withEdges=*/false);
+  for (int32_t t = 0; t < surf.numberOfTriangles(); ++t)
   {
     const int32_t* v = surf.triangle(t);
     if (inputFaces.faceCode(t) < 0)
@@ -337,35 +320,105 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     result.boundaryInputTriangle.push_back(t);
     result.boundaryPatch.push_back(surf.hasPatchIds() ? surf.patchIds[t] : result.triangleShell[t]);
   }
+  return Status::success();
+}
+
+// The volume of the output tets, summed with compensation (Kahan) so that it can be compared with the
+// enclosed volume at 1e-9.
+double compensatedTetVolume(const MesherResult& result)
+{
+  double sum = 0, c = 0;
+  for (size_t t = 0; t < result.tets.size(); t += 4)
+  {
+    const double* a = &result.points[3 * static_cast<size_t>(result.tets[t])];
+    const double* b = &result.points[3 * static_cast<size_t>(result.tets[t + 1])];
+    const double* cc = &result.points[3 * static_cast<size_t>(result.tets[t + 2])];
+    const double* d = &result.points[3 * static_cast<size_t>(result.tets[t + 3])];
+    double e[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      e[0][k] = b[k] - a[k];
+      e[1][k] = cc[k] - a[k];
+      e[2][k] = d[k] - a[k];
+    }
+    const double v =
+      (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+       e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+      6.0;
+    const double y = v - c, tt = sum + y;
+    c = (tt - sum) - y;
+    sum = tt;
+  }
+  return sum;
+}
+
+} // namespace
+
+Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, MesherResult& result, Progress* progress)
+{
+  const auto tStart = std::chrono::steady_clock::now();
+  result = MesherResult();
+  SilentProgress silent;
+  Progress* pr = progress ? progress : &silent;
+  MesherStatistics& st = result.stats;
+  if (input.numberOfTriangles() == 0)
+    return Status::failure(ErrorKind::EmptyInput, "The surface has no triangles.");
+  if (options.maxSteinerPoints < -1)
+    return Status::failure(ErrorKind::InvalidOption, "maxSteinerPoints must be -1 (automatic) or >= 0.");
+
+  // 1. Merge and validate.
+  auto t0 = std::chrono::steady_clock::now();
+  SurfaceMesh surf;
+  std::vector<int> shellDepth;
+  Status s = checkAndMerge(input, options, pr, surf, result, shellDepth);
+  if (!s.ok())
+    return s;
+  const int32_t N = surf.numberOfPoints();
+  st.secondsCheck = since(t0);
+
+  // 2. Delaunay of the referenced points and a far box.
+  t0 = std::chrono::steady_clock::now();
+  TetMesh mesh;
+  std::vector<uint8_t> used;
+  s = delaunayInFarBox(surf, options, pr, mesh, used);
+  if (!s.ok())
+    return s;
+  st.secondsDelaunay = since(t0);
+  if (pr->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+
+  // 3-5. Recovery, exterior removal, removal of the boundary Steiner points (with retries).
+  std::vector<VertexKind> kinds(static_cast<size_t>(N + 8), VertexKind::Unused);
+  for (int32_t v = 0; v < N; ++v)
+    if (used[v])
+      kinds[v] = VertexKind::Boundary;
+  for (int c = 0; c < 8; ++c)
+    kinds[N + c] = VertexKind::Box;
+  BoundaryConstraints bc;
+  MeshEditor ed(mesh);
+  RegionResult regions;
+  s = recoverDomain(surf, options, pr, ed, bc, kinds, regions, st);
+  if (!s.ok())
+    return s;
+
+  // 5b. Grid control and quality (MeshImprovement.h).
+  t0 = std::chrono::steady_clock::now();
+  ImprovementOptions improvement = options.improvement;
+  improvement.threads = options.threads;
+  s = improveDomainMesh(ed, bc, surf, kinds, regions.tetRegion, improvement, st.improvement, pr);
+  if (!s.ok())
+    return s;
+  st.secondsImprovement = since(t0);
+
+  // 6. Output.
+  s = emitResult(mesh, surf, kinds, regions.tetRegion, result);
+  if (!s.ok())
+    return s;
   st.steinerInterior -= st.improvement.fieldPoints + st.improvement.clusterPoints + st.improvement.splitPoints;
   st.points = static_cast<int64_t>(result.points.size() / 3);
   st.tets = static_cast<int64_t>(result.tets.size() / 4);
   st.enclosedVolume = enclosedVolume(surf.points, surf.triangles, result.triangleShell, shellDepth, options.regionRule);
-  {
-    double sum = 0, c = 0;
-    for (size_t t = 0; t < result.tets.size(); t += 4)
-    {
-      const double* a = &result.points[3 * static_cast<size_t>(result.tets[t])];
-      const double* b = &result.points[3 * static_cast<size_t>(result.tets[t + 1])];
-      const double* cc = &result.points[3 * static_cast<size_t>(result.tets[t + 2])];
-      const double* d = &result.points[3 * static_cast<size_t>(result.tets[t + 3])];
-      double e[3][3];
-      for (int k = 0; k < 3; ++k)
-      {
-        e[0][k] = b[k] - a[k];
-        e[1][k] = cc[k] - a[k];
-        e[2][k] = d[k] - a[k];
-      }
-      const double v =
-        (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-         e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
-        6.0;
-      const double y = v - c, tt = sum + y;
-      c = (tt - sum) - y;
-      sum = tt;
-    }
-    st.tetVolume = sum;
-  }
+  st.tetVolume = compensatedTetVolume(result);
   if (options.verify)
   {
     BoundaryCheckReport br = checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume);
