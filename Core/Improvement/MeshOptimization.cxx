@@ -337,6 +337,158 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
       }
   return false;
 }
+// What optimizeMesh's passes share. The passes work on a worklist, not on the whole mesh: the tets below
+// the target at the start of the call are collected once (`bad`); from then on the only tets whose quality
+// can have changed are those created by flips, edge removals and collapses and those in the star of a
+// moved vertex (`touched`). The tets below a limit are therefore found among the last collection and the
+// touched tets: the same set, in the same (quality, slot) order, as a sweep over the whole mesh, at a cost
+// proportional to the work.
+struct OptimizationPasses
+{
+  TetMesh& mesh;
+  TetEditor& editor;
+  const OptimizationOptions& options;
+  OptimizationReport& report;
+  const std::vector<uint8_t>& lock;
+  std::vector<uint8_t>& unmoved;
+  // A collapse of v depends on v's star alone: one that failed fails again until a tet of the star changes.
+  std::vector<uint8_t> uncollapsible;
+  std::vector<std::pair<double, int32_t>> bad, worst;
+  std::vector<int32_t> queue, created, verts, touched, candidates, star;
+  int64_t changes = 0; // in the current pass
+
+  OptimizationPasses(TetMesh& m, TetEditor& e, const OptimizationOptions& o, OptimizationReport& r,
+                     const std::vector<uint8_t>& l, std::vector<uint8_t>& u)
+    : mesh(m)
+    , editor(e)
+    , options(o)
+    , report(r)
+    , lock(l)
+    , unmoved(u)
+  {
+  }
+
+  // The tets in `tets` changed: their vertices' smoothing and collapse may succeed again.
+  void changed(const std::vector<int32_t>& tets)
+  {
+    for (int32_t u : tets)
+      for (int i = 0; i < 4; ++i)
+        unmoved[mesh.vertex(u, i)] = 0;
+    if (!uncollapsible.empty())
+      for (int32_t u : tets)
+        for (int i = 0; i < 4; ++i)
+          uncollapsible[mesh.vertex(u, i)] = 0;
+  }
+
+  // The live tets under qLimit among `bad` and `touched`, in (quality, slot) order.
+  void collectBelow(double qLimit, std::vector<std::pair<double, int32_t>>& out)
+  {
+    candidates.clear();
+    for (const auto& b : bad)
+      candidates.push_back(b.second);
+    candidates.insert(candidates.end(), touched.begin(), touched.end());
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    out.clear();
+    for (int32_t t : candidates)
+      if (!mesh.isFree(t))
+      {
+        const double q = tetQ(mesh, t);
+        if (q < qLimit)
+          out.emplace_back(q, t);
+      }
+    std::sort(out.begin(), out.end());
+  }
+
+  // Flips on every bad tet (worst first; by slot on large meshes), and on the new tets still under qT.
+  void flipBadTets(double qT)
+  {
+    queue.clear();
+    for (const auto& b : bad)
+      queue.push_back(b.second);
+    if (mesh.numTets() >= options.largeMeshTets)
+      std::sort(queue.begin(), queue.end());
+    for (size_t k = 0; k < queue.size(); ++k)
+    {
+      const int32_t t = queue[k];
+      if (mesh.isFree(t) || tetQ(mesh, t) >= qT)
+        continue;
+      if (tryFlipsOf(editor, t, options, report, created))
+      {
+        ++changes;
+        touched.insert(touched.end(), created.begin(), created.end());
+        changed(created);
+        for (int32_t u : created)
+          if (tetQ(mesh, u) < qT)
+            queue.push_back(u);
+      }
+    }
+  }
+
+  // Smoothing of the vertices of the tets under qT (in colour classes on all threads on large meshes).
+  void smoothBadTets(double qT)
+  {
+    collectBelow(qT, worst);
+    verts.clear();
+    for (const auto& w : worst)
+      for (int i = 0; i < 4; ++i)
+        verts.push_back(mesh.vertex(w.second, i));
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    auto moved = [&](int32_t v)
+    {
+      ++report.smoothMoves;
+      ++changes;
+      editor.star(v, star);
+      touched.insert(touched.end(), star.begin(), star.end());
+      changed(star);
+    };
+    if (mesh.numTets() >= options.largeMeshTets)
+      smoothInColourClasses(editor, verts, lock, unmoved, options, moved);
+    else
+      for (int32_t v : verts)
+      {
+        if (lock[v] || unmoved[v])
+          continue;
+        if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
+          unmoved[v] = 1;
+        else
+          moved(v);
+      }
+  }
+
+  // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
+  // target (worst first), e.g. recovery's Steiner points pinned against nearly coplanar boundary faces.
+  void collapseWorst()
+  {
+    const double qR =
+      std::sin(std::min(options.targetDegrees, options.vertexRemovalDegrees) * 3.14159265358979323846 / 180.0);
+    collectBelow(qR, worst);
+    for (const auto& w : worst)
+    {
+      const int32_t t = w.second;
+      if (mesh.isFree(t) || tetQ(mesh, t) >= qR)
+        continue;
+      const int32_t* x = mesh.vertices(t);
+      const int32_t vv[4] = { x[0], x[1], x[2], x[3] };
+      for (int i = 0; i < 4; ++i)
+      {
+        if (lock[vv[i]] || uncollapsible[vv[i]])
+          continue;
+        if (!tryVertexCollapse(editor, vv[i], &created))
+        {
+          uncollapsible[vv[i]] = 1;
+          continue;
+        }
+        ++report.vertexRemovals;
+        ++changes;
+        touched.insert(touched.end(), created.begin(), created.end());
+        changed(created);
+        break;
+      }
+    }
+  }
+};
 } // namespace
 
 Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
@@ -359,62 +511,25 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     for (size_t v = 0; v < lock.size() && v < locked->size(); ++v)
       lock[v] |= (*locked)[v];
   const double qT = std::sin(options.targetDegrees * 3.14159265358979323846 / 180.0);
-  // The pass works on a worklist, not on the whole mesh: the tets below the target at the start of the
-  // call are collected once; from then on the only tets whose quality can have changed are those created
-  // by flips, edge removals and collapses and those in the star of a moved vertex (`touched`). The tets
-  // below a limit are therefore found among the last collection and the touched tets: the same set, in
-  // the same (quality, slot) order, as a sweep over the whole mesh, at a cost proportional to the work.
-  std::vector<std::pair<double, int32_t>> bad, worst;
-  std::vector<int32_t> queue, created, verts, touched, candidates, star;
-  if (worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees)
-    bad.swap(worklist->below); // exactly what a sweep would collect: the mesh is as the last call left it
+  const bool resume = worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees;
+  std::vector<uint8_t> localUnmoved;
+  OptimizationPasses p(mesh, editor, options, report, lock, worklist ? worklist->unmoved : localUnmoved);
+  if (resume)
+    p.bad.swap(worklist->below); // exactly what a sweep would collect: the mesh is as the last call left it
   else
   {
-    collectSineBelow(mesh, qT, options.threads, bad);
-    std::sort(bad.begin(), bad.end());
+    collectSineBelow(mesh, qT, options.threads, p.bad);
+    std::sort(p.bad.begin(), p.bad.end());
+    p.unmoved.clear();
   }
-  std::vector<uint8_t> localUnmoved;
-  std::vector<uint8_t>& unmoved = worklist ? worklist->unmoved : localUnmoved;
-  if (!(worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees))
-    unmoved.clear();
-  unmoved.resize(static_cast<size_t>(mesh.numVertices()), 0);
-  // A collapse of v depends on v's star alone: one that failed fails again until a tet of the star changes.
-  std::vector<uint8_t> uncollapsible(options.vertexRemoval ? unmoved.size() : 0, 0);
-  // The tets in `tets` changed: their vertices' smoothing and collapse may succeed again.
-  auto changed = [&](const std::vector<int32_t>& tets)
-  {
-    for (int32_t u : tets)
-      for (int i = 0; i < 4; ++i)
-        unmoved[mesh.vertex(u, i)] = 0;
-    if (!uncollapsible.empty())
-      for (int32_t u : tets)
-        for (int i = 0; i < 4; ++i)
-          uncollapsible[mesh.vertex(u, i)] = 0;
-  };
+  p.unmoved.resize(static_cast<size_t>(mesh.numVertices()), 0);
+  p.uncollapsible.assign(options.vertexRemoval ? p.unmoved.size() : 0, 0);
   if (worklist)
     worklist->valid = false; // until this call ends
-  auto collectBelow = [&](double qLimit, std::vector<std::pair<double, int32_t>>& out)
-  {
-    candidates.clear();
-    for (const auto& b : bad)
-      candidates.push_back(b.second);
-    candidates.insert(candidates.end(), touched.begin(), touched.end());
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    out.clear();
-    for (int32_t t : candidates)
-      if (!mesh.isFree(t))
-      {
-        const double q = tetQ(mesh, t);
-        if (q < qLimit)
-          out.emplace_back(q, t);
-      }
-    std::sort(out.begin(), out.end());
-  };
-  report.belowTargetBefore = static_cast<int64_t>(bad.size());
-  report.minDihedralBefore =
-    options.summaries ? report.before.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees, options.threads);
-  for (int pass = 0; pass < options.maxPasses && !bad.empty(); ++pass)
+  report.belowTargetBefore = static_cast<int64_t>(p.bad.size());
+  report.minDihedralBefore = options.summaries ? report.before.minDihedral
+                                               : smallestDihedral(mesh, p.bad, options.targetDegrees, options.threads);
+  for (int pass = 0; pass < options.maxPasses && !p.bad.empty(); ++pass)
   {
     if (progress)
     {
@@ -422,105 +537,29 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
         return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
       progress->report(double(pass) / options.maxPasses, "Optimising");
     }
-    int64_t changes = 0;
-    touched.clear();
-    queue.clear();
-    for (const auto& b : bad)
-      queue.push_back(b.second);
-    if (mesh.numTets() >= options.largeMeshTets)
-      std::sort(queue.begin(), queue.end());
-    for (size_t k = 0; k < queue.size(); ++k)
-    {
-      const int32_t t = queue[k];
-      if (mesh.isFree(t) || tetQ(mesh, t) >= qT)
-        continue;
-      if (tryFlipsOf(editor, t, options, report, created))
-      {
-        ++changes;
-        touched.insert(touched.end(), created.begin(), created.end());
-        changed(created);
-        for (int32_t u : created)
-          if (tetQ(mesh, u) < qT)
-            queue.push_back(u);
-      }
-    }
+    p.changes = 0;
+    p.touched.clear();
+    p.flipBadTets(qT);
     if (options.smoothing)
-    {
-      collectBelow(qT, worst);
-      verts.clear();
-      for (const auto& w : worst)
-        for (int i = 0; i < 4; ++i)
-          verts.push_back(mesh.vertex(w.second, i));
-      std::sort(verts.begin(), verts.end());
-      verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-      auto moved = [&](int32_t v)
-      {
-        ++report.smoothMoves;
-        ++changes;
-        editor.star(v, star);
-        touched.insert(touched.end(), star.begin(), star.end());
-        changed(star);
-      };
-      if (mesh.numTets() >= options.largeMeshTets)
-        smoothInColourClasses(editor, verts, lock, unmoved, options, moved);
-      else
-        for (int32_t v : verts)
-        {
-          if (lock[v] || unmoved[v])
-            continue;
-          if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
-            unmoved[v] = 1;
-          else
-            moved(v);
-        }
-    }
-    // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the
-    // target (worst first), e.g. recovery's Steiner points pinned against nearly coplanar boundary faces.
+      p.smoothBadTets(qT);
     if (options.vertexRemoval)
-    {
-      const double qR =
-        std::sin(std::min(options.targetDegrees, options.vertexRemovalDegrees) * 3.14159265358979323846 / 180.0);
-      collectBelow(qR, worst);
-      for (const auto& w : worst)
-      {
-        const int32_t t = w.second;
-        if (mesh.isFree(t) || tetQ(mesh, t) >= qR)
-          continue;
-        const int32_t* x = mesh.vertices(t);
-        const int32_t vv[4] = { x[0], x[1], x[2], x[3] };
-        for (int i = 0; i < 4; ++i)
-        {
-          if (lock[vv[i]] || uncollapsible[vv[i]])
-            continue;
-          if (!tryVertexCollapse(editor, vv[i], &created))
-          {
-            uncollapsible[vv[i]] = 1;
-            continue;
-          }
-          ++report.vertexRemovals;
-          ++changes;
-          touched.insert(touched.end(), created.begin(), created.end());
-          changed(created);
-          break;
-        }
-      }
-    }
+      p.collapseWorst();
     report.passes = pass + 1;
-    collectBelow(qT, bad);
-    if (changes == 0)
+    p.collectBelow(qT, p.bad);
+    if (p.changes == 0)
       break;
   }
-  report.belowTargetAfter = static_cast<int64_t>(bad.size());
+  report.belowTargetAfter = static_cast<int64_t>(p.bad.size());
   if (worklist)
   {
-    worklist->below = bad;
+    worklist->below = p.bad;
     worklist->targetDegrees = options.targetDegrees;
     worklist->valid = true;
   }
   if (options.summaries)
     report.after = summarizeDihedrals(mesh, options.threads);
-  report.minDihedralAfter =
-    options.summaries ? report.after.minDihedral : smallestDihedral(mesh, bad, options.targetDegrees, options.threads);
+  report.minDihedralAfter = options.summaries ? report.after.minDihedral
+                                              : smallestDihedral(mesh, p.bad, options.targetDegrees, options.threads);
   report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return Status::success();
 }
