@@ -6,11 +6,11 @@
 #include "Delaunay.h"
 #include "SteinerRemoval.h"
 #include "SurfaceChecks.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 #include <unordered_set>
 
 namespace volgrid
@@ -28,14 +28,7 @@ double since(std::chrono::steady_clock::time_point t0)
 std::vector<int32_t> shellsOf(const SurfaceMesh& s, int32_t* count)
 {
   const int32_t nt = s.numberOfTriangles();
-  std::vector<int32_t> parent(static_cast<size_t>(nt));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int32_t x)
-  {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  UnionFind<int32_t> sets(static_cast<size_t>(nt));
   std::unordered_map<uint64_t, int32_t> first;
   first.reserve(static_cast<size_t>(nt) * 2);
   for (int32_t t = 0; t < nt; ++t)
@@ -43,13 +36,14 @@ std::vector<int32_t> shellsOf(const SurfaceMesh& s, int32_t* count)
     {
       auto [it, fresh] = first.emplace(edgeKey(s.triangle(t)[k], s.triangle(t)[(k + 1) % 3]), t);
       if (!fresh)
-        parent[find(t)] = find(it->second);
+        sets.unite(t, it->second);
     }
+  // Shells are numbered in the order of their first triangle.
   std::vector<int32_t> id(static_cast<size_t>(nt), -1), shell(static_cast<size_t>(nt));
   int32_t n = 0;
   for (int32_t t = 0; t < nt; ++t)
   {
-    const int32_t r = find(t);
+    const int32_t r = sets.find(t);
     if (id[r] < 0)
       id[r] = n++;
     shell[t] = id[r];

@@ -108,6 +108,32 @@ TEST(Mesher, NestedCubes)
   EXPECT_NEAR(k.stats.tetVolume, 27.0, 1e-9);
 }
 
+// Without the surface checks the shells come from edge connectivity alone: the same shells, numbered in
+// the order of their first triangle, and the same mesh.
+TEST(Mesher, ShellsWithoutSurfaceChecks)
+{
+  SurfaceMesh s;
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 3, 3, 3 }, lo2[3] = { 1, 1, 1 }, hi2[3] = { 2, 2, 2 };
+  testshapes::addBox(s, lo, hi);
+  testshapes::addBox(s, lo2, hi2, true, true);
+  const size_t outerTriangles = 12;
+  MesherOptions opt;
+  opt.checkSurface = false;
+  MesherResult unchecked;
+  // Not meshAndCheck: without the checks the nesting is unknown, so enclosedVolume is no reference.
+  ASSERT_TRUE(meshSurface(s, opt, unchecked).ok());
+  BoundaryCheckReport br = checkBoundaryConformity(unchecked.points, unchecked.numInputPoints, unchecked.tets,
+                                                   s.triangles, unchecked.stats.enclosedVolume);
+  EXPECT_TRUE(br.meshValid()) << br.summary();
+  EXPECT_TRUE(br.boundaryEqualsInput()) << br.summary();
+  ASSERT_EQ(unchecked.triangleShell.size(), s.triangles.size() / 3);
+  for (size_t t = 0; t < unchecked.triangleShell.size(); ++t)
+    EXPECT_EQ(unchecked.triangleShell[t], t < outerTriangles ? 0 : 1) << "triangle " << t;
+  MesherResult checked = meshAndCheck(s);
+  EXPECT_EQ(unchecked.tets, checked.tets);
+  EXPECT_NEAR(unchecked.stats.tetVolume, 26.0, 1e-9);
+}
+
 TEST(Mesher, OrientationRule)
 {
   // Sphere enclosure (normals pointing away from the domain = outward) around an inward cube.
