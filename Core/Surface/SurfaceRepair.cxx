@@ -1,12 +1,12 @@
 #include "SurfaceRepair.h"
 
 #include "SurfaceChecks.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
-#include <numeric>
 #include <sstream>
 #include <unordered_map>
 #include <unordered_set>
@@ -115,26 +115,7 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
       }
     }
   }
-  std::vector<int32_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int32_t x)
-  {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
-  auto unite = [&](int32_t a, int32_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if (a != b)
-    {
-      parent[std::max(a, b)] = std::min(a, b);
-    }
-  };
+  UnionFind<int32_t> sets(static_cast<size_t>(n)); // the smallest id of a welded group is its root
   if (!(tol > 0))
   {
     std::vector<int32_t> canon;
@@ -152,7 +133,7 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
       }
       else
       {
-        unite(firstOf[canon[i]], i);
+        sets.unite(firstOf[canon[i]], i);
       }
     }
   }
@@ -199,7 +180,7 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
                 (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
               if (d2 <= tol2)
               {
-                unite(i, j);
+                sets.unite(i, j);
               }
             }
           }
@@ -209,7 +190,7 @@ int64_t weldPoints(SurfaceMesh& mesh, double tol, bool boundaryOnly)
   int32_t next = 0;
   for (int32_t i = 0; i < n; ++i)
   {
-    const int32_t r = find(i);
+    const int32_t r = sets.find(i);
     oldToNew[i] = r == i ? next++ : oldToNew[r];
   }
   if (next != n)
