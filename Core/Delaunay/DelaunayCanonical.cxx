@@ -62,39 +62,31 @@ inline bool rowLess(const int32_t* x, const int32_t* y)
     return xh < yh;
   return ((uint64_t(rank(x[2])) << 32) | rank(x[3])) < ((uint64_t(rank(y[2])) << 32) | rank(y[3]));
 }
-} // namespace
 
-void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
+// Group key: the last inserted vertex (kGhostVertex = -1 never is). Most tets get a vertex of the
+// last BRIO round, so the groups follow that round's Hilbert order: neighbouring tets get nearby
+// numbers, which keeps the passes below cache-friendly.
+inline int32_t lastInserted(const int32_t* w)
 {
-  const int32_t cap = mesh.tetCapacity();
-  const int32_t nv = mesh.numVertices();
-  const int32_t ghosts = mesh.numGhostTets();
-  // The points are not needed here and the caller replaces them (buildDelaunay's output points are the
-  // input array): release them first, which lowers the peak.
-  std::vector<double>().swap(mesh.points);
-  int32_t* V = mesh.tetVertices.data();
-  int32_t* N = mesh.tetNeighbors.data();
-  uint8_t* F = mesh.tetFlags.data();
-  auto toOutput = [toInput](int32_t v) { return (toInput && v >= 0) ? toInput[v] : v; };
-  // Group key: the last inserted vertex (kGhostVertex = -1 never is). Most tets get a vertex of the
-  // last BRIO round, so the groups follow that round's Hilbert order: neighbouring tets get nearby
-  // numbers, which keeps the passes below cache-friendly.
-  auto lastInserted = [](const int32_t* w) { return std::max(std::max(w[0], w[1]), std::max(w[2], w[3])); };
-  // Passes over [0, n) on up to `threads` ranges of at least 2^16 items (ParallelFor.h).
-  auto inRanges = [threads](int32_t n, const auto& work)
-  { parallelFor(threads, n, 1 << 16, [&](int, int64_t from, int64_t to) { work(int32_t(from), int32_t(to)); }); };
-  // The counting passes keep a count per vertex per range (4 bytes per vertex each): at most two ranges,
-  // as measured, more raised the peak (1M random points, 8 ranges: +23 MB) for little time.
-  constexpr int kCountRanges = 2;
-  const int countThreads = std::min(resolveThreads(threads), kCountRanges);
-  const int countRanges = parallelRanges(countThreads, cap, 1 << 16);
+  return std::max(std::max(w[0], w[1]), std::max(w[2], w[3]));
+}
 
-  // Pass 1, in slot order: every live tet's vertex row rotated in place; from here on the flag byte of
-  // a slot holds the rotation of its tet (newPos: new position of old position f in bits 2f..2f+1,
-  // never 0 for a live tet) and 0 for a free slot (no separate array).
-  // Each range also counts its tets per last inserted vertex (for the counting sort of pass 2).
+// Passes over [0, n) on up to `threads` ranges of at least 2^16 items (ParallelFor.h).
+template<typename Work>
+void inRanges(int threads, int32_t n, const Work& work)
+{
+  parallelFor(threads, n, 1 << 16, [&](int, int64_t from, int64_t to) { work(int32_t(from), int32_t(to)); });
+}
+
+// Pass 1, in slot order: every live tet's vertex row rotated in place; from here on the flag byte of
+// a slot holds the rotation of its tet (newPos: new position of old position f in bits 2f..2f+1,
+// never 0 for a live tet) and 0 for a free slot (no separate array).
+// Each of the `countThreads` ranges also counts its tets per last inserted vertex (returned, one count
+// array per range, for the counting sort of pass 2).
+std::vector<std::vector<int32_t>> rotateRows(int32_t* V, uint8_t* F, int32_t cap, int32_t nv, int countThreads)
+{
   uint8_t* newPos = F;
-  std::vector<std::vector<int32_t>> count(static_cast<size_t>(countRanges));
+  std::vector<std::vector<int32_t>> count(static_cast<size_t>(parallelRanges(countThreads, cap, 1 << 16)));
   parallelFor(countThreads, cap, 1 << 16,
               [&](int range, int64_t from, int64_t to)
               {
@@ -116,12 +108,17 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
                   newPos[t] = static_cast<uint8_t>((1 << (2 * ord[1])) | (2 << (2 * ord[2])) | (3 << (2 * ord[3])));
                 }
               });
+  return count;
+}
 
-  // Pass 2: newToOld by groups of the last inserted vertex (counting sort), then each group sorted by
-  // the rotated rows.
-  // The ranges' counts become their fill positions: range 0 fills the front of each group, range 1 the
-  // next part, ... (the order inside a group does not matter, it is sorted next).
-  std::vector<int32_t> start(static_cast<size_t>(nv) + 1, 0);
+// Pass 2a: newToOld by groups of the last inserted vertex (counting sort; consumes `count`); start[v]
+// is where vertex v's group begins (start[nv] = the number of live tets).
+// The ranges' counts become their fill positions: range 0 fills the front of each group, range 1 the
+// next part, ... (the order inside a group does not matter, it is sorted next).
+std::vector<int32_t> groupByLastInserted(const int32_t* V, const uint8_t* F, int32_t cap, int32_t nv, int countThreads,
+                                         std::vector<std::vector<int32_t>>& count, std::vector<int32_t>& start)
+{
+  start.assign(static_cast<size_t>(nv) + 1, 0);
   for (int32_t v = 0; v < nv; ++v)
   {
     int32_t at = start[v];
@@ -133,8 +130,7 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
     }
     start[v + 1] = at;
   }
-  const int32_t live = start[nv];
-  std::vector<int32_t> newToOld(static_cast<size_t>(live));
+  std::vector<int32_t> newToOld(static_cast<size_t>(start[nv]));
   parallelFor(countThreads, cap, 1 << 16,
               [&](int range, int64_t from, int64_t to)
               {
@@ -144,9 +140,16 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
                     newToOld[fill[lastInserted(V + 4 * static_cast<size_t>(t))]++] = t;
               });
   std::vector<std::vector<int32_t>>().swap(count);
-  // Groups are independent (disjoint ranges of newToOld): ranges of the vertex range may run at once. A group's tets
-  // sit in scattered slots: their rows are prefetched a few tets ahead.
-  inRanges(nv,
+  return newToOld;
+}
+
+// Pass 2b: each group of newToOld sorted by the rotated rows (insertion sort of its few tets).
+// Groups are independent (disjoint ranges of newToOld): ranges of the vertex range may run at once. A
+// group's tets sit in scattered slots: their rows are prefetched a few tets ahead.
+void sortGroups(const int32_t* V, const std::vector<int32_t>& start, int32_t nv, std::vector<int32_t>& newToOld,
+                int threads)
+{
+  inRanges(threads, nv,
            [&](int32_t vFrom, int32_t vTo)
            {
              constexpr int32_t kAhead = 16;
@@ -159,7 +162,6 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
                for (int32_t i = a; i < b; ++i)
                  if (i + kAhead < end)
                    __builtin_prefetch(V + 4 * static_cast<size_t>(newToOld[i + kAhead]));
-               // Insertion sort of the group's few tets by their rows.
                for (int32_t i = a + 1; i < b; ++i)
                {
                  const int32_t t = newToOld[i];
@@ -171,19 +173,22 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
                }
              }
            });
-  std::vector<int32_t>().swap(start);
-  // New number of every live slot.
-  std::vector<int32_t> newId(static_cast<size_t>(cap), -1);
-  inRanges(live,
+}
+
+// Pass 3: neighbour codes rewritten in place for the new numbers and face positions (a row's rewrite
+// reads only newId/newPos of its neighbours).
+void renumberNeighbours(int32_t* N, const uint8_t* newPos, int32_t cap, const std::vector<int32_t>& newToOld,
+                        int threads)
+{
+  const int32_t live = static_cast<int32_t>(newToOld.size());
+  std::vector<int32_t> newId(static_cast<size_t>(cap), -1); // new number of every live slot
+  inRanges(threads, live,
            [&](int32_t from, int32_t to)
            {
              for (int32_t i = from; i < to; ++i)
                newId[newToOld[i]] = i;
            });
-
-  // Pass 3: neighbour codes rewritten in place for the new numbers and face positions (a row's
-  // rewrite reads only newId/newPos of its neighbours).
-  inRanges(cap,
+  inRanges(threads, cap,
            [&](int32_t from, int32_t to)
            {
              for (int32_t t = from; t < to; ++t)
@@ -195,7 +200,7 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
                    if (c >= 0)
                      __builtin_prefetch(newId.data() + (c >> 2));
                  }
-               if (F[t] == 0)
+               if (newPos[t] == 0)
                  continue; // free slot
                int32_t* n = N + 4 * static_cast<size_t>(t);
                for (int f = 0; f < 4; ++f)
@@ -206,46 +211,74 @@ void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
                }
              }
            });
-  std::vector<int32_t>().swap(newId);
+}
 
-  // Pass 4: the rows gathered in the new order (neighbour rows rotated like the vertex rows were, vertex
-  // rows mapped to output ids), one array at a time (the old one is freed
-  // before the next is allocated: the transient memory stays at one 16-byte row per tet). Writes are
-  // sequential; the reads follow the construction's slot order, which is spatially coherent too.
-  auto gather = [&](std::vector<int32_t>& rows, bool vertices)
-  {
-    std::vector<int32_t> out(4 * static_cast<size_t>(live));
-    const int32_t* in = rows.data();
-    inRanges(live,
-             [&](int32_t from, int32_t to)
+// Pass 4, for one array: its rows gathered in the new order (neighbour rows rotated like the vertex rows
+// were, vertex rows mapped to output ids). The old array is freed before the next is gathered: the
+// transient memory stays at one 16-byte row per tet. Writes are sequential; the reads follow the
+// construction's slot order, which is spatially coherent too.
+void gatherRows(std::vector<int32_t>& rows, bool vertices, const std::vector<int32_t>& newToOld, const uint8_t* newPos,
+                const int32_t* toInput, int threads)
+{
+  auto toOutput = [toInput](int32_t v) { return (toInput && v >= 0) ? toInput[v] : v; };
+  const int32_t live = static_cast<int32_t>(newToOld.size());
+  std::vector<int32_t> out(4 * static_cast<size_t>(live));
+  const int32_t* in = rows.data();
+  inRanges(threads, live,
+           [&](int32_t from, int32_t to)
+           {
+             for (int32_t i = from; i < to; ++i)
              {
-               for (int32_t i = from; i < to; ++i)
-               {
-                 if (i + 16 < to)
-                   __builtin_prefetch(in + 4 * static_cast<size_t>(newToOld[i + 16]));
-                 const int32_t t = newToOld[i];
-                 const int32_t* r = in + 4 * static_cast<size_t>(t);
-                 int32_t* o = out.data() + 4 * static_cast<size_t>(i);
-                 if (vertices)
-                   for (int f = 0; f < 4; ++f)
-                     o[f] = toOutput(r[f]);
-                 else
-                   for (int f = 0; f < 4; ++f)
-                     o[(newPos[t] >> (2 * f)) & 3] = r[f];
-               }
-             });
-    rows.swap(out);
-  };
-  gather(mesh.tetNeighbors, false);
-  gather(mesh.tetVertices, true);
+               if (i + 16 < to)
+                 __builtin_prefetch(in + 4 * static_cast<size_t>(newToOld[i + 16]));
+               const int32_t t = newToOld[i];
+               const int32_t* r = in + 4 * static_cast<size_t>(t);
+               int32_t* o = out.data() + 4 * static_cast<size_t>(i);
+               if (vertices)
+                 for (int f = 0; f < 4; ++f)
+                   o[f] = toOutput(r[f]);
+               else
+                 for (int f = 0; f < 4; ++f)
+                   o[(newPos[t] >> (2 * f)) & 3] = r[f];
+             }
+           });
+  rows.swap(out);
+}
+} // namespace
 
+void canonicalizeTets(TetMesh& mesh, const int32_t* toInput, int threads)
+{
+  const int32_t cap = mesh.tetCapacity();
+  const int32_t nv = mesh.numVertices();
+  const int32_t ghosts = mesh.numGhostTets();
+  // The points are not needed here and the caller replaces them (buildDelaunay's output points are the
+  // input array): release them first, which lowers the peak.
+  std::vector<double>().swap(mesh.points);
+  int32_t* V = mesh.tetVertices.data();
+  int32_t* N = mesh.tetNeighbors.data();
+  uint8_t* F = mesh.tetFlags.data(); // after pass 1: each live tet's rotation (newPos), 0 for a free slot
+  // The counting passes keep a count per vertex per range (4 bytes per vertex each): at most two ranges,
+  // as measured, more raised the peak (1M random points, 8 ranges: +23 MB) for little time.
+  constexpr int kCountRanges = 2;
+  const int countThreads = std::min(resolveThreads(threads), kCountRanges);
+
+  std::vector<std::vector<int32_t>> count = rotateRows(V, F, cap, nv, countThreads);
+  std::vector<int32_t> start;
+  std::vector<int32_t> newToOld = groupByLastInserted(V, F, cap, nv, countThreads, count, start);
+  sortGroups(V, start, nv, newToOld, threads);
+  std::vector<int32_t>().swap(start);
+  renumberNeighbours(N, F, cap, newToOld, threads);
+  gatherRows(mesh.tetNeighbors, false, newToOld, F, toInput, threads);
+  gatherRows(mesh.tetVertices, true, newToOld, F, toInput, threads);
+
+  const size_t live = newToOld.size();
   std::vector<int32_t> vertices, neighbors;
   vertices.swap(mesh.tetVertices);
   neighbors.swap(mesh.tetNeighbors);
   mesh.clear();
   mesh.tetVertices.swap(vertices);
   mesh.tetNeighbors.swap(neighbors);
-  mesh.tetFlags.assign(static_cast<size_t>(live), 0);
+  mesh.tetFlags.assign(live, 0);
   mesh.adjustGhostCount(ghosts);
 }
 

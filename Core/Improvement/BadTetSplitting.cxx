@@ -58,6 +58,172 @@ double triangleNormal(const double* a, const double* b, const double* c, double 
   n[2] = u[0] * w[1] - u[1] * w[0];
   return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
+
+using Point = std::array<double, 3>;
+
+// The tets below quality qT, worst first (or `below` as given), less the first `skip` of them.
+std::vector<std::pair<double, int32_t>> collectBadTets(const TetMesh& mesh, double qT,
+                                                       const std::vector<std::pair<double, int32_t>>* below,
+                                                       size_t skip)
+{
+  std::vector<std::pair<double, int32_t>> bad;
+  if (below)
+    bad = *below;
+  else
+  {
+    mesh.forEachTet(
+      [&](int32_t t)
+      {
+        const int32_t* v = mesh.vertices(t);
+        const double q = tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+        if (q < qT)
+          bad.emplace_back(q, t);
+      });
+    std::sort(bad.begin(), bad.end());
+  }
+  bad.erase(bad.begin(), bad.begin() + static_cast<std::ptrdiff_t>(std::min(skip, bad.size())));
+  return bad;
+}
+
+// Appends the edge midpoints, the centroid and the circumcentre of tet p; returns its mean edge length.
+double addCentres(const double* const p[4], std::vector<Point>& cand)
+{
+  double lsum = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+    {
+      lsum += std::sqrt(sqDist(p[i], p[j]));
+      cand.push_back({ (p[i][0] + p[j][0]) / 2, (p[i][1] + p[j][1]) / 2, (p[i][2] + p[j][2]) / 2 });
+    }
+  cand.push_back({ (p[0][0] + p[1][0] + p[2][0] + p[3][0]) / 4, (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4,
+                   (p[0][2] + p[1][2] + p[2][2] + p[3][2]) / 4 });
+  Point cc;
+  if (circumcentre(p, cc.data()))
+    cand.push_back(cc);
+  return lsum / 6;
+}
+
+// Appends the points over each face of tet p, on both sides, at the height of a regular tet and at half.
+void addFaceApexes(const double* const p[4], std::vector<Point>& cand)
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    // Face i (the three vertices other than i), its normal towards vertex i, apex at the regular height.
+    const double* f[3];
+    for (int k = 0, m = 0; k < 4; ++k)
+      if (k != i)
+        f[m++] = p[k];
+    double n[3];
+    const double nn = triangleNormal(f[0], f[1], f[2], n);
+    if (!(nn > 0))
+      continue;
+    const double side = (p[i][0] - f[0][0]) * n[0] + (p[i][1] - f[0][1]) * n[1] + (p[i][2] - f[0][2]) * n[2];
+    const double h =
+      0.8165 * (std::sqrt(sqDist(f[0], f[1])) + std::sqrt(sqDist(f[1], f[2])) + std::sqrt(sqDist(f[2], f[0]))) / 3;
+    // Both sides (beyond an unconstrained face the point may replace t together with its neighbour),
+    // at the regular height and at half of it.
+    for (const double scale : { 1.0, -1.0, 0.5, -0.5 })
+    {
+      const double sgn = (side >= 0 ? h : -h) * scale / nn;
+      Point apex;
+      for (int k = 0; k < 3; ++k)
+        apex[k] = (f[0][k] + f[1][k] + f[2][k]) / 3 + sgn * n[k];
+      cand.push_back(apex);
+    }
+  }
+}
+
+// Appends the points off each edge midpoint of tet p along the normals of the edge's two faces, both
+// ways, at half and at the full edge length: the point that opens a crease or an interior edge of a cap
+// spanned by four boundary vertices is often there.
+void addEdgeOffsets(const double* const p[4], std::vector<Point>& cand)
+{
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+    {
+      const double len = std::sqrt(sqDist(p[i], p[j]));
+      for (int k = 0; k < 4; ++k)
+      {
+        if (k == i || k == j)
+          continue;
+        double n[3];
+        const double nn = triangleNormal(p[i], p[j], p[k], n);
+        if (!(nn > 0))
+          continue;
+        for (const double scale : { 0.5, -0.5, 1.0, -1.0 })
+          cand.push_back({ (p[i][0] + p[j][0]) / 2 + scale * len * n[0] / nn,
+                           (p[i][1] + p[j][1]) / 2 + scale * len * n[1] / nn,
+                           (p[i][2] + p[j][2]) / 2 + scale * len * n[2] / nn });
+      }
+    }
+}
+
+// The search for the best position of the new vertex nv (coordinates at x) that removes bad tet t.
+// A position scores the worst new tet when its cavity replaces t and beats what it replaces, else -3.
+struct PositionSearch
+{
+  TetEditor& editor;
+  double* x;
+  int32_t nv;
+  int32_t t;
+  bool speculative;
+  double best = -3; // best score so far: positions that cannot beat it are pruned
+  Point at{};
+
+  double score(const double* y)
+  {
+    if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
+      return -3.0;
+    std::copy(y, y + 3, x);
+    const int32_t start = editor.locate(y, t);
+    if (start < 0)
+      return -3.0;
+    double replaced = 2;
+    const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24, best);
+    return q > replaced || (speculative && q > 0) ? q : -3.0;
+  }
+
+  // Best of the candidates, in order (the first of equal scores wins).
+  void scan(const std::vector<Point>& cand)
+  {
+    for (const auto& c : cand)
+    {
+      const double q = score(c.data());
+      if (q > best)
+      {
+        best = q;
+        at = c;
+      }
+    }
+  }
+
+  // Pattern search along the axes from the best candidate, the step halving when no move improves.
+  void refine(double lmean)
+  {
+    static const double dirs[6][3] = {
+      { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 }
+    };
+    double step = 0.2 * lmean;
+    for (int it = 0; it < 12 && step > 0.01 * lmean; ++it)
+    {
+      bool moved = false;
+      for (const auto& d : dirs)
+      {
+        const Point y = { at[0] + step * d[0], at[1] + step * d[1], at[2] + step * d[2] };
+        const double q = score(y.data());
+        if (q > best)
+        {
+          best = q;
+          at = y;
+          moved = true;
+          break;
+        }
+      }
+      if (!moved)
+        step *= 0.5;
+    }
+  }
+};
 } // namespace
 
 int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels, double degrees,
@@ -73,24 +239,11 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     const int32_t* v = mesh.vertices(t);
     return tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
   };
-  std::vector<std::pair<double, int32_t>> bad;
-  if (below)
-    bad = *below;
-  else
-  {
-    mesh.forEachTet(
-      [&](int32_t t)
-      {
-        const double q = quality(t);
-        if (q < qT)
-          bad.emplace_back(q, t);
-      });
-    std::sort(bad.begin(), bad.end());
-  }
-  bad.erase(bad.begin(), bad.begin() + static_cast<std::ptrdiff_t>(std::min(skip, bad.size())));
+  // Vertices inserted by this call are interior: past the end of `locked`, which predates them.
+  auto isLocked = [&](int32_t x) { return static_cast<size_t>(x) < locked.size() && locked[x] != 0; };
   int64_t inserted = 0;
-  std::vector<std::array<double, 3>> cand;
-  for (const auto& b : bad)
+  std::vector<Point> cand;
+  for (const auto& b : collectBadTets(mesh, qT, below, skip))
   {
     const int32_t t = b.second;
     if (inserted >= maxPoints)
@@ -101,123 +254,20 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     const int32_t* v = mesh.vertices(t);
     const int32_t tv[4] = { v[0], v[1], v[2], v[3] };
     const double* p[4] = { mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(tv[3]) };
-    double lsum = 0;
     cand.clear();
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-      {
-        lsum += std::sqrt(sqDist(p[i], p[j]));
-        cand.push_back({ (p[i][0] + p[j][0]) / 2, (p[i][1] + p[j][1]) / 2, (p[i][2] + p[j][2]) / 2 });
-      }
-    const double lmean = lsum / 6;
-    cand.push_back({ (p[0][0] + p[1][0] + p[2][0] + p[3][0]) / 4, (p[0][1] + p[1][1] + p[2][1] + p[3][1]) / 4,
-                     (p[0][2] + p[1][2] + p[2][2] + p[3][2]) / 4 });
-    std::array<double, 3> cc;
-    if (circumcentre(p, cc.data()))
-      cand.push_back(cc);
-    for (int i = 0; i < 4; ++i)
-    {
-      // Face i (the three vertices other than i), its normal towards vertex i, apex at the regular height.
-      const double* f[3];
-      for (int k = 0, m = 0; k < 4; ++k)
-        if (k != i)
-          f[m++] = p[k];
-      double n[3];
-      const double nn = triangleNormal(f[0], f[1], f[2], n);
-      if (!(nn > 0))
-        continue;
-      const double side = (p[i][0] - f[0][0]) * n[0] + (p[i][1] - f[0][1]) * n[1] + (p[i][2] - f[0][2]) * n[2];
-      const double h =
-        0.8165 * (std::sqrt(sqDist(f[0], f[1])) + std::sqrt(sqDist(f[1], f[2])) + std::sqrt(sqDist(f[2], f[0]))) / 3;
-      // Both sides (beyond an unconstrained face the point may replace t together with its neighbour),
-      // at the regular height and at half of it.
-      for (const double scale : { 1.0, -1.0, 0.5, -0.5 })
-      {
-        const double sgn = (side >= 0 ? h : -h) * scale / nn;
-        std::array<double, 3> apex;
-        for (int k = 0; k < 3; ++k)
-          apex[k] = (f[0][k] + f[1][k] + f[2][k]) / 3 + sgn * n[k];
-        cand.push_back(apex);
-      }
-    }
-    // A tet spanned by four boundary vertices (a cap or sliver against the boundary) also gets points off
-    // each edge midpoint along the normals of the edge's two faces, both ways, at half and at the full
-    // edge length: the point that opens a crease or an interior edge of the cap is often there.
-    // (Vertices inserted by this call are interior: past the end of `locked`, which predates them.)
-    auto isLocked = [&](int32_t x) { return static_cast<size_t>(x) < locked.size() && locked[x] != 0; };
+    const double lmean = addCentres(p, cand);
+    addFaceApexes(p, cand);
     if (isLocked(tv[0]) && isLocked(tv[1]) && isLocked(tv[2]) && isLocked(tv[3]))
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-        {
-          const double len = std::sqrt(sqDist(p[i], p[j]));
-          for (int k = 0; k < 4; ++k)
-          {
-            if (k == i || k == j)
-              continue;
-            double n[3];
-            const double nn = triangleNormal(p[i], p[j], p[k], n);
-            if (!(nn > 0))
-              continue;
-            for (const double scale : { 0.5, -0.5, 1.0, -1.0 })
-              cand.push_back({ (p[i][0] + p[j][0]) / 2 + scale * len * n[0] / nn,
-                               (p[i][1] + p[j][1]) / 2 + scale * len * n[1] / nn,
-                               (p[i][2] + p[j][2]) / 2 + scale * len * n[2] / nn });
-          }
-        }
-    // Score a position: the worst new tet, when the cavity replaces t and beats what it replaces.
+      addEdgeOffsets(p, cand);
     const int32_t nv = mesh.addPoint(cand[0].data()); // coordinates overwritten below (p may move)
     double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
-    double best = -3; // best score so far: positions that cannot beat it are pruned
-    auto score = [&](const double* y)
+    PositionSearch search{ editor, x, nv, t, speculative };
+    search.scan(cand);
+    if (search.best > -3)
+      search.refine(lmean);
+    if (search.best > 0 && (search.best > qt || speculative))
     {
-      if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
-        return -3.0;
-      std::copy(y, y + 3, x);
-      const int32_t start = editor.locate(y, t);
-      if (start < 0)
-        return -3.0;
-      double replaced = 2;
-      const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24, best);
-      return q > replaced || (speculative && q > 0) ? q : -3.0;
-    };
-    std::array<double, 3> at{};
-    for (const auto& c : cand)
-    {
-      const double q = score(c.data());
-      if (q > best)
-      {
-        best = q;
-        at = c;
-      }
-    }
-    if (best > -3)
-    {
-      static const double dirs[6][3] = {
-        { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 }
-      };
-      double step = 0.2 * lmean;
-      for (int it = 0; it < 12 && step > 0.01 * lmean; ++it)
-      {
-        bool moved = false;
-        for (const auto& d : dirs)
-        {
-          const std::array<double, 3> y = { at[0] + step * d[0], at[1] + step * d[1], at[2] + step * d[2] };
-          const double q = score(y.data());
-          if (q > best)
-          {
-            best = q;
-            at = y;
-            moved = true;
-            break;
-          }
-        }
-        if (!moved)
-          step *= 0.5;
-      }
-    }
-    if (best > 0 && (best > qt || speculative))
-    {
-      std::copy(at.begin(), at.end(), x);
+      std::copy(search.at.begin(), search.at.end(), x);
       const int32_t start = editor.locate(x, t);
       if (start >= 0 && editor.qualityInsertion(nv, start, t, nullptr, true) > -3) // inserted
       {
