@@ -1,9 +1,13 @@
 #include "BadTetSplitting.h"
 
+#include "ParallelFor.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 
 namespace volgrid
 {
@@ -183,16 +187,16 @@ struct PositionSearch
     return q > replaced || (speculative && q > 0) ? q : -3.0;
   }
 
-  // Best of the candidates, in order (the first of equal scores wins).
-  void scan(const std::vector<Point>& cand)
+  // Best of the candidates [begin, end), in order (the first of equal scores wins).
+  void scan(const std::vector<Point>& cand, size_t begin = 0, size_t end = SIZE_MAX)
   {
-    for (const auto& c : cand)
+    for (size_t k = begin; k < std::min(end, cand.size()); ++k)
     {
-      const double q = score(c.data());
+      const double q = score(cand[k].data());
       if (q > best)
       {
         best = q;
-        at = c;
+        at = cand[k];
       }
     }
   }
@@ -224,16 +228,70 @@ struct PositionSearch
     }
   }
 };
+
+// Candidate scoring on several threads. Each worker has an editor (stamps, cavity) and a vertex slot of
+// its own and only reads the mesh. The candidates are cut into contiguous ranges, one per worker; each
+// range keeps its first best, and the first best of the ranges in order is what PositionSearch::scan
+// finds alone: a range prunes by its own best only, and a position that cannot beat that cannot be the
+// first best overall. So the mesh does not depend on the thread count.
+class ParallelScan
+{
+public:
+  ParallelScan(TetMesh& mesh, const FaceConstraints* constraints, int threads)
+    : mesh_(mesh)
+  {
+    for (int w = 1; w < threads; ++w)
+      editors_.push_back(std::make_unique<TetEditor>(mesh, constraints));
+  }
+
+  // Scores `cand` for bad tet t into `search` (whose vertex nv is the last point of the mesh).
+  void run(PositionSearch& search, const std::vector<Point>& cand)
+  {
+    const int ranges =
+      parallelRanges(static_cast<int>(editors_.size()) + 1, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread);
+    if (ranges <= 1)
+      return search.scan(cand);
+    const size_t nv = static_cast<size_t>(search.nv);
+    mesh_.points.resize(3 * (nv + static_cast<size_t>(ranges))); // a slot per extra range, after nv
+    search.x = mesh_.points.data() + 3 * nv;
+    std::vector<PositionSearch> parts;
+    for (int r = 0; r < ranges; ++r)
+    {
+      const int32_t slot = static_cast<int32_t>(nv) + r;
+      parts.push_back(r == 0 ? search
+                             : PositionSearch{ *editors_[static_cast<size_t>(r - 1)],
+                                               mesh_.points.data() + 3 * static_cast<size_t>(slot), slot, search.t,
+                                               search.speculative });
+    }
+    parallelFor(ranges, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread,
+                [&](int r, int64_t begin, int64_t end)
+                { parts[static_cast<size_t>(r)].scan(cand, static_cast<size_t>(begin), static_cast<size_t>(end)); });
+    mesh_.points.resize(3 * (nv + 1));
+    search.x = mesh_.points.data() + 3 * nv;
+    for (const PositionSearch& part : parts)
+      if (part.best > search.best)
+      {
+        search.best = part.best;
+        search.at = part.at;
+      }
+  }
+
+private:
+  static constexpr int64_t kMinCandidatesPerThread = 8;
+  TetMesh& mesh_;
+  std::vector<std::unique_ptr<TetEditor>> editors_;
+};
 } // namespace
 
-int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels, double degrees,
-                     int64_t maxPoints, bool speculative, size_t skip,
-                     const std::vector<std::pair<double, int32_t>>* below)
+int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
+                     const SplitRequest& request)
 {
+  const bool speculative = request.speculative;
+  ParallelScan parallelScan(mesh, constraints, resolveThreads(request.threads));
   TetEditor editor(mesh, constraints, labels);
   editor.rebuildVertexMap();
   const std::vector<uint8_t> locked = editor.lockedVertices();
-  const double qT = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  const double qT = std::sin(request.degrees * 3.14159265358979323846 / 180.0);
   auto quality = [&](int32_t t)
   {
     const int32_t* v = mesh.vertices(t);
@@ -243,10 +301,13 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
   auto isLocked = [&](int32_t x) { return static_cast<size_t>(x) < locked.size() && locked[x] != 0; };
   int64_t inserted = 0;
   std::vector<Point> cand;
-  for (const auto& b : collectBadTets(mesh, qT, below, skip))
+  size_t tried = 0;
+  for (const auto& b : collectBadTets(mesh, qT, request.below, request.skip))
   {
     const int32_t t = b.second;
-    if (inserted >= maxPoints)
+    if (inserted >= request.maxPoints)
+      break;
+    if ((++tried & 63) == 0 && request.progress && request.progress->cancelled())
       break;
     if (mesh.isFree(t) || quality(t) >= qT) // replaced by an earlier insertion
       continue;
@@ -262,13 +323,13 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     const int32_t nv = mesh.addPoint(cand[0].data()); // coordinates overwritten below (p may move)
     double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
     PositionSearch search{ editor, x, nv, t, speculative };
-    search.scan(cand);
+    parallelScan.run(search, cand);
     if (search.best > -3)
       search.refine(lmean);
     if (search.best > 0 && (search.best > qt || speculative))
     {
-      std::copy(search.at.begin(), search.at.end(), x);
-      const int32_t start = editor.locate(x, t);
+      std::copy(search.at.begin(), search.at.end(), search.x);
+      const int32_t start = editor.locate(search.x, t);
       if (start >= 0 && editor.qualityInsertion(nv, start, t, nullptr, true) > -3) // inserted
       {
         ++inserted;

@@ -15,6 +15,7 @@
 // caller optimises around it and keeps the result only if the mesh's worst tet got better).
 #pragma once
 
+#include "Progress.h"
 #include "TetEditor.h"
 #include "TetMesh.h"
 
@@ -26,12 +27,26 @@
 namespace volgrid
 {
 
-// Tets below `degrees` (of min(theta_min, 180 - theta_max)), worst first after skipping `skip` of them;
-// at most maxPoints points. labels (per tet slot, optional) follow the new tets. below (optional): the tets
-// under `degrees` in (quality, slot) order, exactly what the sweep of the mesh would collect (e.g. an
-// optimisation worklist), so that no sweep is needed.
-int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels, double degrees,
-                     int64_t maxPoints, bool speculative = false, size_t skip = 0,
-                     const std::vector<std::pair<double, int32_t>>* below = nullptr);
+struct SplitRequest
+{
+  double degrees = 18; // tets below this (min(theta_min, 180 - theta_max), degrees) are split, worst first
+  int64_t maxPoints = 0;
+  bool speculative = false; // see above
+  size_t skip = 0;          // the first `skip` bad tets are left alone
+  // Optional: the tets under `degrees` in (quality, slot) order, exactly what a sweep of the mesh would collect
+  // (e.g. an optimisation worklist), so that no sweep is needed.
+  const std::vector<std::pair<double, int32_t>>* below = nullptr;
+  // The candidate positions of a tet are scored on this many threads (ParallelFor.h's rule); the mesh is the
+  // same for any count.
+  int threads = 1;
+  // Optional: asked every 64 bad tets whether to stop (the points inserted so far stay; the caller reports
+  // the cancellation).
+  Progress* progress = nullptr;
+};
+
+// Splits the bad tets of `request`; labels (per tet slot, optional) follow the new tets. Returns the number
+// of points inserted.
+int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vector<int32_t>* labels,
+                     const SplitRequest& request);
 
 } // namespace volgrid

@@ -495,7 +495,7 @@ private:
 
 int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
                                 std::vector<int32_t>* labels, const InsertionImprovementOptions& options,
-                                InsertionImprovementReport* report)
+                                InsertionImprovementReport* report, Progress* progress)
 {
   InsertionImprovementReport local;
   InsertionImprovementReport& rep = report ? *report : local;
@@ -569,11 +569,19 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
       std::sort(key.begin(), key.end());
       if (key != quads[k])
         continue; // replaced by an earlier attempt
+      if (progress && progress->cancelled())
+      {
+        rep.cancelled = true;
+        rep.kept = kept;
+        return kept;
+      }
       Attempt attempt(editor, lock, floor);
       ++rep.attempts;
       if (attempt.run(t))
         ++kept;
     }
+    if (progress)
+      progress->report((round + 1.0) / options.rounds, "Optimising");
     if (kept == keptBefore)
       break;
     low = std::make_unique<LowTets>(mesh, lowLimit, options.threads); // the next round's sweep as well

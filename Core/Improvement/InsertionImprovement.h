@@ -23,6 +23,7 @@
 // are never crossed, so the boundary stays exactly the input triangles. Labels (per tet slot) follow.
 #pragma once
 
+#include "Progress.h"
 #include "TetEditor.h"
 #include "TetMesh.h"
 
@@ -46,15 +47,17 @@ struct InsertionImprovementOptions
 
 struct InsertionImprovementReport
 {
-  int64_t attempts = 0; // worst tets tried
-  int64_t kept = 0;     // points left in the mesh
+  int64_t attempts = 0;   // worst tets tried
+  int64_t kept = 0;       // points left in the mesh
+  bool cancelled = false; // progress->cancelled() stopped the rounds (between two attempts: the mesh is valid)
 };
 
 // Improves the worst tets of `mesh` (ghost-free) by vertex insertion (see above). locked: optional extra
 // per-vertex locks (vertices of constrained faces never move anyway). labels: optional, per tet slot.
-// Returns the number of points kept.
+// Returns the number of points kept. progress (optional): asked before every attempt whether to stop, told
+// after every round ("Optimising").
 int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
                                 std::vector<int32_t>* labels, const InsertionImprovementOptions& options,
-                                InsertionImprovementReport* report = nullptr);
+                                InsertionImprovementReport* report = nullptr, Progress* progress = nullptr);
 
 } // namespace volgrid

@@ -81,8 +81,7 @@ Status QualityRounds::run()
   s = speculativeRounds();
   if (!s.ok())
     return s;
-  insertionRounds();
-  return Status::success();
+  return insertionRounds();
 }
 
 Status QualityRounds::optimise(int maxPasses, std::vector<std::pair<double, int32_t>>* below)
@@ -123,6 +122,18 @@ Status QualityRounds::optimise(int maxPasses, std::vector<std::pair<double, int3
 // Beyond the target the mesh's minimum is decided by its few worst tets: while it pays, aim a little
 // above the current worst (flips, smoothing and splitting touch only the tets below the aim and accept
 // strict improvements only), so a mesh already past the target still gets better where it is worst.
+SplitRequest QualityRounds::splitRequest(double degrees, int64_t maxPoints,
+                                         const std::vector<std::pair<double, int32_t>>* below) const
+{
+  SplitRequest request;
+  request.degrees = degrees;
+  request.maxPoints = maxPoints;
+  request.below = below;
+  request.threads = options.threads;
+  request.progress = progress;
+  return request;
+}
+
 Status QualityRounds::floorRounds()
 {
   std::vector<std::pair<double, int32_t>> low, below;
@@ -155,7 +166,7 @@ Status QualityRounds::floorRounds()
     Status fs = optimise(2, &below);
     if (!fs.ok())
       return fs;
-    stats.splitPoints += splitBadTets(mesh, &fc_, &tetRegion, one_.targetDegrees, 64, false, 0, &below);
+    stats.splitPoints += splitBadTets(mesh, &fc_, &tetRegion, splitRequest(one_.targetDegrees, 64, &below));
     below.clear();
     fs = optimise(1, &below);
     if (!fs.ok())
@@ -184,8 +195,9 @@ Status QualityRounds::optimiseSplitFloor()
   {
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-    const int64_t n = splitBadTets(mesh, &fc_, &tetRegion, options.optimization.targetDegrees,
-                                   std::max<int64_t>(200, mesh.numTets() / 20), false, 0, &below);
+    const int64_t n = splitBadTets(
+      mesh, &fc_, &tetRegion,
+      splitRequest(options.optimization.targetDegrees, std::max<int64_t>(200, mesh.numTets() / 20), &below));
     stats.splitPoints += n;
     if (n == 0)
       break;
@@ -298,8 +310,10 @@ Status QualityRounds::speculativeRounds()
     bool improved = false;
     for (int depth = 0; depth < 3 && !improved; ++depth)
     {
-      const int64_t k =
-        splitBadTets(mesh, &fc_, &tetRegion, one_.targetDegrees, 1, true, depth == 0 ? static_cast<size_t>(skip) : 0);
+      SplitRequest request = splitRequest(one_.targetDegrees, 1, nullptr);
+      request.speculative = true;
+      request.skip = depth == 0 ? static_cast<size_t>(skip) : 0;
+      const int64_t k = splitBadTets(mesh, &fc_, &tetRegion, request);
       if (k == 0)
         break;
       n += k;
@@ -326,17 +340,19 @@ Status QualityRounds::speculativeRounds()
 // What is still worst (typically tets of four boundary vertices on a needle triangle in a thin wedge,
 // on any mesh size): a point inserted for it, flipped and smoothed around, kept only when its region's
 // worst tet improves.
-void QualityRounds::insertionRounds()
+Status QualityRounds::insertionRounds()
 {
-  if (options.insertionRounds > 0)
-  {
-    InsertionImprovementOptions io;
-    io.rounds = options.insertionRounds;
-    io.plateauDegrees = options.optimization.targetDegrees;
-    io.threads = options.threads;
-    const int64_t kept = improveWorstByInsertion(mesh, &fc_, locked(), &tetRegion, io);
-    stats.splitPoints += kept;
-  }
+  if (options.insertionRounds <= 0)
+    return Status::success();
+  InsertionImprovementOptions io;
+  io.rounds = options.insertionRounds;
+  io.plateauDegrees = options.optimization.targetDegrees;
+  io.threads = options.threads;
+  InsertionImprovementReport report;
+  stats.splitPoints += improveWorstByInsertion(mesh, &fc_, locked(), &tetRegion, io, &report, progress);
+  if (report.cancelled)
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+  return Status::success();
 }
 
 } // namespace volgrid

@@ -12,6 +12,7 @@
 // the caller's, once at the end).
 #pragma once
 
+#include "BadTetSplitting.h"
 #include "MeshImprovement.h"
 
 #include <cstdint>
@@ -40,10 +41,13 @@ public:
   Status withCollapseRerun();
   Status withCollapsesThroughout();
   Status speculativeRounds();
-  void insertionRounds();
+  Status insertionRounds();
 
 private:
   const std::vector<uint8_t>* locked() const { return clusterLock_.empty() ? nullptr : &clusterLock_; }
+  // A split of the tets below `degrees` with this stage's threads and progress.
+  SplitRequest splitRequest(double degrees, int64_t maxPoints,
+                            const std::vector<std::pair<double, int32_t>>* below) const;
 
   TetMesh& mesh;
   const FaceConstraints& fc_;

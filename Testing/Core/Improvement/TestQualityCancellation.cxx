@@ -1,0 +1,100 @@
+// The quality stage's point insertions (BadTetSplitting.h, InsertionImprovement.h) stop when the user
+// cancels, leave a valid mesh, and score positions the same on any thread count.
+#include "BadTetSplitting.h"
+#include "InsertionImprovement.h"
+#include "Mesh/RandomDelaunay.h"
+#include "MeshChecker.h"
+
+#include <gtest/gtest.h>
+
+using namespace volgrid;
+
+namespace
+{
+// Says "stop" from its n-th question on.
+struct CancelFrom final : Progress
+{
+  int questions = 0, stopAt;
+  explicit CancelFrom(int n)
+    : stopAt(n)
+  {
+  }
+  void report(double, const char*) override {}
+  bool cancelled() override { return ++questions >= stopAt; }
+};
+
+void expectValid(const TetMesh& mesh)
+{
+  MeshCheckOptions options;
+  options.delaunay = false; // insertions keep the mesh valid, not Delaunay
+  const MeshCheckReport r = checkMesh(mesh, options);
+  EXPECT_TRUE(r.valid) << r.summary();
+}
+} // namespace
+
+TEST(QualityCancellation, InsertionRoundsStopBetweenAttempts)
+{
+  // A Delaunay mesh of random points has slivers (worst tet near 0 deg): the rounds have work.
+  TetMesh full;
+  randomDelaunay(full, 3000, 11);
+  TetMesh cancelled = full, once = full;
+  InsertionImprovementReport work;
+  improveWorstByInsertion(full, nullptr, nullptr, nullptr, InsertionImprovementOptions(), &work);
+  ASSERT_GT(work.attempts, 1);
+  EXPECT_FALSE(work.cancelled);
+
+  CancelFrom atOnce(1);
+  InsertionImprovementReport none;
+  EXPECT_EQ(
+    improveWorstByInsertion(cancelled, nullptr, nullptr, nullptr, InsertionImprovementOptions(), &none, &atOnce), 0);
+  EXPECT_TRUE(none.cancelled);
+  EXPECT_EQ(none.attempts, 0);
+
+  CancelFrom afterOne(2);
+  InsertionImprovementReport one;
+  improveWorstByInsertion(once, nullptr, nullptr, nullptr, InsertionImprovementOptions(), &one, &afterOne);
+  EXPECT_TRUE(one.cancelled);
+  EXPECT_EQ(one.attempts, 1);
+  expectValid(once);
+}
+
+TEST(QualityCancellation, SplittingStopsWithinSixtyFourBadTets)
+{
+  TetMesh mesh;
+  randomDelaunay(mesh, 2000, 12);
+  SplitRequest request;
+  request.degrees = 25; // the slivers and more: hundreds of bad tets
+  request.maxPoints = 1 << 20;
+  TetMesh all = mesh;
+  const int64_t everything = splitBadTets(all, nullptr, nullptr, request);
+  ASSERT_GT(everything, 64);
+  CancelFrom atOnce(1);
+  request.progress = &atOnce;
+  const int64_t stopped = splitBadTets(mesh, nullptr, nullptr, request);
+  EXPECT_LE(stopped, 64);
+  EXPECT_EQ(atOnce.questions, 1);
+  expectValid(mesh);
+}
+
+TEST(QualityCancellation, SplittingIsTheSameOnAnyThreadCount)
+{
+  TetMesh one;
+  randomDelaunay(one, 1500, 13);
+  TetMesh two = one, eight = one;
+  SplitRequest request;
+  request.degrees = 15;
+  request.maxPoints = 1 << 20;
+  const int64_t n1 = splitBadTets(one, nullptr, nullptr, request);
+  request.threads = 2;
+  const int64_t n2 = splitBadTets(two, nullptr, nullptr, request);
+  request.threads = 8;
+  const int64_t n8 = splitBadTets(eight, nullptr, nullptr, request);
+  ASSERT_GT(n1, 0);
+  EXPECT_EQ(n1, n2);
+  EXPECT_EQ(n1, n8);
+  EXPECT_EQ(one.points, two.points);
+  EXPECT_EQ(one.points, eight.points);
+  EXPECT_EQ(one.tetVertices, two.tetVertices);
+  EXPECT_EQ(one.tetVertices, eight.tetVertices);
+  expectValid(one);
+}
