@@ -3,9 +3,13 @@
 #include "BadTetSplitting.h"
 #include "InsertionImprovement.h"
 #include "MeshScan.h"
+#include "ParallelFor.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace volgrid
 {
@@ -221,42 +225,153 @@ Status QualityRounds::withCollapseRerun()
 {
   if (options.optimization.vertexRemoval && mesh.numTets() >= options.optimization.largeMeshTets)
     return withCollapsesThroughout();
-  const bool removal = options.optimization.vertexRemoval;
-  TetMesh startMesh;
-  std::vector<int32_t> startRegion;
-  ImprovementStatistics startStats;
-  if (removal)
-  {
-    startMesh = mesh;
-    startRegion = tetRegion;
-    startStats = stats;
-  }
+  if (!options.optimization.vertexRemoval)
+    return optimiseSplitFloor();
+  Rerun rerun(*this);
+  if (resolveThreads(options.threads) > 1)
+    return concurrentRerun(rerun);
   Status s = optimiseSplitFloor();
+  if (!s.ok() || !rerunPays())
+    return s;
+  s = rerun.rounds.optimiseSplitFloor();
   if (!s.ok())
     return s;
-  const double worstKept = worstSineDegrees(mesh, options.threads);
-  const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
-  if (removal && worstKept < removalDegrees && hasUnlockedVertexBelow(mesh, fc_, clusterLock_, removalDegrees))
-  {
-    TetMesh keptMesh = std::move(mesh);
-    std::vector<int32_t> keptRegion = std::move(tetRegion);
-    const ImprovementStatistics keptStats = stats;
-    mesh = std::move(startMesh);
-    tetRegion = std::move(startRegion);
-    stats = startStats;
-    one_.vertexRemoval = true;
-    s = optimiseSplitFloor();
-    if (!s.ok())
-      return s;
-    one_.vertexRemoval = false;
-    if (!(worstSineDegrees(mesh, options.threads) > worstKept))
-    {
-      mesh = std::move(keptMesh);
-      tetRegion = std::move(keptRegion);
-      stats = keptStats;
-    }
-  }
+  keepTheBetter(rerun);
   return Status::success();
+}
+
+// The second run's own mesh, labels and statistics, copied from the stage's start, and its rounds (vertex
+// collapses on).
+QualityRounds::Rerun::Rerun(const QualityRounds& first)
+  : mesh(first.mesh)
+  , tetRegion(first.tetRegion)
+  , stats(first.stats)
+  , rounds(mesh, first.fc_, first.clusterLock_, tetRegion, first.options, stats, first.progress)
+{
+  rounds.one_.vertexRemoval = true;
+}
+
+namespace
+{
+// The second run's progress beside the first: no reports (the first run's thread makes them) and a stop
+// flag that the first run's thread sets.
+class StopFlagProgress final : public Progress
+{
+public:
+  explicit StopFlagProgress(const std::atomic<bool>& stop)
+    : stop_(stop)
+  {
+  }
+  void report(double, const char*) override {}
+  bool cancelled() override { return stop_.load(); }
+
+private:
+  const std::atomic<bool>& stop_;
+};
+
+// The first run's progress: the caller's, whose cancel also stops the second run.
+class StoppingProgress final : public Progress
+{
+public:
+  StoppingProgress(Progress* to, std::atomic<bool>& stop)
+    : to_(to)
+    , stop_(stop)
+  {
+  }
+  void report(double fraction, const char* stage) override
+  {
+    if (to_)
+      to_->report(fraction, stage);
+  }
+  bool cancelled() override
+  {
+    const bool c = to_ && to_->cancelled();
+    if (c)
+      stop_ = true;
+    return c;
+  }
+
+private:
+  Progress* to_;
+  std::atomic<bool>& stop_;
+};
+} // namespace
+
+// Both runs at once, one thread each (their parallel loops then run on their own thread: the meshes are the
+// same as one run after the other). The caller's thread runs the first and keeps the caller's progress:
+// afterwards it stops the second when the first leaves it nothing to win, else waits for it, reporting and
+// asking whether to stop, so that a cancel still takes effect at once.
+Status QualityRounds::concurrentRerun(Rerun& rerun)
+{
+  std::atomic<bool> stop{ false }, secondStarted{ false }, secondDone{ false };
+  StopFlagProgress secondProgress(stop);
+  StoppingProgress firstProgress(progress, stop);
+  Progress* const callerProgress = progress;
+  const std::thread::id caller = std::this_thread::get_id();
+  Status first, second;
+  bool pays = false;
+  parallelRun(2,
+              [&](int worker)
+              {
+                if (worker == 1)
+                {
+                  if (stop)
+                    return;
+                  // On the caller's thread when the pool was busy (the workers then run one after the other).
+                  rerun.rounds.progress = std::this_thread::get_id() == caller ? callerProgress : &secondProgress;
+                  secondStarted = true;
+                  second = rerun.rounds.optimiseSplitFloor();
+                  secondDone = true;
+                  return;
+                }
+                progress = &firstProgress;
+                first = optimiseSplitFloor();
+                progress = callerProgress;
+                pays = first.ok() && rerunPays();
+                if (!pays)
+                  stop = true;
+                while (pays && secondStarted && !secondDone)
+                {
+                  if (progress)
+                  {
+                    progress->report(0, "Optimising"); // the bar stays; its observers (abort buttons) run
+                    if (progress->cancelled())
+                      stop = true;
+                  }
+                  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+                }
+              });
+  if (!first.ok())
+    return first;
+  if (!pays)
+    return Status::success();
+  if (!second.ok())
+    return second;
+  keepTheBetter(rerun);
+  return Status::success();
+}
+
+// Whether the collapses may do better than the first run: its worst tet is under the collapse threshold
+// and a vertex that could go is there.
+bool QualityRounds::rerunPays()
+{
+  worstKept_ = worstSineDegrees(mesh, options.threads);
+  const double removalDegrees = std::min(options.optimization.vertexRemovalDegrees, options.optimization.targetDegrees);
+  return worstKept_ < removalDegrees && hasUnlockedVertexBelow(mesh, fc_, clusterLock_, removalDegrees);
+}
+
+// The second run's mesh replaces the first's when its worst tet is better. Either way the options go on
+// from where the second run left them (as when both run on this object one after the other).
+void QualityRounds::keepTheBetter(Rerun& rerun)
+{
+  one_ = rerun.rounds.one_;
+  one_.vertexRemoval = false;
+  if (worstSineDegrees(rerun.mesh, options.threads) > worstKept_)
+  {
+    mesh = std::move(rerun.mesh);
+    tetRegion = std::move(rerun.tetRegion);
+    stats = rerun.stats;
+  }
 }
 
 // From kLargeMeshTets (LargeMesh.h) a second run of the whole stage would cost as much as the first: one

@@ -3,8 +3,9 @@
 //   optimise            flips, edge removal, smoothing (MeshOptimization.h) while a pass pays
 //   optimiseSplitFloor  optimisation, splitting of what it cannot fix (BadTetSplitting.h), floor rounds
 //   withCollapseRerun   optimiseSplitFloor, and again from the same start with vertex collapses when the
-//                       worst tet stays low; the better mesh is kept (below kLargeMeshTets tets, LargeMesh.h; from
-//                       there on, withCollapsesThroughout: one run with the collapses on from the start)
+//                       worst tet stays low (on two threads both runs at once); the better mesh is kept (below
+//                       kLargeMeshTets tets, LargeMesh.h; from there on, withCollapsesThroughout: one run with the
+//                       collapses on from the start)
 //   speculativeRounds   small meshes: a point for the worst tet, kept only when the worst tet improves
 //   insertionRounds     vertex insertion for the worst tets (InsertionImprovement.h)
 // run() is all of them in that order. Every round changes only unconstrained faces and moves no vertex of
@@ -44,6 +45,11 @@ public:
   Status insertionRounds();
 
 private:
+  struct Rerun;
+  // withCollapseRerun's steps.
+  Status concurrentRerun(Rerun& rerun);
+  bool rerunPays();
+  void keepTheBetter(Rerun& rerun);
   const std::vector<uint8_t>* locked() const { return clusterLock_.empty() ? nullptr : &clusterLock_; }
   // A split of the tets below `degrees` with this stage's threads and progress.
   SplitRequest splitRequest(double degrees, int64_t maxPoints,
@@ -57,6 +63,17 @@ private:
   ImprovementStatistics& stats;
   Progress* progress;
   OptimizationOptions one_; // the options of the next optimisation call (target, vertex removal)
+  double worstKept_ = 0;    // the first run's worst tet (degrees), for withCollapseRerun
+};
+
+// withCollapseRerun's second run: its own copy of the stage's start and its own rounds (vertex collapses on).
+struct QualityRounds::Rerun
+{
+  explicit Rerun(const QualityRounds& first);
+  TetMesh mesh;
+  std::vector<int32_t> tetRegion;
+  ImprovementStatistics stats;
+  QualityRounds rounds;
 };
 
 } // namespace volgrid
