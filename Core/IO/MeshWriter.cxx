@@ -104,6 +104,11 @@ bool writesPrisms(MeshFormat format)
     format == MeshFormat::SU2 || format == MeshFormat::CGNS || format == MeshFormat::Exodus;
 }
 
+bool writesPyramids(MeshFormat format)
+{
+  return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM;
+}
+
 std::string defaultOpenFoamPatchType(const std::string& name)
 {
   if (contains(name, "symmetry"))
@@ -133,10 +138,11 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
       ErrorKind::InvalidOption,
       "'" + path + "': prisms are not written to " + meshFormatName(format) +
         " (gmsh, OpenFOAM, SU2, CGNS, Exodus II and VTK take them); split them into tets for this format");
-  if (!mesh.pyramids.empty() && format != MeshFormat::Gmsh41 && format != MeshFormat::Gmsh22)
+  if (!mesh.pyramids.empty() && !writesPyramids(format))
     return Status::failure(ErrorKind::InvalidOption,
-                           "'" + path + "': pyramids (where a layer column collapsed) are written to gmsh .msh (and "
-                                        "VTK) only; split the layers into tets for this format (--split-prisms)");
+                           "'" + path +
+                             "': pyramids (where a layer column collapsed) are written to gmsh .msh, OpenFOAM (and "
+                             "VTK) only; split the layers into tets for this format (--split-prisms)");
   switch (format)
   {
     case MeshFormat::Gmsh41:

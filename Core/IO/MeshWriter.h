@@ -40,6 +40,8 @@ std::string tetgenStem(const std::string& path);
 const char* meshFormatName(MeshFormat format);
 // Whether the format's writer takes boundary-layer prisms and boundary quads (SolverMesh::prisms, quads).
 bool writesPrisms(MeshFormat format);
+// Whether it also takes the pyramids where a layer column collapsed (SolverMesh::pyramids).
+bool writesPyramids(MeshFormat format);
 
 struct MeshWriteOptions
 {

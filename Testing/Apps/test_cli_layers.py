@@ -73,7 +73,8 @@ def check_mesh(case, before=""):
 
 def check_mesh_counts(out):
     """checkMesh's cell, face and point counts, cell shapes and failed checks, for comparing two cases."""
-    keys = ("points", "faces", "internal faces", "cells", "boundary patches", "tetrahedra", "prisms", "polyhedra")
+    keys = ("points", "faces", "internal faces", "cells", "boundary patches", "tetrahedra", "prisms", "pyramids",
+            "polyhedra")
     counts = {k: int(m.group(1)) for k in keys for m in [re.search(r"^\s+%s:\s+(\d+)" % k, out, re.M)] if m}
     failed = re.search(r"Failed (\d+) mesh checks", out)
     counts["failed"] = int(failed.group(1)) if failed else 0
@@ -238,7 +239,23 @@ if r.returncode == 0:
         for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK",
                      "Number of regions: 1 (OK)"):
             expect(line in c.stdout, "straight wing: checkMesh: " + line, c)
-    # Pyramids go to gmsh and VTK only; another solver format asks for --split-prisms, nothing written.
+    # The pyramids written to OpenFOAM directly: checkMesh finds what it finds after gmshToFoam (the same
+    # counts by cell shape, failed checks and skew faces), each pyramid a pyramid.
+    r = run([volgrid, "mesh", w("wing.off"), w("wing_foam"), "--format", "openfoam", "--json", "--layers", "10",
+             "--first-height", "1e-4", "--growth", "1.2"])
+    expect(r.returncode == 0, "straight wing with pyramids to OpenFOAM", r)
+    if r.returncode == 0 and c is not None:
+        jf = json.loads(r.stdout.strip().splitlines()[-1])
+        cf = check_mesh(w("wing_foam"))
+        nf, ng = check_mesh_counts(cf.stdout), check_mesh_counts(c.stdout)
+        print("straight wing checkMesh, direct:", nf, "\n  gmshToFoam:", ng)
+        expect(nf == ng and nf.get("pyramids") == jf["pyramids"] > 0 and nf.get("prisms") == jf["wedges"]
+               and nf.get("tetrahedra") == jf["tets"] and nf.get("cells") == jf["wedges"] + jf["pyramids"] + jf["tets"],
+               "straight wing: checkMesh on the direct OpenFOAM pyramids = gmshToFoam's: %s %s" % (nf, ng), cf)
+        for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK", "Number of regions: 1 (OK)"):
+            expect(line in cf.stdout, "straight wing, direct OpenFOAM: checkMesh: " + line, cf)
+        expect(re.search(r"Boundary openness .* OK", cf.stdout) is not None, "straight wing, direct: closed boundary", cf)
+    # Pyramids go to gmsh, OpenFOAM and VTK only; another solver format asks for --split-prisms, nothing written.
     r = run([volgrid, "mesh", w("wing.off"), w("wing.su2"), "--layers", "10", "--first-height", "1e-4"])
     expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.su2")),
            "straight wing: pyramids to SU2 refused with a message", r)
