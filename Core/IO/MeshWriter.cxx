@@ -106,7 +106,8 @@ bool writesPrisms(MeshFormat format)
 
 bool writesPyramids(MeshFormat format)
 {
-  return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM;
+  return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM ||
+    format == MeshFormat::SU2;
 }
 
 std::string defaultOpenFoamPatchType(const std::string& name)
@@ -141,8 +142,9 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
   if (!mesh.pyramids.empty() && !writesPyramids(format))
     return Status::failure(ErrorKind::InvalidOption,
                            "'" + path +
-                             "': pyramids (where a layer column collapsed) are written to gmsh .msh, OpenFOAM (and "
-                             "VTK) only; split the layers into tets for this format (--split-prisms)");
+                             "': pyramids (where a layer column collapsed) are written to gmsh .msh, "
+                             "OpenFOAM, SU2 (and VTK) only; split the layers into tets for this format "
+                             "(--split-prisms)");
   switch (format)
   {
     case MeshFormat::Gmsh41:

@@ -131,6 +131,19 @@ def close(a, b, tolerance=1e-9):
     return abs(a - b) <= tolerance * max(abs(a), abs(b))
 
 
+# meshio (python3-meshio) lives in the system python; meshio_cells.py computes each cell's volume.
+MESHIO_PYTHON = "/usr/bin/python3" if run(["/usr/bin/python3", "-c", "import meshio"]).returncode == 0 else None
+MESHIO_CELLS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "meshio_cells.py")
+
+
+def meshio_cells(kind, path):
+    c = run([MESHIO_PYTHON, MESHIO_CELLS, kind, path], timeout=600)
+    return json.loads(c.stdout.strip().splitlines()[-1]) if c.returncode == 0 else {"error": c.describe()}
+
+
+if not MESHIO_PYTHON:
+    print("skipped the meshio read-backs: /usr/bin/python3 has no meshio")
+
 for fmt in ("su2", "cgns", "exo"):
     r = run([volgrid, "mesh", w("sis.off"), w("sis." + fmt), "--json"] + layers)
     expect(r.returncode == 0, "prisms to " + fmt, r)
@@ -255,10 +268,32 @@ if r.returncode == 0:
         for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK", "Number of regions: 1 (OK)"):
             expect(line in cf.stdout, "straight wing, direct OpenFOAM: checkMesh: " + line, cf)
         expect(re.search(r"Boundary openness .* OK", cf.stdout) is not None, "straight wing, direct: closed boundary", cf)
-    # Pyramids go to gmsh, OpenFOAM and VTK only; another solver format asks for --split-prisms, nothing written.
-    r = run([volgrid, "mesh", w("wing.off"), w("wing.su2"), "--layers", "10", "--first-height", "1e-4"])
-    expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.su2")),
-           "straight wing: pyramids to SU2 refused with a message", r)
+    # Pyramids go to gmsh, OpenFOAM, SU2 and VTK only; another solver format asks for --split-prisms,
+    # nothing written.
+    r = run([volgrid, "mesh", w("wing.off"), w("wing.cgns"), "--layers", "10", "--first-height", "1e-4"])
+    expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.cgns")),
+           "straight wing: pyramids to CGNS refused with a message", r)
+    # SU2 read back by meshio: the cells by type, every cell's volume positive in the format's own
+    # order, and the total the volume of the tet-only (--split-prisms) file.
+    wing_layers = ["--layers", "10", "--first-height", "1e-4", "--growth", "1.2"]
+    for kind, ext in (("su2", "su2"),):
+        r = run([volgrid, "mesh", w("wing.off"), w("wing." + ext), "--json"] + wing_layers)
+        rs = run([volgrid, "mesh", w("wing.off"), w("wing_split." + ext), "--split-prisms"] + wing_layers)
+        expect(r.returncode == 0 and rs.returncode == 0, "straight wing: prisms and pyramids to " + kind, r)
+        if r.returncode == 0 and rs.returncode == 0 and MESHIO_PYTHON:
+            jw = json.loads(r.stdout.strip().splitlines()[-1])
+            m, ms = meshio_cells(kind, w("wing." + ext)), meshio_cells(kind, w("wing_split." + ext))
+            print("straight wing, %s (meshio):" % kind, m)
+            expect(m.get("cells", {}).get("wedge") == jw["wedges"] and m["cells"].get("pyramid") == jw["pyramids"] > 0
+                   and m["cells"].get("tetra") == jw["tets"] and min(m["min"].values()) > 0
+                   and close(m["total_volume"], ms["total_volume"]),
+                   "straight wing, %s read by meshio: cells by type, positive volumes, the split mesh's volume: %s %s"
+                   % (kind, m, ms))
+    # VolGrid's own readers take tets only: the mixed files are refused with a message, nothing written.
+    for src, message in (("wing.su2", "type 13"),):
+        r = run([volgrid, "convert", w(src), w("back.node")])
+        expect(refused_cleanly(r) and message in r.stderr and not os.path.exists(w("back.node")),
+               "convert %s refused: %s" % (src, message), r)
 
 m6 = os.path.join(shared, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
 if shared and os.path.exists(m6):
