@@ -31,7 +31,7 @@ const std::string kLayerUsage =
   "  --layer-patches A,B  layered patches by name or id (default: named patches whose OpenFOAM type is wall,\n"
   "                       unnamed ones that neither span the domain's box nor enclose another surface)\n"
   "  --split-prisms       each prism as 3 tets (for tet-only solvers; needed for the formats without prisms,\n"
-  "                       and for pyramids in Medit, CGNS and Exodus II)\n";
+  "                       and for pyramids in CGNS and Exodus II)\n";
 
 int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
 {

@@ -101,13 +101,14 @@ const char* meshFormatName(MeshFormat format)
 bool writesPrisms(MeshFormat format)
 {
   return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM ||
-    format == MeshFormat::SU2 || format == MeshFormat::CGNS || format == MeshFormat::Exodus;
+    format == MeshFormat::SU2 || format == MeshFormat::Medit || format == MeshFormat::CGNS ||
+    format == MeshFormat::Exodus;
 }
 
 bool writesPyramids(MeshFormat format)
 {
   return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM ||
-    format == MeshFormat::SU2;
+    format == MeshFormat::SU2 || format == MeshFormat::Medit;
 }
 
 std::string defaultOpenFoamPatchType(const std::string& name)
@@ -138,12 +139,12 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
     return Status::failure(
       ErrorKind::InvalidOption,
       "'" + path + "': prisms are not written to " + meshFormatName(format) +
-        " (gmsh, OpenFOAM, SU2, CGNS, Exodus II and VTK take them); split them into tets for this format");
+        " (gmsh, OpenFOAM, SU2, Medit, CGNS, Exodus II and VTK take them); split them into tets for this format");
   if (!mesh.pyramids.empty() && !writesPyramids(format))
     return Status::failure(ErrorKind::InvalidOption,
                            "'" + path +
                              "': pyramids (where a layer column collapsed) are written to gmsh .msh, "
-                             "OpenFOAM, SU2 (and VTK) only; split the layers into tets for this format "
+                             "OpenFOAM, SU2, Medit (and VTK) only; split the layers into tets for this format "
                              "(--split-prisms)");
   switch (format)
   {

@@ -143,6 +143,18 @@ def meshio_cells(kind, path):
 
 if not MESHIO_PYTHON:
     print("skipped the meshio read-backs: /usr/bin/python3 has no meshio")
+else:
+    # The prisms in Medit, read by meshio: 24200 wedges, each of positive volume, as much volume as the split run.
+    r = run([volgrid, "mesh", w("sis.off"), w("sis.mesh")] + layers)
+    rs = run([volgrid, "mesh", w("sis.off"), w("sis_split.mesh"), "--split-prisms"] + layers)
+    expect(r.returncode == 0 and rs.returncode == 0, "prisms to Medit", r)
+    if r.returncode == 0 and rs.returncode == 0:
+        m, ms = meshio_cells("medit", w("sis.mesh")), meshio_cells("medit", w("sis_split.mesh"))
+        print("sphere in sphere, Medit (meshio):", m)
+        expect(m.get("cells", {}).get("wedge") == 24200 and min(m["min"].values()) > 0
+               and close(m["total_volume"], ms["total_volume"]) and "wedge" not in ms["cells"],
+               "Medit read by meshio: 24200 prisms, positive volumes, the split mesh's volume: %s %s" % (m, ms))
+
 
 for fmt in ("su2", "cgns", "exo"):
     r = run([volgrid, "mesh", w("sis.off"), w("sis." + fmt), "--json"] + layers)
@@ -268,15 +280,15 @@ if r.returncode == 0:
         for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK", "Number of regions: 1 (OK)"):
             expect(line in cf.stdout, "straight wing, direct OpenFOAM: checkMesh: " + line, cf)
         expect(re.search(r"Boundary openness .* OK", cf.stdout) is not None, "straight wing, direct: closed boundary", cf)
-    # Pyramids go to gmsh, OpenFOAM, SU2 and VTK only; another solver format asks for --split-prisms,
+    # Pyramids go to gmsh, OpenFOAM, SU2, Medit and VTK only; another solver format asks for --split-prisms,
     # nothing written.
     r = run([volgrid, "mesh", w("wing.off"), w("wing.cgns"), "--layers", "10", "--first-height", "1e-4"])
     expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.cgns")),
            "straight wing: pyramids to CGNS refused with a message", r)
-    # SU2 read back by meshio: the cells by type, every cell's volume positive in the format's own
+    # SU2 and Medit read back by meshio: the cells by type, every cell's volume positive in the format's own
     # order, and the total the volume of the tet-only (--split-prisms) file.
     wing_layers = ["--layers", "10", "--first-height", "1e-4", "--growth", "1.2"]
-    for kind, ext in (("su2", "su2"),):
+    for kind, ext in (("su2", "su2"), ("medit", "mesh")):
         r = run([volgrid, "mesh", w("wing.off"), w("wing." + ext), "--json"] + wing_layers)
         rs = run([volgrid, "mesh", w("wing.off"), w("wing_split." + ext), "--split-prisms"] + wing_layers)
         expect(r.returncode == 0 and rs.returncode == 0, "straight wing: prisms and pyramids to " + kind, r)
@@ -290,7 +302,7 @@ if r.returncode == 0:
                    "straight wing, %s read by meshio: cells by type, positive volumes, the split mesh's volume: %s %s"
                    % (kind, m, ms))
     # VolGrid's own readers take tets only: the mixed files are refused with a message, nothing written.
-    for src, message in (("wing.su2", "type 13"),):
+    for src, message in (("wing.mesh", "Medit Prisms (boundary layers) are not read"), ("wing.su2", "type 13")):
         r = run([volgrid, "convert", w(src), w("back.node")])
         expect(refused_cleanly(r) and message in r.stderr and not os.path.exists(w("back.node")),
                "convert %s refused: %s" % (src, message), r)
@@ -354,6 +366,16 @@ if shared and os.path.exists(m6):
     markers = {k: int(v) for k, v in re.findall(r"MARKER_TAG= (\S+)\nMARKER_ELEMS= (\d+)", text)}
     quads = sum(1 for l in text.split("NMARK=")[-1].splitlines() if l.startswith("9 "))
     expect(quads > 0, "M6: SU2 boundary quads on the symmetry plane")
+    # Medit: the same quads in its Quadrilaterals section (symmetry plane's reference), meshio reads every
+    # prism with a positive volume.
+    r = run([volgrid, "mesh", m6, w("m6.mesh"), "--json"] + m6_layers, timeout=600)
+    expect(r.returncode == 0, "M6: prisms to Medit", r)
+    if r.returncode == 0 and MESHIO_PYTHON:
+        jm, m = json.loads(r.stdout.strip().splitlines()[-1]), meshio_cells("medit", w("m6.mesh"))
+        print("M6, Medit (meshio):", m)
+        expect(m.get("cells", {}).get("quad") == quads and m["cells"].get("wedge") == jm["wedges"]
+               and m["cells"].get("tetra") == jm["tets"] and min(m["min"].values()) > 0,
+               "M6: Medit read by meshio: %d quads, the wedges and tets, positive volumes: %s" % (quads, m))
     export = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Export", "paraview_readers.py")
     for kind, path in (("cgns", w("m6.cgns")), ("exodus", w("m6.exo"))):
         if PVPYTHON and os.path.exists(path):

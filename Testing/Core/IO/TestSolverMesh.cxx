@@ -62,6 +62,24 @@ SolverMesh prismUnderTet()
   m.patchNames = { { 1, "wall" }, { 2, "symmetry" }, { 3, "farfield" } };
   return m;
 }
+
+// A pyramid (unit square base turning towards the apex 4) and a tet on its side (0 1 4); the base is a
+// boundary quad.
+SolverMesh pyramidBesideTet()
+{
+  SolverMesh m;
+  m.points = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1, 0.5, -1, 0.5 };
+  m.pyramids = { 0, 1, 2, 3, 4 };
+  m.pyramidRegion = { 1 };
+  m.tets = { 0, 1, 4, 5 };
+  m.tetRegion = { 1 };
+  m.triangles = { 1, 2, 4, 2, 3, 4, 3, 0, 4, 0, 5, 1, 1, 5, 4, 4, 5, 0 };
+  m.trianglePatch = { 2, 2, 2, 2, 2, 2 };
+  m.quads = { 0, 3, 2, 1 };
+  m.quadPatch = { 1 };
+  m.patchNames = { { 1, "wall" }, { 2, "farfield" } };
+  return m;
+}
 } // namespace
 
 TEST(PatchNames, ParsesGroupsAndBareIds)
@@ -217,14 +235,59 @@ TEST(MeshWriterSU2, PrismsInVtkOrderAndSideQuadsInTheirMarker)
   EXPECT_NE(text.find("NELEM= 2\n10 3 4 5 6 0\n13 0 2 1 3 5 4 1\n"), std::string::npos) << text;
   EXPECT_NE(text.find("MARKER_TAG= symmetry\nMARKER_ELEMS= 3\n9 0 1 4 3\n9 1 2 5 4\n9 2 0 3 5\n"), std::string::npos)
     << text;
-  // Formats without prisms refuse them by name, writing nothing.
-  for (MeshFormat f : { MeshFormat::Medit, MeshFormat::TetGen })
+  // TetGen has no prisms: refused by name, nothing written.
+  const std::string out = tempPath("prism-refused.x");
+  const Status s = writeSolverMesh(out, prismUnderTet(), MeshFormat::TetGen);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("prisms are not written to TetGen"), std::string::npos) << s.message;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(MeshWriterMedit, PrismsAndSideQuadsInTheirSections)
+{
+  const std::string path = tempPath("prism.mesh");
+  ASSERT_TRUE(writeSolverMesh(path, prismUnderTet(), MeshFormat::Medit).ok());
+  const std::string text = readText(path);
+  EXPECT_NE(text.find("Quadrilaterals\n3\n1 2 5 4 2\n2 3 6 5 2\n3 1 4 6 2\nTetrahedra\n1\n4 5 6 7 1\n"
+                      "Prisms\n1\n1 2 3 4 5 6 1\nEnd\n"),
+            std::string::npos)
+    << text;
+  EXPECT_NE(text.find("# VolGrid patch 2 symmetry\n"), std::string::npos) << text;
+  // VolGrid's reader takes tets only: the prisms are refused with a message, not skipped.
+  SolverMesh back;
+  const Status s = readSolverMesh(path, back);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("Medit Prisms (boundary layers) are not read"), std::string::npos) << s.message;
+}
+
+TEST(MeshWriters, PyramidsInOpenFoamSu2AndMedit)
+{
+  const std::string dir = tempPath("foam-pyramid");
+  std::filesystem::remove_all(dir);
+  ASSERT_TRUE(writeSolverMesh(dir, pyramidBesideTet(), MeshFormat::OpenFOAM).ok());
+  // The pyramid is cell 0, the tet cell 1; their face (0 1 4) is internal, out of the pyramid; the base
+  // is written out of it too.
+  const std::string owner = readText(dir + "/constant/polyMesh/owner");
+  EXPECT_NE(owner.find("nPoints:6  nCells:2  nFaces:8  nInternalFaces:1"), std::string::npos) << owner;
+  const std::string faces = readText(dir + "/constant/polyMesh/faces");
+  EXPECT_NE(faces.find("8\n(\n3(0 1 4)\n"), std::string::npos) << faces;
+  EXPECT_NE(faces.find("\n4(0 3 2 1)\n"), std::string::npos) << faces;
+  const std::string su2 = tempPath("pyramid.su2");
+  ASSERT_TRUE(writeSolverMesh(su2, pyramidBesideTet(), MeshFormat::SU2).ok());
+  EXPECT_NE(readText(su2).find("NELEM= 2\n10 0 1 4 5 0\n14 0 1 2 3 4 1\n"), std::string::npos) << readText(su2);
+  const std::string medit = tempPath("pyramid.mesh");
+  ASSERT_TRUE(writeSolverMesh(medit, pyramidBesideTet(), MeshFormat::Medit).ok());
+  EXPECT_NE(readText(medit).find("Quadrilaterals\n1\n1 4 3 2 1\nTetrahedra\n1\n1 2 5 6 1\nPyramids\n1\n1 2 3 4 5 1\n"),
+            std::string::npos)
+    << readText(medit);
+  // CGNS and Exodus II do not take pyramids yet: refused with a message, nothing written.
+  for (MeshFormat f : { MeshFormat::CGNS, MeshFormat::Exodus })
   {
-    const std::string out = tempPath(std::string("prism-refused.") + (f == MeshFormat::Medit ? "mesh" : "x"));
-    const Status s = writeSolverMesh(out, prismUnderTet(), f);
+    const std::string out = tempPath(std::string("pyramid-refused.") + (f == MeshFormat::CGNS ? "cgns" : "exo"));
+    std::filesystem::remove(out);
+    const Status s = writeSolverMesh(out, pyramidBesideTet(), f);
     EXPECT_FALSE(s.ok());
-    EXPECT_NE(s.message.find(std::string("prisms are not written to ") + meshFormatName(f)), std::string::npos)
-      << s.message;
+    EXPECT_NE(s.message.find("--split-prisms"), std::string::npos) << s.message;
     EXPECT_FALSE(std::filesystem::exists(out));
   }
 }
