@@ -280,11 +280,10 @@ if r.returncode == 0:
         for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK", "Number of regions: 1 (OK)"):
             expect(line in cf.stdout, "straight wing, direct OpenFOAM: checkMesh: " + line, cf)
         expect(re.search(r"Boundary openness .* OK", cf.stdout) is not None, "straight wing, direct: closed boundary", cf)
-    # Pyramids go to gmsh, OpenFOAM, SU2, Medit and VTK only; another solver format asks for --split-prisms,
-    # nothing written.
-    r = run([volgrid, "mesh", w("wing.off"), w("wing.cgns"), "--layers", "10", "--first-height", "1e-4"])
-    expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.cgns")),
-           "straight wing: pyramids to CGNS refused with a message", r)
+    # Pyramids go to every format that takes prisms; TetGen refuses both, nothing written.
+    r = run([volgrid, "mesh", w("wing.off"), w("wing.node"), "--layers", "10", "--first-height", "1e-4"])
+    expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.node")),
+           "straight wing: prisms and pyramids to TetGen refused with a message", r)
     # SU2 and Medit read back by meshio: the cells by type, every cell's volume positive in the format's own
     # order, and the total the volume of the tet-only (--split-prisms) file.
     wing_layers = ["--layers", "10", "--first-height", "1e-4", "--growth", "1.2"]
@@ -301,6 +300,26 @@ if r.returncode == 0:
                    and close(m["total_volume"], ms["total_volume"]),
                    "straight wing, %s read by meshio: cells by type, positive volumes, the split mesh's volume: %s %s"
                    % (kind, m, ms))
+    # CGNS and Exodus II read by ParaView: PYRA_5 and PYRAMID are VTK's pyramid (positive volumes), PENTA_6
+    # and WEDGE the reverse of VTK's wedge (every wedge negative, as for the sphere); the cells and total
+    # volume the split file's (Exodus's coordinates read as floats: 1e-6); cgnscheck is silent.
+    for kind, ext, tolerance in (("cgns", "cgns", 1e-9), ("exodus", "exo", 1e-6)):
+        r = run([volgrid, "mesh", w("wing.off"), w("wing." + ext), "--json"] + wing_layers)
+        expect(r.returncode == 0, "straight wing: prisms and pyramids to " + kind, r)
+        if r.returncode == 0 and PVPYTHON and MESHIO_PYTHON:
+            jw, cg = json.loads(r.stdout.strip().splitlines()[-1]), read_mixed(kind, w("wing." + ext))
+            print("straight wing, %s (ParaView):" % kind, cg)
+            expect(cg.get("tets") == jw["tets"] and cg.get("wedges") == jw["wedges"]
+                   and cg.get("pyramids") == jw["pyramids"] and cg.get("other") == 0 and cg["tet_min_max"][0] > 0
+                   and cg["pyramid_min_max"][0] > 0 and cg["wedge_min_max"][1] < 0
+                   and close(cg["tet_volume"] - cg["wedge_volume"] + cg["pyramid_volume"],
+                             meshio_cells("su2", w("wing_split.su2"))["total_volume"], tolerance),
+                   "straight wing: %s read by ParaView: cells by type, pyramids positive, the split volume: %s"
+                   % (kind, cg))
+    if r.returncode == 0 and shutil.which("cgnscheck"):
+        c = run(["cgnscheck", w("wing.cgns")])
+        expect(c.returncode == 0 and "error" not in c.stdout.lower() and "warning" not in c.stdout.lower(),
+               "cgnscheck on the wing's prisms and pyramids", c)
     # VolGrid's own readers take tets only: the mixed files are refused with a message, nothing written.
     for src, message in (("wing.mesh", "Medit Prisms (boundary layers) are not read"), ("wing.su2", "type 13")):
         r = run([volgrid, "convert", w(src), w("back.node")])

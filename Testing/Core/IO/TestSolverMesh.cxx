@@ -260,7 +260,7 @@ TEST(MeshWriterMedit, PrismsAndSideQuadsInTheirSections)
   EXPECT_NE(s.message.find("Medit Prisms (boundary layers) are not read"), std::string::npos) << s.message;
 }
 
-TEST(MeshWriters, PyramidsInOpenFoamSu2AndMedit)
+TEST(MeshWriters, PyramidsInEveryFormatWithPrisms)
 {
   const std::string dir = tempPath("foam-pyramid");
   std::filesystem::remove_all(dir);
@@ -280,16 +280,24 @@ TEST(MeshWriters, PyramidsInOpenFoamSu2AndMedit)
   EXPECT_NE(readText(medit).find("Quadrilaterals\n1\n1 4 3 2 1\nTetrahedra\n1\n1 2 5 6 1\nPyramids\n1\n1 2 3 4 5 1\n"),
             std::string::npos)
     << readText(medit);
-  // CGNS and Exodus II do not take pyramids yet: refused with a message, nothing written.
+  // CGNS (a PYRA_5 section) and Exodus II (a PYRAMID block) take them, which VolGrid's readers refuse by
+  // type; TetGen refuses them with a message, nothing written.
   for (MeshFormat f : { MeshFormat::CGNS, MeshFormat::Exodus })
   {
-    const std::string out = tempPath(std::string("pyramid-refused.") + (f == MeshFormat::CGNS ? "cgns" : "exo"));
-    std::filesystem::remove(out);
-    const Status s = writeSolverMesh(out, pyramidBesideTet(), f);
-    EXPECT_FALSE(s.ok());
-    EXPECT_NE(s.message.find("--split-prisms"), std::string::npos) << s.message;
-    EXPECT_FALSE(std::filesystem::exists(out));
+    const std::string path = tempPath(std::string("pyramid.") + (f == MeshFormat::CGNS ? "cgns" : "exo"));
+    std::filesystem::remove(path);
+    ASSERT_TRUE(writeSolverMesh(path, pyramidBesideTet(), f).ok());
+    SolverMesh back;
+    const Status r = readSolverMesh(path, back);
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(r.message.find("PYRA"), std::string::npos) << r.message;
   }
+  const std::string node = tempPath("pyramid-refused.node");
+  std::filesystem::remove(node);
+  const Status s = writeSolverMesh(node, pyramidBesideTet(), MeshFormat::TetGen);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("prisms are not written to TetGen"), std::string::npos) << s.message;
+  EXPECT_FALSE(std::filesystem::exists(node));
 }
 
 TEST(MeshWriterExodus, PrismSidesFoundOrRefusedByName)
@@ -305,7 +313,8 @@ TEST(MeshWriterExodus, PrismSidesFoundOrRefusedByName)
   std::filesystem::remove(badPath);
   const Status s = writeSolverMesh(badPath, bad, MeshFormat::Exodus);
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.message.find("boundary quad 2 is not a face of any tet or prism"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("boundary quad 2 is not a face of any tet, prism or pyramid"), std::string::npos)
+    << s.message;
   EXPECT_FALSE(std::filesystem::exists(badPath));
 }
 
