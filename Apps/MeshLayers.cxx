@@ -30,8 +30,8 @@ const std::string kLayerUsage =
   optionUsage(option::growth, "R") + optionUsage(option::layerThickness, "T") +
   "  --layer-patches A,B  layered patches by name or id (default: named patches whose OpenFOAM type is wall,\n"
   "                       unnamed ones that neither span the domain's box nor enclose another surface)\n"
-  "  --split-prisms       each prism as 3 tets (for tet-only solvers; needed for the formats without prisms,\n"
-  "                       and for pyramids outside gmsh .msh)\n";
+  "  --split-prisms       each prism as 3 tets, each pyramid as 2 (for tet-only solvers; needed for TetGen,\n"
+  "                       the one format without prisms and pyramids)\n";
 
 int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
 {

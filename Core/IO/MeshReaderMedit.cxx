@@ -98,10 +98,10 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
   readNameComments(text, mesh);
   Scanner sc(text, path, true);
   const int64_t limit = countLimit(text);
-  static const std::pair<const char*, int> skipped[] = {
-    { "Edges", 3 },  { "Quadrilaterals", 5 },   { "Prisms", 7 },        { "Hexahedra", 9 },        { "Corners", 1 },
-    { "Ridges", 1 }, { "RequiredVertices", 1 }, { "RequiredEdges", 1 }, { "RequiredTriangles", 1 }
-  };
+  static const std::pair<const char*, int> skipped[] = { { "Edges", 3 },         { "Quadrilaterals", 5 },
+                                                         { "Hexahedra", 9 },     { "Corners", 1 },
+                                                         { "Ridges", 1 },        { "RequiredVertices", 1 },
+                                                         { "RequiredEdges", 1 }, { "RequiredTriangles", 1 } };
   std::string_view tok;
   int64_t value = 0;
   while (s.ok() && sc.next(tok) && tok != "End")
@@ -136,6 +136,10 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
       int per = 0;
       for (const auto& sk : skipped)
         per = tok == sk.first ? sk.second : per;
+      if (tok == "Prisms" || tok == "Pyramids") // skipping them would leave a hole in the volume
+        return sc.error("Medit " + std::string(tok) +
+                        " (boundary layers) are not read: VolGrid reads tet meshes only "
+                        "(write the layers with --split-prisms to read them back)");
       if (per == 0)
         return sc.error("unknown Medit section '" + std::string(tok.substr(0, 40)) + "'");
       double ignored = 0;

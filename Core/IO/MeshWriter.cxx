@@ -101,7 +101,8 @@ const char* meshFormatName(MeshFormat format)
 bool writesPrisms(MeshFormat format)
 {
   return format == MeshFormat::Gmsh41 || format == MeshFormat::Gmsh22 || format == MeshFormat::OpenFOAM ||
-    format == MeshFormat::SU2 || format == MeshFormat::CGNS || format == MeshFormat::Exodus;
+    format == MeshFormat::SU2 || format == MeshFormat::Medit || format == MeshFormat::CGNS ||
+    format == MeshFormat::Exodus;
 }
 
 std::string defaultOpenFoamPatchType(const std::string& name)
@@ -128,15 +129,11 @@ Status writeSolverMesh(const std::string& path, const SolverMesh& mesh, MeshForm
     normalizeLabels(copy);
     return writeSolverMesh(path, copy, format, options);
   }
-  if ((!mesh.prisms.empty() || !mesh.quads.empty()) && !writesPrisms(format))
-    return Status::failure(
-      ErrorKind::InvalidOption,
-      "'" + path + "': prisms are not written to " + meshFormatName(format) +
-        " (gmsh, OpenFOAM, SU2, CGNS, Exodus II and VTK take them); split them into tets for this format");
-  if (!mesh.pyramids.empty() && format != MeshFormat::Gmsh41 && format != MeshFormat::Gmsh22)
+  if ((!mesh.prisms.empty() || !mesh.quads.empty() || !mesh.pyramids.empty()) && !writesPrisms(format))
     return Status::failure(ErrorKind::InvalidOption,
-                           "'" + path + "': pyramids (where a layer column collapsed) are written to gmsh .msh (and "
-                                        "VTK) only; split the layers into tets for this format (--split-prisms)");
+                           "'" + path + "': boundary-layer prisms are not written to " + meshFormatName(format) +
+                             " (gmsh, OpenFOAM, SU2, Medit, CGNS, Exodus II and VTK take them and their pyramids); "
+                             "split them into tets for this format");
   switch (format)
   {
     case MeshFormat::Gmsh41:

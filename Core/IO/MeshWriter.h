@@ -38,7 +38,8 @@ MeshFormat meshFormatFromPath(const std::string& path);
 // The common stem of a TetGen file set, for its reader and its writer: "a.node", "a.ele", "a.face", "a" -> "a".
 std::string tetgenStem(const std::string& path);
 const char* meshFormatName(MeshFormat format);
-// Whether the format's writer takes boundary-layer prisms and boundary quads (SolverMesh::prisms, quads).
+// Whether the format's writer takes boundary-layer prisms, boundary quads and the pyramids where a layer
+// column collapsed (SolverMesh::prisms, quads, pyramids).
 bool writesPrisms(MeshFormat format);
 
 struct MeshWriteOptions

@@ -1,6 +1,8 @@
 // CGNS writer (Debian's libcgns, HDF5): one base, one unstructured zone; the tets in one TETRA_4 section
 // per region (named after the region), the boundary-layer prisms in one PENTA_6 section per region
-// ("<region>_prisms"; SolverMesh's order is CGNS's: face (1 3 2) points out), then per patch its boundary
+// ("<region>_prisms"; SolverMesh's order is CGNS's: face (1 3 2) points out), the pyramids of collapsed
+// layer columns in one PYRA_5 section per region ("<region>_pyramids"; SolverMesh's order is CGNS's too:
+// face (1 4 3 2) points out), then per patch its boundary
 // triangles (TRI_3 section) and prism side quads (QUAD_4 section "<patch>_quads", right after), and one
 // boundary condition per patch, named after it, over the element range of its sections (face-centred). Each
 // condition is FamilySpecified, its family (same name) holding the type (wall, symmetry, far field ...):
@@ -49,6 +51,7 @@ std::string longNameError(const SolverMesh& mesh)
   std::vector<int32_t> faces = mesh.trianglePatch, cells = mesh.tetRegion;
   faces.insert(faces.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
   cells.insert(cells.end(), mesh.prismRegion.begin(), mesh.prismRegion.end());
+  cells.insert(cells.end(), mesh.pyramidRegion.begin(), mesh.pyramidRegion.end());
   for (int32_t p : distinctLabels(faces))
     if (labelName(mesh.patchNames, p, "patch").size() > 32)
       return "patch name '" + labelName(mesh.patchNames, p, "patch") + "' is longer than CGNS's 32 characters";
@@ -110,7 +113,8 @@ bool writeBoundaryConditions(int file, int base, int zone, const SolverMesh& mes
 bool writeZone(int file, const SolverMesh& mesh)
 {
   int base = 0, zone = 0, coordinate = 0;
-  const cgsize_t cells = static_cast<cgsize_t>(mesh.numberOfTets() + static_cast<int64_t>(mesh.prisms.size() / 6));
+  const cgsize_t cells = static_cast<cgsize_t>(mesh.numberOfTets() + static_cast<int64_t>(mesh.prisms.size() / 6) +
+                                               static_cast<int64_t>(mesh.pyramids.size() / 5));
   cgsize_t size[3] = { static_cast<cgsize_t>(mesh.numberOfPoints()), cells, 0 };
   if (cg_base_write(file, "Base", 3, 3, &base) != CG_OK ||
       cg_zone_write(file, base, "Zone", size, CGNS_ENUMV(Unstructured), &zone) != CG_OK ||
@@ -134,7 +138,9 @@ bool writeZone(int file, const SolverMesh& mesh)
   if (!writeSections(file, base, zone, CGNS_ENUMV(TETRA_4), 4, mesh.tets, mesh.tetRegion, mesh.regionNames, "region",
                      "", distinctLabels(mesh.tetRegion), next, cellRanges) ||
       !writeSections(file, base, zone, CGNS_ENUMV(PENTA_6), 6, mesh.prisms, mesh.prismRegion, mesh.regionNames,
-                     "region", "_prisms", distinctLabels(mesh.prismRegion), next, cellRanges))
+                     "region", "_prisms", distinctLabels(mesh.prismRegion), next, cellRanges) ||
+      !writeSections(file, base, zone, CGNS_ENUMV(PYRA_5), 5, mesh.pyramids, mesh.pyramidRegion, mesh.regionNames,
+                     "region", "_pyramids", distinctLabels(mesh.pyramidRegion), next, cellRanges))
     return false;
   // A patch's triangles and quads are consecutive: one element range for its boundary condition.
   std::vector<int32_t> faces = mesh.trianglePatch;
@@ -158,7 +164,7 @@ Status writeCGNS(const std::string& path, const SolverMesh& mesh)
 {
   if (mesh.numberOfPoints() > 2147483647LL ||
       mesh.numberOfTets() + mesh.numberOfTriangles() +
-          static_cast<int64_t>(mesh.prismRegion.size() + mesh.quadPatch.size()) >
+          static_cast<int64_t>(mesh.prismRegion.size() + mesh.pyramidRegion.size() + mesh.quadPatch.size()) >
         2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
                            "cannot write CGNS file '" + path +

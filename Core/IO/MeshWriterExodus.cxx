@@ -1,8 +1,10 @@
 // Exodus II writer (Debian's libexoIIv2c over netCDF): the tets in one TETRA element block per region
 // (block id = region label, named after the region), boundary-layer prisms in one WEDGE block per region
 // after them (id = region label + the largest tet region label, named "<region>_prisms"; SolverMesh's
-// order is Exodus's: side 4 (1 3 2) points out), and one side set per patch (id = patch label, named
-// after it) listing each boundary triangle and prism side quad as (owning element, Exodus side).
+// order is Exodus's: side 4 (1 3 2) points out), the pyramids of collapsed layer columns in one PYRAMID
+// block per region after those (id = region label + the largest prism block id, "<region>_pyramids";
+// SolverMesh's order is Exodus's too: side 5 (1 4 3 2) points out), and one side set per patch (id = patch
+// label, named after it) listing each boundary triangle and quad as (owning element, Exodus side).
 // Elements are numbered block by block, as Exodus numbers them. Point fields (SolverMesh::pointData)
 // become nodal variables at time 0.
 #include "BoundaryFaceOwners.h"
@@ -42,32 +44,47 @@ int putNames(int file, ex_entity_type kind, const std::vector<int32_t>& labels, 
 
 // Side f + 1 of an Exodus II wedge in SolverMesh's order, outward (a triangle's fourth entry is -1).
 const int kExodusWedgeSide[5][4] = { { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 0, 3, 5, 2 }, { 0, 2, 1, -1 }, { 3, 4, 5, -1 } };
+// And of an Exodus II pyramid (quad 1-4 turning towards the apex 5).
+const int kExodusPyramidSide[5][4] = { { 0, 1, 4, -1 },
+                                       { 1, 2, 4, -1 },
+                                       { 2, 3, 4, -1 },
+                                       { 3, 0, 4, -1 },
+                                       { 0, 3, 2, 1 } };
 
-// A boundary face's owner: its element (tets first, then prisms: prism w is element numberOfTets + w, both
-// 0-based before the block numbering) and its 0-based Exodus side.
+// A boundary face's owner: its element (tets first, then prisms, then pyramids: prism w is element
+// numberOfTets + w, all 0-based before the block numbering) and its 0-based Exodus side.
 struct SideOwner
 {
   int64_t cell = -1;
   int side = -1;
 };
 
+// The sides of the cells of one layer kind (n points each, numbered from `first`) by sorted key.
+void addLayerSides(const std::vector<int32_t>& cells, size_t n, const int (&sides)[5][4], int64_t first,
+                   std::vector<std::pair<std::array<int32_t, 4>, SideOwner>>& out)
+{
+  for (size_t c = 0; c < cells.size() / n; ++c)
+    for (int side = 0; side < 5; ++side)
+    {
+      const int* f = sides[side];
+      const int32_t* v = cells.data() + n * c;
+      out.push_back(
+        { cellFaceKey(v[f[0]], v[f[1]], v[f[2]], f[3] < 0 ? -1 : v[f[3]]), { first + static_cast<int64_t>(c), side } });
+    }
+}
+
 // Owners of the boundary triangles (then the quads, after them): tet faces by findBoundaryFaceOwners, the
-// rest among the prisms' faces. Fails naming the first face that is neither.
+// rest among the prisms' and pyramids' faces. Fails naming the first face that is none of these.
 Status findSideOwners(const SolverMesh& mesh, std::vector<SideOwner>& owners)
 {
   std::vector<FaceOwner> tetOwners;
   const Status tets = findBoundaryFaceOwners(mesh, tetOwners);
-  if (!tets.ok() && mesh.prisms.empty())
+  if (!tets.ok() && mesh.prisms.empty() && mesh.pyramids.empty())
     return tets;
-  std::vector<std::pair<std::array<int32_t, 4>, SideOwner>> prismFaces;
-  for (size_t w = 0; w < mesh.prisms.size() / 6; ++w)
-    for (int side = 0; side < 5; ++side)
-    {
-      const int* f = kExodusWedgeSide[side];
-      const int32_t* v = mesh.prisms.data() + 6 * w;
-      prismFaces.push_back({ cellFaceKey(v[f[0]], v[f[1]], v[f[2]], f[3] < 0 ? -1 : v[f[3]]),
-                             { mesh.numberOfTets() + static_cast<int64_t>(w), side } });
-    }
+  std::vector<std::pair<std::array<int32_t, 4>, SideOwner>> prismFaces; // and the pyramids'
+  addLayerSides(mesh.prisms, 6, kExodusWedgeSide, mesh.numberOfTets(), prismFaces);
+  addLayerSides(mesh.pyramids, 5, kExodusPyramidSide,
+                mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size()), prismFaces);
   std::sort(prismFaces.begin(), prismFaces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   const auto prismOwner = [&](const std::array<int32_t, 4>& key)
   {
@@ -92,7 +109,7 @@ Status findSideOwners(const SolverMesh& mesh, std::vector<SideOwner>& owners)
       return Status::failure(ErrorKind::InvalidOption,
                              std::string("boundary ") + (triangle ? "triangle " : "quad ") +
                                std::to_string(triangle ? t : t - mesh.triangles.size() / 3) +
-                               " is not a face of any tet or prism");
+                               " is not a face of any tet, prism or pyramid");
   }
   return Status::success();
 }
@@ -102,6 +119,8 @@ size_t longestName(const SolverMesh& mesh)
   size_t longest = 0;
   for (int32_t r : distinctLabels(mesh.prismRegion))
     longest = std::max(longest, labelName(mesh.regionNames, r, "region").size() + 7);
+  for (int32_t r : distinctLabels(mesh.pyramidRegion))
+    longest = std::max(longest, labelName(mesh.regionNames, r, "region").size() + 9);
   for (int32_t p : distinctLabels(mesh.trianglePatch))
     longest = std::max(longest, labelName(mesh.patchNames, p, "patch").size());
   for (int32_t r : distinctLabels(mesh.tetRegion))
@@ -135,23 +154,29 @@ bool writeKindBlocks(int file, const char* type, int nv, const std::vector<int32
   return true;
 }
 
-// The tet blocks, then the prism blocks; their names.
+// The tet blocks, then the prism blocks, then the pyramid blocks; their names.
 bool writeBlocks(int file, const SolverMesh& mesh, const std::vector<int32_t>& regions,
                  std::vector<int64_t>& elementNumber)
 {
   const std::vector<int32_t> prismRegions = distinctLabels(mesh.prismRegion);
+  const std::vector<int32_t> pyramidRegions = distinctLabels(mesh.pyramidRegion);
   const int32_t offset = regions.empty() ? 0 : regions.back();
-  elementNumber.assign(mesh.tetRegion.size() + mesh.prismRegion.size(), 0);
+  const int32_t pyramidOffset = offset + (prismRegions.empty() ? 0 : prismRegions.back());
+  elementNumber.assign(mesh.tetRegion.size() + mesh.prismRegion.size() + mesh.pyramidRegion.size(), 0);
   int64_t next = 1;
   if (!writeKindBlocks(file, "TETRA", 4, mesh.tets, mesh.tetRegion, 0, 0, next, elementNumber) ||
       !writeKindBlocks(file, "WEDGE", 6, mesh.prisms, mesh.prismRegion, offset, mesh.tetRegion.size(), next,
-                       elementNumber))
+                       elementNumber) ||
+      !writeKindBlocks(file, "PYRAMID", 5, mesh.pyramids, mesh.pyramidRegion, pyramidOffset,
+                       mesh.tetRegion.size() + mesh.prismRegion.size(), next, elementNumber))
     return false;
   std::vector<std::string> texts;
   for (int32_t r : regions)
     texts.push_back(labelName(mesh.regionNames, r, "region"));
   for (int32_t r : prismRegions)
     texts.push_back(labelName(mesh.regionNames, r, "region") + "_prisms");
+  for (int32_t r : pyramidRegions)
+    texts.push_back(labelName(mesh.regionNames, r, "region") + "_pyramids");
   std::vector<char*> pointers;
   for (std::string& t : texts)
     pointers.push_back(&t[0]);
@@ -210,8 +235,10 @@ bool writeFile(int file, const SolverMesh& mesh, const std::vector<SideOwner>& o
   std::vector<int32_t> faces = mesh.trianglePatch;
   faces.insert(faces.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
   const std::vector<int32_t> patches = distinctLabels(faces);
-  const size_t blocks = regions.size() + distinctLabels(mesh.prismRegion).size();
-  const int64_t elements = mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size());
+  const size_t blocks =
+    regions.size() + distinctLabels(mesh.prismRegion).size() + distinctLabels(mesh.pyramidRegion).size();
+  const int64_t elements =
+    mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size() + mesh.pyramidRegion.size());
   const size_t longest = longestName(mesh);
   if (longest > 32 && ex_set_max_name_length(file, static_cast<int>(longest)) < 0)
     return false;
@@ -234,7 +261,7 @@ bool writeFile(int file, const SolverMesh& mesh, const std::vector<SideOwner>& o
 Status writeExodus(const std::string& path, const SolverMesh& mesh)
 {
   if (mesh.numberOfPoints() > 2147483647LL ||
-      mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size()) > 2147483647LL)
+      mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size() + mesh.pyramidRegion.size()) > 2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
                            "cannot write Exodus II file '" + path + "': more than 2^31 points or cells");
   std::vector<SideOwner> owners;

@@ -1,10 +1,10 @@
 // OpenFOAM polyMesh writer: CASE/constant/polyMesh/{points,faces,owner,neighbour,boundary}, ASCII.
-// Every prism (first, as in the .vtu) and every tet is a cell; faces are triangles or quads (prism
-// sides). Faces are oriented out of their owner; internal faces come first, in upper triangular order
-// (owner < neighbour, sorted by owner then neighbour), then the boundary faces grouped by patch in label
-// order. A boundary face takes the patch of the boundary triangle (or quad: prism sides on a symmetry
-// plane) with the same points; a boundary face without one fails (the mesh and its patches disagree).
-// Triangles between two cells (an interface between regions) are internal faces.
+// Every prism (first, as in the .vtu), pyramid (where a layer column collapsed) and tet is a cell; faces
+// are triangles or quads (prism sides, pyramid bases). Faces are oriented out of their owner; internal
+// faces come first, in upper triangular order (owner < neighbour, sorted by owner then neighbour), then
+// the boundary faces grouped by patch in label order. A boundary face takes the patch of the boundary triangle (or
+// quad: prism sides on a symmetry plane) with the same points; a boundary face without one fails (the mesh and its
+// patches disagree). Triangles between two cells (an interface between regions) are internal faces.
 #include "CellFaces.h"
 #include "MeshWriter.h"
 #include "OutputFile.h"
@@ -54,7 +54,7 @@ std::vector<std::pair<std::array<int32_t, 4>, int32_t>> boundaryKeys(const Solve
 
 Status buildPolyMesh(const SolverMesh& mesh, const std::vector<int32_t>& patches, PolyMesh& poly)
 {
-  const std::vector<CellFace> faces = sortedCellFaces(mesh.points, mesh.tets, mesh.prisms);
+  const std::vector<CellFace> faces = sortedCellFaces(mesh.points, mesh.tets, mesh.prisms, mesh.pyramids);
   struct Internal
   {
     int32_t owner, neighbour;
@@ -162,8 +162,9 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
   std::fprintf(faces.stream(), ")\n");
   if (!(s = faces.commit()).ok())
     return s;
-  const std::string note = "nPoints:" + std::to_string(mesh.numberOfPoints()) +
-    "  nCells:" + std::to_string(mesh.numberOfTets() + static_cast<int64_t>(mesh.prisms.size() / 6)) +
+  const std::string note = "nPoints:" + std::to_string(mesh.numberOfPoints()) + "  nCells:" +
+    std::to_string(mesh.numberOfTets() + static_cast<int64_t>(mesh.prisms.size() / 6) +
+                   static_cast<int64_t>(mesh.pyramids.size() / 5)) +
     "  nFaces:" + std::to_string(poly.faces.size()) + "  nInternalFaces:" + std::to_string(poly.neighbour.size());
   if (!(s = writeLabels(dir + "/owner", "owner", poly.owner, note)).ok() ||
       !(s = writeLabels(dir + "/neighbour", "neighbour", poly.neighbour, note)).ok() ||

@@ -1,6 +1,7 @@
 // SU2 native mesh writer (.su2, ASCII): NDIME, the tets (VTK type 10, 0-based point ids) then the
 // boundary-layer prisms (VTK type 13, VTK's wedge order: the first triangle's normal points away from the
-// second, as SU2's CPrism faces have it), the points, and one MARKER_TAG per patch with its boundary
+// second, as SU2's CPrism faces have it), the pyramids (VTK type 14, in SolverMesh's and VTK's order: the
+// quad's normal towards the apex), the points, and one MARKER_TAG per patch with its boundary
 // triangles (VTK type 5) and prism side quads (VTK type 9). SU2 has no region names.
 #include "MeshWriter.h"
 #include "OutputFile.h"
@@ -19,7 +20,8 @@ Status writeSU2(const std::string& path, const SolverMesh& mesh)
     return s;
   std::FILE* f = out.stream();
   const int64_t numPrisms = static_cast<int64_t>(mesh.prisms.size() / 6);
-  std::fprintf(f, "NDIME= 3\nNELEM= %" PRId64 "\n", mesh.numberOfTets() + numPrisms);
+  const int64_t numPyramids = static_cast<int64_t>(mesh.pyramids.size() / 5);
+  std::fprintf(f, "NDIME= 3\nNELEM= %" PRId64 "\n", mesh.numberOfTets() + numPrisms + numPyramids);
   for (int64_t t = 0; t < mesh.numberOfTets(); ++t)
   {
     const int32_t* v = mesh.tets.data() + 4 * t;
@@ -29,6 +31,12 @@ Status writeSU2(const std::string& path, const SolverMesh& mesh)
   {
     const int32_t* v = mesh.prisms.data() + 6 * w;
     std::fprintf(f, "13 %d %d %d %d %d %d %" PRId64 "\n", v[0], v[2], v[1], v[3], v[5], v[4], mesh.numberOfTets() + w);
+  }
+  for (int64_t y = 0; y < numPyramids; ++y)
+  {
+    const int32_t* v = mesh.pyramids.data() + 5 * y;
+    std::fprintf(f, "14 %d %d %d %d %d %" PRId64 "\n", v[0], v[1], v[2], v[3], v[4],
+                 mesh.numberOfTets() + numPrisms + y);
   }
   std::fprintf(f, "NPOIN= %" PRId64 "\n", mesh.numberOfPoints());
   for (int64_t i = 0; i < mesh.numberOfPoints(); ++i)

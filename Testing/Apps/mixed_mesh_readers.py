@@ -1,8 +1,9 @@
 """Readers VolGrid did not write, on a mixed (prism + tet) mesh, run under pvpython: ParaView's .vtu, CGNS and
 Exodus II readers (vtkXMLUnstructuredGridReader, vtkCGNSReader, vtkExodusIIReader), and for SU2 (no reader here) the file's element lines
-taken as the VTK cell types they name. Prints one JSON line: cells by type ("tets", "wedges", "other") and
+taken as the VTK cell types they name. Prints one JSON line: cells by type ("tets", "wedges", "pyramids", "other") and
 their signed volumes by vtkCellSizeFilter (VTK's wedge: the first triangle's normal points away from the
-second, as vtkCellTypeSource makes them): "tet_volume", "wedge_volume", "tet_min_max", "wedge_min_max".
+second, as vtkCellTypeSource makes them; VTK's pyramid: the base's normal towards the apex): "tet_volume",
+"wedge_volume", "pyramid_volume", "tet_min_max", "wedge_min_max", "pyramid_min_max".
 Usage: pvpython mixed_mesh_readers.py vtu|cgns|exodus|su2 FILE"""
 import json
 import sys
@@ -77,8 +78,9 @@ def su2(path):
 
 
 grids = {"vtu": vtu, "cgns": cgns, "exodus": exodus, "su2": su2}[sys.argv[1]](sys.argv[2])
-out = {"tets": 0, "wedges": 0, "other": 0, "tet_volume": 0.0, "wedge_volume": 0.0}
-bounds = {10: [float("inf"), -float("inf")], 13: [float("inf"), -float("inf")]}
+NAMES = {10: "tet", 13: "wedge", 14: "pyramid"}
+out = {"tets": 0, "wedges": 0, "pyramids": 0, "other": 0, "tet_volume": 0.0, "wedge_volume": 0.0, "pyramid_volume": 0.0}
+bounds = {t: [float("inf"), -float("inf")] for t in NAMES}
 for g in grids:
     size = vtkCellSizeFilter()
     size.SetInputData(g)
@@ -86,9 +88,10 @@ for g in grids:
     v = size.GetOutput().GetCellData().GetArray("Volume")
     for c in range(g.GetNumberOfCells()):
         t, x = g.GetCellType(c), v.GetValue(c)
-        out[{10: "tets", 13: "wedges"}.get(t, "other")] += 1
+        out[NAMES[t] + "s" if t in NAMES else "other"] += 1
         if t in bounds:
-            out["tet_volume" if t == 10 else "wedge_volume"] += x
+            out[NAMES[t] + "_volume"] += x
             bounds[t] = [min(bounds[t][0], x), max(bounds[t][1], x)]
-out["tet_min_max"], out["wedge_min_max"] = bounds[10], bounds[13]
+for t, name in NAMES.items():
+    out[name + "_min_max"] = bounds[t]
 print(json.dumps(out))

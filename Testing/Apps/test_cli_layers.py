@@ -73,7 +73,8 @@ def check_mesh(case, before=""):
 
 def check_mesh_counts(out):
     """checkMesh's cell, face and point counts, cell shapes and failed checks, for comparing two cases."""
-    keys = ("points", "faces", "internal faces", "cells", "boundary patches", "tetrahedra", "prisms", "polyhedra")
+    keys = ("points", "faces", "internal faces", "cells", "boundary patches", "tetrahedra", "prisms", "pyramids",
+            "polyhedra")
     counts = {k: int(m.group(1)) for k in keys for m in [re.search(r"^\s+%s:\s+(\d+)" % k, out, re.M)] if m}
     failed = re.search(r"Failed (\d+) mesh checks", out)
     counts["failed"] = int(failed.group(1)) if failed else 0
@@ -128,6 +129,31 @@ def read_mixed(kind, path):
 
 def close(a, b, tolerance=1e-9):
     return abs(a - b) <= tolerance * max(abs(a), abs(b))
+
+
+# meshio (python3-meshio) lives in the system python; meshio_cells.py computes each cell's volume.
+MESHIO_PYTHON = "/usr/bin/python3" if run(["/usr/bin/python3", "-c", "import meshio"]).returncode == 0 else None
+MESHIO_CELLS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "meshio_cells.py")
+
+
+def meshio_cells(kind, path):
+    c = run([MESHIO_PYTHON, MESHIO_CELLS, kind, path], timeout=600)
+    return json.loads(c.stdout.strip().splitlines()[-1]) if c.returncode == 0 else {"error": c.describe()}
+
+
+if not MESHIO_PYTHON:
+    print("skipped the meshio read-backs: /usr/bin/python3 has no meshio")
+else:
+    # The prisms in Medit, read by meshio: 24200 wedges, each of positive volume, as much volume as the split run.
+    r = run([volgrid, "mesh", w("sis.off"), w("sis.mesh")] + layers)
+    rs = run([volgrid, "mesh", w("sis.off"), w("sis_split.mesh"), "--split-prisms"] + layers)
+    expect(r.returncode == 0 and rs.returncode == 0, "prisms to Medit", r)
+    if r.returncode == 0 and rs.returncode == 0:
+        m, ms = meshio_cells("medit", w("sis.mesh")), meshio_cells("medit", w("sis_split.mesh"))
+        print("sphere in sphere, Medit (meshio):", m)
+        expect(m.get("cells", {}).get("wedge") == 24200 and min(m["min"].values()) > 0
+               and close(m["total_volume"], ms["total_volume"]) and "wedge" not in ms["cells"],
+               "Medit read by meshio: 24200 prisms, positive volumes, the split mesh's volume: %s %s" % (m, ms))
 
 
 for fmt in ("su2", "cgns", "exo"):
@@ -238,10 +264,67 @@ if r.returncode == 0:
         for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK",
                      "Number of regions: 1 (OK)"):
             expect(line in c.stdout, "straight wing: checkMesh: " + line, c)
-    # Pyramids go to gmsh and VTK only; another solver format asks for --split-prisms, nothing written.
-    r = run([volgrid, "mesh", w("wing.off"), w("wing.su2"), "--layers", "10", "--first-height", "1e-4"])
-    expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.su2")),
-           "straight wing: pyramids to SU2 refused with a message", r)
+    # The pyramids written to OpenFOAM directly: checkMesh finds what it finds after gmshToFoam (the same
+    # counts by cell shape, failed checks and skew faces), each pyramid a pyramid.
+    r = run([volgrid, "mesh", w("wing.off"), w("wing_foam"), "--format", "openfoam", "--json", "--layers", "10",
+             "--first-height", "1e-4", "--growth", "1.2"])
+    expect(r.returncode == 0, "straight wing with pyramids to OpenFOAM", r)
+    if r.returncode == 0 and c is not None:
+        jf = json.loads(r.stdout.strip().splitlines()[-1])
+        cf = check_mesh(w("wing_foam"))
+        nf, ng = check_mesh_counts(cf.stdout), check_mesh_counts(c.stdout)
+        print("straight wing checkMesh, direct:", nf, "\n  gmshToFoam:", ng)
+        expect(nf == ng and nf.get("pyramids") == jf["pyramids"] > 0 and nf.get("prisms") == jf["wedges"]
+               and nf.get("tetrahedra") == jf["tets"] and nf.get("cells") == jf["wedges"] + jf["pyramids"] + jf["tets"],
+               "straight wing: checkMesh on the direct OpenFOAM pyramids = gmshToFoam's: %s %s" % (nf, ng), cf)
+        for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK", "Number of regions: 1 (OK)"):
+            expect(line in cf.stdout, "straight wing, direct OpenFOAM: checkMesh: " + line, cf)
+        expect(re.search(r"Boundary openness .* OK", cf.stdout) is not None, "straight wing, direct: closed boundary", cf)
+    # Pyramids go to every format that takes prisms; TetGen refuses both, nothing written.
+    r = run([volgrid, "mesh", w("wing.off"), w("wing.node"), "--layers", "10", "--first-height", "1e-4"])
+    expect(refused_cleanly(r) and "--split-prisms" in r.stderr and not os.path.exists(w("wing.node")),
+           "straight wing: prisms and pyramids to TetGen refused with a message", r)
+    # SU2 and Medit read back by meshio: the cells by type, every cell's volume positive in the format's own
+    # order, and the total the volume of the tet-only (--split-prisms) file.
+    wing_layers = ["--layers", "10", "--first-height", "1e-4", "--growth", "1.2"]
+    for kind, ext in (("su2", "su2"), ("medit", "mesh")):
+        r = run([volgrid, "mesh", w("wing.off"), w("wing." + ext), "--json"] + wing_layers)
+        rs = run([volgrid, "mesh", w("wing.off"), w("wing_split." + ext), "--split-prisms"] + wing_layers)
+        expect(r.returncode == 0 and rs.returncode == 0, "straight wing: prisms and pyramids to " + kind, r)
+        if r.returncode == 0 and rs.returncode == 0 and MESHIO_PYTHON:
+            jw = json.loads(r.stdout.strip().splitlines()[-1])
+            m, ms = meshio_cells(kind, w("wing." + ext)), meshio_cells(kind, w("wing_split." + ext))
+            print("straight wing, %s (meshio):" % kind, m)
+            expect(m.get("cells", {}).get("wedge") == jw["wedges"] and m["cells"].get("pyramid") == jw["pyramids"] > 0
+                   and m["cells"].get("tetra") == jw["tets"] and min(m["min"].values()) > 0
+                   and close(m["total_volume"], ms["total_volume"]),
+                   "straight wing, %s read by meshio: cells by type, positive volumes, the split mesh's volume: %s %s"
+                   % (kind, m, ms))
+    # CGNS and Exodus II read by ParaView: PYRA_5 and PYRAMID are VTK's pyramid (positive volumes), PENTA_6
+    # and WEDGE the reverse of VTK's wedge (every wedge negative, as for the sphere); the cells and total
+    # volume the split file's (Exodus's coordinates read as floats: 1e-6); cgnscheck is silent.
+    for kind, ext, tolerance in (("cgns", "cgns", 1e-9), ("exodus", "exo", 1e-6)):
+        r = run([volgrid, "mesh", w("wing.off"), w("wing." + ext), "--json"] + wing_layers)
+        expect(r.returncode == 0, "straight wing: prisms and pyramids to " + kind, r)
+        if r.returncode == 0 and PVPYTHON and MESHIO_PYTHON:
+            jw, cg = json.loads(r.stdout.strip().splitlines()[-1]), read_mixed(kind, w("wing." + ext))
+            print("straight wing, %s (ParaView):" % kind, cg)
+            expect(cg.get("tets") == jw["tets"] and cg.get("wedges") == jw["wedges"]
+                   and cg.get("pyramids") == jw["pyramids"] and cg.get("other") == 0 and cg["tet_min_max"][0] > 0
+                   and cg["pyramid_min_max"][0] > 0 and cg["wedge_min_max"][1] < 0
+                   and close(cg["tet_volume"] - cg["wedge_volume"] + cg["pyramid_volume"],
+                             meshio_cells("su2", w("wing_split.su2"))["total_volume"], tolerance),
+                   "straight wing: %s read by ParaView: cells by type, pyramids positive, the split volume: %s"
+                   % (kind, cg))
+    if r.returncode == 0 and shutil.which("cgnscheck"):
+        c = run(["cgnscheck", w("wing.cgns")])
+        expect(c.returncode == 0 and "error" not in c.stdout.lower() and "warning" not in c.stdout.lower(),
+               "cgnscheck on the wing's prisms and pyramids", c)
+    # VolGrid's own readers take tets only: the mixed files are refused with a message, nothing written.
+    for src, message in (("wing.mesh", "Medit Prisms (boundary layers) are not read"), ("wing.su2", "type 13")):
+        r = run([volgrid, "convert", w(src), w("back.node")])
+        expect(refused_cleanly(r) and message in r.stderr and not os.path.exists(w("back.node")),
+               "convert %s refused: %s" % (src, message), r)
 
 m6 = os.path.join(shared, "derived-onera-m6", "onera_m6_halfsphere_domain.mesh")
 if shared and os.path.exists(m6):
@@ -302,6 +385,16 @@ if shared and os.path.exists(m6):
     markers = {k: int(v) for k, v in re.findall(r"MARKER_TAG= (\S+)\nMARKER_ELEMS= (\d+)", text)}
     quads = sum(1 for l in text.split("NMARK=")[-1].splitlines() if l.startswith("9 "))
     expect(quads > 0, "M6: SU2 boundary quads on the symmetry plane")
+    # Medit: the same quads in its Quadrilaterals section (symmetry plane's reference), meshio reads every
+    # prism with a positive volume.
+    r = run([volgrid, "mesh", m6, w("m6.mesh"), "--json"] + m6_layers, timeout=600)
+    expect(r.returncode == 0, "M6: prisms to Medit", r)
+    if r.returncode == 0 and MESHIO_PYTHON:
+        jm, m = json.loads(r.stdout.strip().splitlines()[-1]), meshio_cells("medit", w("m6.mesh"))
+        print("M6, Medit (meshio):", m)
+        expect(m.get("cells", {}).get("quad") == quads and m["cells"].get("wedge") == jm["wedges"]
+               and m["cells"].get("tetra") == jm["tets"] and min(m["min"].values()) > 0,
+               "M6: Medit read by meshio: %d quads, the wedges and tets, positive volumes: %s" % (quads, m))
     export = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Export", "paraview_readers.py")
     for kind, path in (("cgns", w("m6.cgns")), ("exodus", w("m6.exo"))):
         if PVPYTHON and os.path.exists(path):

@@ -62,6 +62,51 @@ SolverMesh prismUnderTet()
   m.patchNames = { { 1, "wall" }, { 2, "symmetry" }, { 3, "farfield" } };
   return m;
 }
+
+// A pyramid (unit square base turning towards the apex 4) and a tet on its side (0 1 4); the base is a
+// boundary quad.
+SolverMesh pyramidBesideTet()
+{
+  SolverMesh m;
+  m.points = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1, 0.5, -1, 0.5 };
+  m.pyramids = { 0, 1, 2, 3, 4 };
+  m.pyramidRegion = { 1 };
+  m.tets = { 0, 1, 4, 5 };
+  m.tetRegion = { 1 };
+  m.triangles = { 1, 2, 4, 2, 3, 4, 3, 0, 4, 0, 5, 1, 1, 5, 4, 4, 5, 0 };
+  m.trianglePatch = { 2, 2, 2, 2, 2, 2 };
+  m.quads = { 0, 3, 2, 1 };
+  m.quadPatch = { 1 };
+  m.patchNames = { { 1, "wall" }, { 2, "farfield" } };
+  return m;
+}
+
+// The text a writer gives `mesh` as file `name` ("" when it fails).
+std::string writtenText(const std::string& name, const SolverMesh& mesh, MeshFormat format)
+{
+  const std::string path = tempPath(name);
+  std::filesystem::remove(path);
+  const Status s = writeSolverMesh(path, mesh, format);
+  EXPECT_TRUE(s.ok()) << s.message;
+  return s.ok() ? readText(path) : "";
+}
+
+// A fresh OpenFOAM case of `mesh` named `name`; its directory.
+std::string writtenFoamCase(const std::string& name, const SolverMesh& mesh)
+{
+  const std::string dir = tempPath(name);
+  std::filesystem::remove_all(dir);
+  const Status s = writeSolverMesh(dir, mesh, MeshFormat::OpenFOAM);
+  EXPECT_TRUE(s.ok()) << s.message;
+  return dir;
+}
+
+// A refusal whose message holds `fragment`.
+void expectRefused(const Status& s, const std::string& fragment)
+{
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find(fragment), std::string::npos) << s.message;
+}
 } // namespace
 
 TEST(PatchNames, ParsesGroupsAndBareIds)
@@ -182,9 +227,7 @@ TEST(MeshWriterOpenFOAM, UpperTriangularOrderOutwardFacesPatchesByName)
 
 TEST(MeshWriterOpenFOAM, PrismsAreCellsWithQuadSidesInTheirPatch)
 {
-  const std::string dir = tempPath("foam-prism");
-  std::filesystem::remove_all(dir);
-  ASSERT_TRUE(writeSolverMesh(dir, prismUnderTet(), MeshFormat::OpenFOAM).ok());
+  const std::string dir = writtenFoamCase("foam-prism", prismUnderTet());
   const std::string owner = readText(dir + "/constant/polyMesh/owner");
   // The prism is cell 0, the tet cell 1; the shared top (3 4 5) is the internal face, out of the prism.
   EXPECT_NE(owner.find("nPoints:7  nCells:2  nFaces:8  nInternalFaces:1"), std::string::npos) << owner;
@@ -211,22 +254,59 @@ TEST(MeshWriterOpenFOAM, PrismsAreCellsWithQuadSidesInTheirPatch)
 
 TEST(MeshWriterSU2, PrismsInVtkOrderAndSideQuadsInTheirMarker)
 {
-  const std::string path = tempPath("prism.su2");
-  ASSERT_TRUE(writeSolverMesh(path, prismUnderTet(), MeshFormat::SU2).ok());
-  const std::string text = readText(path);
+  const std::string text = writtenText("prism.su2", prismUnderTet(), MeshFormat::SU2);
   EXPECT_NE(text.find("NELEM= 2\n10 3 4 5 6 0\n13 0 2 1 3 5 4 1\n"), std::string::npos) << text;
   EXPECT_NE(text.find("MARKER_TAG= symmetry\nMARKER_ELEMS= 3\n9 0 1 4 3\n9 1 2 5 4\n9 2 0 3 5\n"), std::string::npos)
     << text;
-  // Formats without prisms refuse them by name, writing nothing.
-  for (MeshFormat f : { MeshFormat::Medit, MeshFormat::TetGen })
+  // TetGen has no prisms: refused by name, nothing written.
+  const std::string out = tempPath("prism-refused.x");
+  expectRefused(writeSolverMesh(out, prismUnderTet(), MeshFormat::TetGen), "prisms are not written to TetGen");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(MeshWriterMedit, PrismsAndSideQuadsInTheirSections)
+{
+  const std::string text = writtenText("prism.mesh", prismUnderTet(), MeshFormat::Medit);
+  EXPECT_NE(text.find("Quadrilaterals\n3\n1 2 5 4 2\n2 3 6 5 2\n3 1 4 6 2\nTetrahedra\n1\n4 5 6 7 1\n"
+                      "Prisms\n1\n1 2 3 4 5 6 1\nEnd\n"),
+            std::string::npos)
+    << text;
+  EXPECT_NE(text.find("# VolGrid patch 2 symmetry\n"), std::string::npos) << text;
+  // VolGrid's reader takes tets only: the prisms are refused with a message, not skipped.
+  SolverMesh back;
+  expectRefused(readSolverMesh(tempPath("prism.mesh"), back), "Medit Prisms (boundary layers) are not read");
+}
+
+TEST(MeshWriters, PyramidsInEveryFormatWithPrisms)
+{
+  const std::string dir = writtenFoamCase("foam-pyramid", pyramidBesideTet());
+  // The pyramid is cell 0, the tet cell 1; their face (0 1 4) is internal, out of the pyramid; the base
+  // is written out of it too.
+  const std::string owner = readText(dir + "/constant/polyMesh/owner");
+  EXPECT_NE(owner.find("nPoints:6  nCells:2  nFaces:8  nInternalFaces:1"), std::string::npos) << owner;
+  const std::string faces = readText(dir + "/constant/polyMesh/faces");
+  EXPECT_NE(faces.find("8\n(\n3(0 1 4)\n"), std::string::npos) << faces;
+  EXPECT_NE(faces.find("\n4(0 3 2 1)\n"), std::string::npos) << faces;
+  const std::string su2 = writtenText("pyramid.su2", pyramidBesideTet(), MeshFormat::SU2);
+  EXPECT_NE(su2.find("NELEM= 2\n10 0 1 4 5 0\n14 0 1 2 3 4 1\n"), std::string::npos) << su2;
+  const std::string medit = writtenText("pyramid.mesh", pyramidBesideTet(), MeshFormat::Medit);
+  EXPECT_NE(medit.find("Quadrilaterals\n1\n1 4 3 2 1\nTetrahedra\n1\n1 2 5 6 1\nPyramids\n1\n1 2 3 4 5 1\n"),
+            std::string::npos)
+    << medit;
+  // CGNS (a PYRA_5 section) and Exodus II (a PYRAMID block) take them, which VolGrid's readers refuse by
+  // type; TetGen refuses them with a message, nothing written.
+  for (MeshFormat f : { MeshFormat::CGNS, MeshFormat::Exodus })
   {
-    const std::string out = tempPath(std::string("prism-refused.") + (f == MeshFormat::Medit ? "mesh" : "x"));
-    const Status s = writeSolverMesh(out, prismUnderTet(), f);
-    EXPECT_FALSE(s.ok());
-    EXPECT_NE(s.message.find(std::string("prisms are not written to ") + meshFormatName(f)), std::string::npos)
-      << s.message;
-    EXPECT_FALSE(std::filesystem::exists(out));
+    const std::string path = tempPath(std::string("pyramid.") + (f == MeshFormat::CGNS ? "cgns" : "exo"));
+    std::filesystem::remove(path);
+    ASSERT_TRUE(writeSolverMesh(path, pyramidBesideTet(), f).ok());
+    SolverMesh back;
+    expectRefused(readSolverMesh(path, back), "PYRA");
   }
+  const std::string node = tempPath("pyramid-refused.node");
+  std::filesystem::remove(node);
+  expectRefused(writeSolverMesh(node, pyramidBesideTet(), MeshFormat::TetGen), "prisms are not written to TetGen");
+  EXPECT_FALSE(std::filesystem::exists(node));
 }
 
 TEST(MeshWriterExodus, PrismSidesFoundOrRefusedByName)
@@ -242,7 +322,8 @@ TEST(MeshWriterExodus, PrismSidesFoundOrRefusedByName)
   std::filesystem::remove(badPath);
   const Status s = writeSolverMesh(badPath, bad, MeshFormat::Exodus);
   EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.message.find("boundary quad 2 is not a face of any tet or prism"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("boundary quad 2 is not a face of any tet, prism or pyramid"), std::string::npos)
+    << s.message;
   EXPECT_FALSE(std::filesystem::exists(badPath));
 }
 

@@ -106,7 +106,7 @@ TEST(LayeredMesher, SplitPrismsGiveAConformalTetMesh)
   EXPECT_NEAR(volume / (signedVolume(s, far) - signedVolume(s, body)), 1.0, 1e-9);
 }
 
-TEST(LayeredMesher, GmshWritesPrismsAndQuadsMeditRefusesThem)
+TEST(LayeredMesher, GmshWritesPrismsAndQuadsTetGenRefusesThem)
 {
   // One prism (region 0) on a triangle (patch 3), its side quad on patch 5, its top on patch 4.
   SolverMesh mesh;
@@ -137,8 +137,8 @@ TEST(LayeredMesher, GmshWritesPrismsAndQuadsMeditRefusesThem)
       EXPECT_NE(elements.find("\n3 1 6 1\n4 1 2 3 4 5 6\n"), std::string::npos) << elements;
     }
   }
-  // SU2, CGNS, Exodus and OpenFOAM take prisms too (TestSolverMesh.cxx); Medit and TetGen refuse them.
-  const Status refused = writeSolverMesh(dir + "/layers_prism.mesh", mesh, MeshFormat::Medit);
+  // SU2, Medit, CGNS, Exodus and OpenFOAM take prisms too (TestSolverMesh.cxx); TetGen refuses them.
+  const Status refused = writeSolverMesh(dir + "/layers_prism.node", mesh, MeshFormat::TetGen);
   EXPECT_EQ(refused.kind, ErrorKind::InvalidOption);
-  EXPECT_NE(refused.message.find("prisms are not written to Medit"), std::string::npos) << refused.message;
+  EXPECT_NE(refused.message.find("prisms are not written to TetGen"), std::string::npos) << refused.message;
 }
