@@ -403,77 +403,131 @@ struct DelaunayInserter::Impl
     }
   }
 
+  // What the cavity search hands to the rest of the insertion (growCavity counts in locals and stores
+  // them here on the way out: counting through the reference cost 0.3% more instructions in insert).
+  struct CavityState
+  {
+    int32_t nloc = 0;       // boundary vertices numbered so far (localVert)
+    bool overflow = false;  // more than kMaxLocal of them: the edge hash matches the new tets
+    int32_t ghostDelta = 0; // ghost tets created minus ghost tets removed
+  };
+
+  // Inserts vertex v: locate, cavity, slots for the new tets, the new tets written and linked, leftover
+  // slots freed. next (optional): the point inserted next, near which the next walk starts.
   Result insert(int32_t v, int32_t hint, const double* next)
   {
     Result res;
     const double* p = mesh.point(v);
-    int32_t start = -1;
-    if (grid)
-      start = gridStart(p);
-    if (start < 0)
-      start = owner ? (hint >= 0 ? hint : last) : liveTet(hint);
-    int32_t t = walk(p, start);
+    const int32_t t = locate(p, hint);
     if (t < 0)
     {
       releaseAll();
       res.aborted = true;
       return res;
     }
-
-    uint8_t* F = mesh.tetFlags.data();
-    int32_t* V = mesh.tetVertices.data();
-    int32_t* N = mesh.tetNeighbors.data();
+    const int32_t twin = duplicateIn(t, p);
+    if (twin >= 0)
     {
-      const int32_t* w = V + 4 * static_cast<size_t>(t);
-      if ((w[0] | w[1] | w[2] | w[3]) >= 0)
-        for (int k = 0; k < 4; ++k)
-          if (samePoint(mesh.point(w[k]), p))
-          {
-            res.tet = t;
-            res.duplicateOf = w[k];
-            last = t;
-            if (owner)
-              releaseAll();
-            return res;
-          }
+      res.tet = t;
+      res.duplicateOf = twin;
+      last = t;
+      if (owner)
+        releaseAll();
+      return res;
     }
+    CavityState cs;
+    if (!growCavity(v, p, t, cs))
+      return abortInsertion(res, cs.nloc);
+    const size_t nb = boundary.size();
+    const size_t nc = cavity.size();
+    if (!claimSlots(nb))
+      return abortInsertion(res, cs.nloc);
+    clearLocalNumbers(cs.nloc);
+    const bool useMatrix = !cs.overflow;
+    const uint32_t mask = useMatrix ? 0 : prepareEdgeHash(nb);
+    cs.ghostDelta += writeNewTets(nb, useMatrix, mask);
+    if (useMatrix)
+      linkThroughMatrix(nb);
+    releaseLeftoverSlots(nb, nc);
+    if (nextSlot)
+      pendingGhostDelta += cs.ghostDelta;
+    else
+      mesh.adjustGhostCount(cs.ghostDelta);
+    last = next ? nearestNewTet(next, nb) : cavity[nb - 1];
+    res.tet = last;
+    gridRegister(v, last);
+    if (owner)
+      releaseAll();
+    return res;
+  }
 
-    // ---- cavity: tets in conflict, grown by adjacency from t (which contains p, hence in conflict)
+  // The tet where p is (or a ghost whose hull face p strictly sees), walking from the grid's nearest
+  // vertex, else from the hint or the last tet; -1 when another thread holds the way.
+  __attribute__((always_inline)) int32_t locate(const double* p, int32_t hint)
+  {
+    int32_t start = -1;
+    if (grid)
+      start = gridStart(p);
+    if (start < 0)
+      start = owner ? (hint >= 0 ? hint : last) : liveTet(hint);
+    return walk(p, start);
+  }
+
+  // The vertex of finite tet t at exactly p's position, or -1.
+  __attribute__((always_inline)) int32_t duplicateIn(int32_t t, const double* p) const
+  {
+    const int32_t* w = mesh.tetVertices.data() + 4 * static_cast<size_t>(t);
+    if ((w[0] | w[1] | w[2] | w[3]) >= 0)
+      for (int k = 0; k < 4; ++k)
+        if (samePoint(mesh.point(w[k]), p))
+          return w[k];
+    return -1;
+  }
+
+  // Sets the mark bit of word `word` of tet u's neighbour row.
+  static void markWord(int32_t* N, int32_t u, int word)
+  {
+    N[4 * static_cast<size_t>(u) + word] =
+      static_cast<int32_t>(static_cast<uint32_t>(N[4 * static_cast<size_t>(u) + word]) | kMarkBit);
+  }
+
+  // Requests the rows of tet c's neighbours: they are usually cache misses.
+  static void prefetchAround(const int32_t* V, const int32_t* N, int32_t c)
+  {
+    for (int f = 0; f < 4; ++f)
+    {
+      const size_t u = static_cast<size_t>((N[4 * static_cast<size_t>(c) + f] & kCodeMask) >> 2);
+      __builtin_prefetch(V + 4 * u);
+      __builtin_prefetch(N + 4 * u);
+    }
+  }
+
+  // Cavity: the tets in conflict with p (vertex v), grown breadth-first over `cavity` from t (which
+  // contains p, hence is in conflict); the faces to the tets outside go to `boundary`. false: another
+  // thread holds a tet on the way (the caller aborts).
+  __attribute__((always_inline)) bool growCavity(int32_t v, const double* p, int32_t t, CavityState& cs)
+  {
+    const int32_t* V = mesh.tetVertices.data();
+    int32_t* N = mesh.tetNeighbors.data();
     cavity.clear();
     outside.clear();
     boundary.clear();
-    auto mark = [&](int32_t u, int word)
-    {
-      N[4 * static_cast<size_t>(u) + word] =
-        static_cast<int32_t>(static_cast<uint32_t>(N[4 * static_cast<size_t>(u) + word]) | kMarkBit);
-    };
-    mark(t, 0);
+    markWord(N, t, 0);
     cavity.push_back(t);
-    int32_t ghostDelta = 0;
+    int32_t nloc = 0, ghostDelta = 0; // locals, stored to cs on the way out
+    bool overflow = false;
     const size_t needV = static_cast<size_t>(mesh.numVertices()) + 1;
     if (vlocal.size() < needV)
       vlocal.resize(needV + needV / 4, -1);
     int8_t* VL = vlocal.data();
     int32_t* LV = localVert.data();
-    int32_t nloc = 0;
-    bool overflow = false;
-    // Breadth-first over `cavity` itself. The neighbours of a tet are usually cache misses: while one
-    // tet is processed, the neighbours of the next queued tet are requested.
-    auto prefetchAround = [&](int32_t c)
-    {
-      for (int f = 0; f < 4; ++f)
-      {
-        const size_t u = static_cast<size_t>((N[4 * static_cast<size_t>(c) + f] & kCodeMask) >> 2);
-        __builtin_prefetch(V + 4 * u);
-        __builtin_prefetch(N + 4 * u);
-      }
-    };
-    prefetchAround(t);
+    // While one tet is processed, the neighbours of the next queued tet are requested.
+    prefetchAround(V, N, t);
     for (size_t qi = 0; qi < cavity.size(); ++qi)
     {
       const int32_t c = cavity[qi];
       if (qi + 1 < cavity.size())
-        prefetchAround(cavity[qi + 1]);
+        prefetchAround(V, N, cavity[qi + 1]);
       const int32_t* wc = V + 4 * static_cast<size_t>(c);
       if ((wc[0] | wc[1] | wc[2] | wc[3]) < 0)
         --ghostDelta;
@@ -482,7 +536,10 @@ struct DelaunayInserter::Impl
         const int32_t code = N[4 * static_cast<size_t>(c) + f] & kCodeMask;
         const int32_t u = code >> 2;
         if (owner && !acquire(u))
-          return abortInsertion(res, nloc);
+        {
+          cs = CavityState{ nloc, overflow, ghostDelta };
+          return false;
+        }
         const int32_t* nu = N + 4 * static_cast<size_t>(u);
         if (nu[0] < 0)
           continue; // in the cavity
@@ -490,85 +547,69 @@ struct DelaunayInserter::Impl
         {
           const bool conflict = inConflict(u, p, v);
           if (lockFailed)
-            return abortInsertion(res, nloc);
+          {
+            cs = CavityState{ nloc, overflow, ghostDelta };
+            return false;
+          }
           if (conflict)
           {
-            mark(u, 0);
+            markWord(N, u, 0);
             cavity.push_back(u);
             continue;
           }
-          mark(u, 1);
+          markWord(N, u, 1);
           outside.push_back(u);
         }
-        boundary.emplace_back();
-        BoundaryFace& bf = boundary.back();
-        bf.v[0] = wc[0];
-        bf.v[1] = wc[1];
-        bf.v[2] = wc[2];
-        bf.v[3] = wc[3];
-        bf.v[f] = v;
-        bf.outside = code;
-        bf.face = static_cast<int8_t>(f);
-        // Local numbers of the face's vertices (the new point excluded).
-        for (int k = 0; k < 4; ++k)
-        {
-          if (k == f)
-            continue;
-          int8_t& li = VL[wc[k] + 1];
-          if (li < 0)
-          {
-            if (nloc == kMaxLocal)
-            {
-              overflow = true;
-              continue;
-            }
-            li = static_cast<int8_t>(nloc);
-            LV[nloc++] = wc[k];
-          }
-          bf.local[k] = li;
-        }
+        addBoundaryFace(wc, f, code, v, VL, LV, nloc, overflow);
       }
     }
     cavityTets += cavity.size();
     for (int32_t u : outside)
       N[4 * static_cast<size_t>(u) + 1] &= kCodeMask;
+    cs = CavityState{ nloc, overflow, ghostDelta };
+    return true;
+  }
 
-    // ---- new tets: reuse the cavity slots, then free/appended slots
-    const size_t nb = boundary.size();
-    const size_t nc = cavity.size();
-    if (nextSlot)
+  // Records the new tet on face f of cavity tet wc (outside neighbour `code`), numbering the face's
+  // vertices locally (VL: vertex -> local number, LV: local number -> vertex) for the matching.
+  __attribute__((always_inline)) void addBoundaryFace(const int32_t* wc, int f, int32_t code, int32_t v, int8_t* VL,
+                                                      int32_t* LV, int32_t& nloc, bool& overflow)
+  {
+    boundary.emplace_back();
+    BoundaryFace& bf = boundary.back();
+    bf.v[0] = wc[0];
+    bf.v[1] = wc[1];
+    bf.v[2] = wc[2];
+    bf.v[3] = wc[3];
+    bf.v[f] = v;
+    bf.outside = code;
+    bf.face = static_cast<int8_t>(f);
+    for (int k = 0; k < 4; ++k)
     {
-      // Pool mode: own spare slots first, then fresh ones from the shared pool.
-      while (cavity.size() < nb && !spare.empty())
+      if (k == f)
+        continue;
+      int8_t& li = VL[wc[k] + 1];
+      if (li < 0)
       {
-        cavity.push_back(spare.back());
-        spare.pop_back();
-      }
-      if (cavity.size() < nb)
-      {
-        const int32_t k = static_cast<int32_t>(nb - cavity.size());
-        const int32_t first = nextSlot->fetch_add(k);
-        if (first + k > slotLimit)
+        if (nloc == kMaxLocal)
         {
-          poolFull = true;
-          poolEnd = std::min(poolEnd, first); // slots from here on were never handed out
-          for (size_t i = nc; i < cavity.size(); ++i)
-            spare.push_back(cavity[i]);
-          cavity.resize(nc);
-          return abortInsertion(res, nloc);
+          overflow = true;
+          continue;
         }
-        for (int32_t s = first; s < first + k; ++s)
-        {
-          if (owner)
-          {
-            owner[s].store(me, std::memory_order_relaxed);
-            held.push_back(s);
-          }
-          cavity.push_back(s);
-        }
+        li = static_cast<int8_t>(nloc);
+        LV[nloc++] = wc[k];
       }
+      bf.local[k] = li;
     }
-    else
+  }
+
+  // Slots for the nb new tets, appended to `cavity` after its own: in pool mode this inserter's spare
+  // slots, then fresh ones from the shared pool; else the mesh's free slots, then appended ones.
+  // false: the pool is used up (the slots taken go back to `spare`; the caller aborts).
+  __attribute__((always_inline)) bool claimSlots(size_t nb)
+  {
+    const size_t nc = cavity.size();
+    if (!nextSlot)
     {
       for (size_t i = nc; i < nb && mesh.freeListHead() >= 0; ++i)
         cavity.push_back(mesh.newTet(0, 0, 0, 0));
@@ -578,30 +619,74 @@ struct DelaunayInserter::Impl
         for (int32_t s = first; cavity.size() < nb; ++s)
           cavity.push_back(s);
       }
+      return true;
     }
-    F = mesh.tetFlags.data();
-    V = mesh.tetVertices.data();
-    N = mesh.tetNeighbors.data();
+    while (cavity.size() < nb && !spare.empty())
+    {
+      cavity.push_back(spare.back());
+      spare.pop_back();
+    }
+    if (cavity.size() >= nb)
+      return true;
+    const int32_t k = static_cast<int32_t>(nb - cavity.size());
+    const int32_t first = nextSlot->fetch_add(k);
+    if (first + k > slotLimit)
+    {
+      poolFull = true;
+      poolEnd = std::min(poolEnd, first); // slots from here on were never handed out
+      for (size_t i = nc; i < cavity.size(); ++i)
+        spare.push_back(cavity[i]);
+      cavity.resize(nc);
+      return false;
+    }
+    for (int32_t s = first; s < first + k; ++s)
+    {
+      if (owner)
+      {
+        owner[s].store(me, std::memory_order_relaxed);
+        held.push_back(s);
+      }
+      cavity.push_back(s);
+    }
+    return true;
+  }
+
+  // Back to -1 between insertions: the local numbers of the nloc boundary vertices.
+  void clearLocalNumbers(int32_t nloc)
+  {
+    int8_t* VL = vlocal.data(); // locals: the byte stores could alias the vectors' pointers
+    const int32_t* LV = localVert.data();
     for (int32_t k = 0; k < nloc; ++k)
       VL[LV[k] + 1] = -1;
-    const bool useMatrix = !overflow;
-    uint32_t mask = 0;
-    if (!useMatrix)
+  }
+
+  // The edge hash sized for nb boundary faces, emptied by a new stamp; returns its index mask.
+  uint32_t prepareEdgeHash(size_t nb)
+  {
+    uint32_t size = 64;
+    while (size < 4 * nb)
+      size <<= 1;
+    if (table.size() < size)
+      table.assign(size, HashSlot{ 0, 0, 0 }), stamp = 0;
+    if (++stamp == 0)
     {
-      uint32_t size = 64;
-      while (size < 4 * nb)
-        size <<= 1;
-      if (table.size() < size)
-        table.assign(size, HashSlot{ 0, 0, 0 }), stamp = 0;
-      if (++stamp == 0)
-      {
-        for (HashSlot& hs : table)
-          hs.stamp = 0;
-        stamp = 1;
-      }
-      mask = size - 1;
+      for (HashSlot& hs : table)
+        hs.stamp = 0;
+      stamp = 1;
     }
+    return size - 1;
+  }
+
+  // The nb new tets written into their slots (cavity[i] for boundary[i]) and linked to the tets outside;
+  // their faces around the new point are stored in the edge matrix (linked by linkThroughMatrix) or
+  // matched at once in the edge hash (mask). Returns the number of new ghost tets.
+  int32_t writeNewTets(size_t nb, bool useMatrix, uint32_t mask)
+  {
+    uint8_t* F = mesh.tetFlags.data();
+    int32_t* V = mesh.tetVertices.data();
+    int32_t* N = mesh.tetNeighbors.data();
     int32_t* M = edgeMat.data();
+    int32_t ghosts = 0;
     for (size_t i = 0; i < nb; ++i)
     {
       const BoundaryFace& bf = boundary[i];
@@ -612,7 +697,7 @@ struct DelaunayInserter::Impl
       ws[2] = bf.v[2];
       ws[3] = bf.v[3];
       if ((bf.v[0] | bf.v[1] | bf.v[2] | bf.v[3]) < 0)
-        ++ghostDelta;
+        ++ghosts;
       F[s] = 0;
       int32_t* ns = N + 4 * static_cast<size_t>(s);
       ns[bf.face] = bf.outside;
@@ -636,20 +721,35 @@ struct DelaunayInserter::Impl
         }
       }
     }
-    if (useMatrix)
-      for (size_t i = 0; i < nb; ++i)
+    return ghosts;
+  }
+
+  // Each new tet's faces around the new point linked to the twin face stored in the edge matrix under
+  // the reversed edge.
+  void linkThroughMatrix(size_t nb)
+  {
+    int32_t* N = mesh.tetNeighbors.data();
+    const int32_t* M = edgeMat.data();
+    for (size_t i = 0; i < nb; ++i)
+    {
+      const BoundaryFace& bf = boundary[i];
+      int32_t* ns = N + 4 * static_cast<size_t>(cavity[i]);
+      for (int g = 0; g < 4; ++g)
       {
-        const BoundaryFace& bf = boundary[i];
-        int32_t* ns = N + 4 * static_cast<size_t>(cavity[i]);
-        for (int g = 0; g < 4; ++g)
-        {
-          if (g == bf.face)
-            continue;
-          const EdgePair e = kDirected[bf.face][g];
-          ns[g] = M[(bf.local[e.y] << kLocalShift) | bf.local[e.x]];
-        }
+        if (g == bf.face)
+          continue;
+        const EdgePair e = kDirected[bf.face][g];
+        ns[g] = M[(bf.local[e.y] << kLocalShift) | bf.local[e.x]];
       }
-    // Leftover cavity slots (the cavity had more tets than boundary faces).
+    }
+  }
+
+  // Cavity slots [nb, nc) left over (the cavity had more tets than boundary faces) are freed: to this
+  // inserter's spare list in pool mode, else to the mesh.
+  void releaseLeftoverSlots(size_t nb, size_t nc)
+  {
+    uint8_t* F = mesh.tetFlags.data();
+    int32_t* V = mesh.tetVertices.data();
     for (size_t i = nb; i < nc; ++i)
     {
       const int32_t s = cavity[i];
@@ -663,41 +763,34 @@ struct DelaunayInserter::Impl
       else
         mesh.freeTet(s);
     }
-    if (nextSlot)
-      pendingGhostDelta += ghostDelta;
-    else
-      mesh.adjustGhostCount(ghostDelta);
-    last = cavity[nb - 1];
-    if (next)
+  }
+
+  // The new finite tet whose outer face is nearest to the next point, where the next walk starts
+  // (heuristic, plain doubles: only the walk length depends on it); the last new tet if none is finite.
+  int32_t nearestNewTet(const double* next, size_t nb) const
+  {
+    const double* P = mesh.points.data();
+    int32_t at = cavity[nb - 1];
+    double best = -1;
+    for (size_t i = 0; i < nb; ++i)
     {
-      // Start the next walk from the new tet whose outer face is nearest to the next point (heuristic,
-      // plain doubles: only the walk length depends on it).
-      const double* P = mesh.points.data();
-      double best = -1;
-      for (size_t i = 0; i < nb; ++i)
+      const BoundaryFace& bf = boundary[i];
+      if ((bf.v[0] | bf.v[1] | bf.v[2] | bf.v[3]) < 0)
+        continue;
+      const double* a = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][0]]);
+      const double* b = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][1]]);
+      const double* c = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][2]]);
+      const double dx = a[0] + b[0] + c[0] - 3 * next[0];
+      const double dy = a[1] + b[1] + c[1] - 3 * next[1];
+      const double dz = a[2] + b[2] + c[2] - 3 * next[2];
+      const double d = dx * dx + dy * dy + dz * dz;
+      if (best < 0 || d < best)
       {
-        const BoundaryFace& bf = boundary[i];
-        if ((bf.v[0] | bf.v[1] | bf.v[2] | bf.v[3]) < 0)
-          continue;
-        const double* a = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][0]]);
-        const double* b = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][1]]);
-        const double* c = P + 3 * static_cast<size_t>(bf.v[kFV[bf.face][2]]);
-        const double dx = a[0] + b[0] + c[0] - 3 * next[0];
-        const double dy = a[1] + b[1] + c[1] - 3 * next[1];
-        const double dz = a[2] + b[2] + c[2] - 3 * next[2];
-        const double d = dx * dx + dy * dy + dz * dz;
-        if (best < 0 || d < best)
-        {
-          best = d;
-          last = cavity[i];
-        }
+        best = d;
+        at = cavity[i];
       }
     }
-    res.tet = last;
-    gridRegister(v, last);
-    if (owner)
-      releaseAll();
-    return res;
+    return at;
   }
 
   // Undo the marks of a cavity search and give the tets back (parallel mode only).
@@ -708,8 +801,7 @@ struct DelaunayInserter::Impl
       N[4 * static_cast<size_t>(c)] &= kCodeMask;
     for (int32_t u : outside)
       N[4 * static_cast<size_t>(u) + 1] &= kCodeMask;
-    for (int32_t k = 0; k < nloc; ++k)
-      vlocal[static_cast<size_t>(localVert[k]) + 1] = -1;
+    clearLocalNumbers(nloc);
     lockFailed = false;
     releaseAll();
     res.aborted = true;

@@ -1,5 +1,6 @@
 #include "BadTetSplitting.h"
 
+#include "CompassSearch.h"
 #include "ParallelFor.h"
 
 #include <algorithm>
@@ -201,31 +202,12 @@ struct PositionSearch
     }
   }
 
-  // Pattern search along the axes from the best candidate, the step halving when no move improves.
+  // Compass search from the best candidate, for at most 12 rounds, down to a step of 1% of lmean.
   void refine(double lmean)
   {
-    static const double dirs[6][3] = {
-      { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 }
-    };
-    double step = 0.2 * lmean;
-    for (int it = 0; it < 12 && step > 0.01 * lmean; ++it)
-    {
-      bool moved = false;
-      for (const auto& d : dirs)
-      {
-        const Point y = { at[0] + step * d[0], at[1] + step * d[1], at[2] + step * d[2] };
-        const double q = score(y.data());
-        if (q > best)
-        {
-          best = q;
-          at = y;
-          moved = true;
-          break;
-        }
-      }
-      if (!moved)
-        step *= 0.5;
-    }
+    compassSearch(
+      at, best, 0.2 * lmean, [&](const Point& y) { return score(y.data()); },
+      [&](double step, int rounds, int) { return rounds < 12 && step > 0.01 * lmean; });
   }
 };
 

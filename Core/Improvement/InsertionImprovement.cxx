@@ -1,5 +1,6 @@
 #include "InsertionImprovement.h"
 
+#include "CompassSearch.h"
 #include "MeshOptimization.h"
 #include "MeshScan.h"
 #include "MeshSmoothing.h"
@@ -220,28 +221,9 @@ public:
       const Frame& f = frames[st.face];
       std::array<double, 3> x = st.x;
       double q = st.q;
-      int evals = 0;
-      for (double step = 0.25; step > 1e-6 && evals < 200;)
-      {
-        bool moved = false;
-        for (int k = 0; k < 3 && !moved; ++k)
-          for (const double sgn : { 1.0, -1.0 })
-          {
-            std::array<double, 3> y = x;
-            y[k] += sgn * step;
-            const double qy = score(at(f, y));
-            ++evals;
-            if (qy > q)
-            {
-              q = qy;
-              x = y;
-              moved = true;
-              break;
-            }
-          }
-        if (!moved)
-          step *= 0.5;
-      }
+      compassSearch(
+        x, q, 0.25, [&](const std::array<double, 3>& y) { return score(at(f, y)); },
+        [](double step, int, int evals) { return step > 1e-6 && evals < 200; });
     }
     if (!(best_ > 0))
     {
