@@ -13,14 +13,18 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+
+#include <unistd.h>
 
 using namespace volgrid;
 
 namespace
 {
+// Per process: two builds' tests running at once (ASan beside Release) must not share files.
 std::string tempPath(const std::string& name)
 {
-  return ::testing::TempDir() + "volgrid_solver_" + name;
+  return ::testing::TempDir() + "volgrid_solver_" + std::to_string(getpid()) + "_" + name;
 }
 
 std::string readText(const std::string& path)
