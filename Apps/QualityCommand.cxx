@@ -180,17 +180,11 @@ const char* kVolumeMetrics[] = { "AspectRatio",        "MinDihedralAngle", "MaxD
                                  "Skewness",           "VolumeRatio",      "WedgeVolume",
                                  "WedgeScaledJacobian" };
 const char* kSurfaceMetrics[] = { "AspectRatio", "Area", "MinAngle", "MaxAngle" };
-const char* kVolumeFigures[] = { "NumberOfTetrahedra",
-                                 "SkippedCells",
-                                 "TotalVolume",
-                                 "MaxNonOrthogonality",
-                                 "AverageNonOrthogonality",
-                                 "SevereNonOrthogonalFaces",
-                                 "MaxSkewness",
-                                 "HighlySkewFaces",
-                                 "MaxVolumeRatio",
-                                 "NumberOfWedges",
-                                 "InvertedWedges" };
+const char* kVolumeFigures[] = {
+  "NumberOfTetrahedra",       "SkippedCells",     "TotalVolume",     "MaxNonOrthogonality", "AverageNonOrthogonality",
+  "SevereNonOrthogonalFaces", "MaxSkewness",      "HighlySkewFaces", "MaxVolumeRatio",      "NumberOfWedges",
+  "InvertedWedges",           "NumberOfPyramids", "PyramidVolume"
+};
 const char* kSurfaceFigures[] = { "NumberOfElements", "SurfaceArea",      "EnclosedVolume", "BoundaryEdges",
                                   "BoundaryLoops",    "NonManifoldEdges", "Shells",         "SkippedCells" };
 } // namespace

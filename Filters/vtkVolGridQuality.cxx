@@ -112,6 +112,9 @@ int effectiveMetric(int metric, bool volume)
   }
 }
 
+// Passed from the CFD metrics of a mixed grid to the summary's TotalVolume (not a figure of its own).
+constexpr const char* kMixedTotalVolume = "MixedTotalVolume";
+
 vtkSmartPointer<vtkDoubleArray> newCellArray(const char* name, vtkIdType n)
 {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
@@ -272,6 +275,10 @@ struct vtkVolGridQuality::Internals
   // The CFD face metrics of a pure tet grid (Core/Quality/CfdQuality.h): three cell arrays and six figures.
   static void Cfd(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
                   std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
+  // The same on a grid of tets, wedges and pyramids; field data PyramidVolume too (TotalVolume counts it).
+  static bool CfdMixed(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
+                       std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary);
+  static void AddCfdFigures(const vq::CfdSummary& s, vtkFieldData* summary);
   static bool Surface(vtkVolGridQuality* self, vtkPolyData* input, std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays,
                       vtkFieldData* summary);
 };
@@ -285,13 +292,14 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
   const double* points = numPoints ? flatPoints(input->GetPoints(), pointStorage) : nullptr;
 
   vtkUnsignedCharArray* types = input->GetCellTypesArray();
-  vtkIdType numTets = 0, numWedges = 0;
+  vtkIdType numTets = 0, numWedges = 0, numPyramids = 0;
   for (vtkIdType c = 0; c < numCells; ++c)
   {
     numTets += types->GetValue(c) == VTK_TETRA;
     numWedges += types->GetValue(c) == VTK_WEDGE;
+    numPyramids += types->GetValue(c) == VTK_PYRAMID;
   }
-  self->NumberOfSkippedCells = numCells - numTets - numWedges;
+  self->NumberOfSkippedCells = numCells - numTets - numWedges - numPyramids;
 
   for (int m = ASPECT_RATIO; m <= RADIUS_RATIO; ++m)
   {
@@ -384,15 +392,18 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
   if (self->NumberOfSkippedCells > 0)
   {
     vtkWarningWithObjectMacro(self, << self->NumberOfSkippedCells << " of " << numCells
-                                    << " cells are neither tetrahedra nor wedges: they were skipped (their values "
-                                       "are NaN).");
+                                    << " cells are neither tetrahedra, wedges nor pyramids: they were skipped (their "
+                                       "values are NaN).");
   }
   addScalar(summary, "NumberOfTetrahedra", static_cast<double>(numTets));
   addScalar(summary, "SkippedCells", static_cast<double>(self->NumberOfSkippedCells));
+  addScalar(summary, "NumberOfPyramids", static_cast<double>(numPyramids));
   if (!Wedges(self, input, points, arrays, summary))
     return false;
   if (numTets == numCells && numCells > 0)
     Cfd(self, input, points, arrays, summary);
+  else if (self->NumberOfSkippedCells == 0 && numCells > 0)
+    return CfdMixed(self, input, points, arrays, summary);
   return true;
 }
 
@@ -479,12 +490,85 @@ void vtkVolGridQuality::Internals::Cfd(vtkVolGridQuality* self, vtkUnstructuredG
     arrays.push_back(newCellArray(column.first, numCells));
     std::copy(column.second->begin(), column.second->end(), arrays.back()->GetPointer(0));
   }
+  AddCfdFigures(s, summary);
+}
+
+void vtkVolGridQuality::Internals::AddCfdFigures(const vq::CfdSummary& s, vtkFieldData* summary)
+{
   addScalar(summary, "MaxNonOrthogonality", s.maxNonOrthogonality);
   addScalar(summary, "AverageNonOrthogonality", s.averageNonOrthogonality);
   addScalar(summary, "SevereNonOrthogonalFaces", static_cast<double>(s.severelyNonOrthogonalFaces));
   addScalar(summary, "MaxSkewness", s.maxSkewness);
   addScalar(summary, "HighlySkewFaces", static_cast<double>(s.highlySkewFaces));
   addScalar(summary, "MaxVolumeRatio", s.maxVolumeRatio);
+}
+
+bool vtkVolGridQuality::Internals::CfdMixed(vtkVolGridQuality* self, vtkUnstructuredGrid* input, const double* points,
+                                            std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkFieldData* summary)
+{
+  self->SetProgressText("CFD face metrics");
+  const vtkIdType numCells = input->GetNumberOfCells();
+  std::vector<double> xyz(points, points + 3 * input->GetNumberOfPoints());
+  // Each shape in Core's order (VTK's wedge lists its triangles the other way round), and where it came from.
+  std::vector<int32_t> tets, prisms, pyramids;
+  std::vector<vtkIdType> tetCells, prismCells, pyramidCells;
+  vtkUnsignedCharArray* types = input->GetCellTypesArray();
+  for (vtkIdType c = 0; c < numCells; ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* v;
+    input->GetCellPoints(c, npts, v);
+    const int type = types->GetValue(c);
+    const int expected = type == VTK_TETRA ? 4 : type == VTK_WEDGE ? 6 : 5;
+    if (npts != expected)
+    {
+      vtkErrorWithObjectMacro(self, "Cell " << c << " has " << npts << " points instead of " << expected << ".");
+      return false;
+    }
+    if (std::any_of(v, v + npts, [&](vtkIdType id) { return id < 0 || id >= input->GetNumberOfPoints(); }))
+    {
+      vtkErrorWithObjectMacro(self,
+                              "Cell " << c << " has a point id outside [0, " << input->GetNumberOfPoints() << ").");
+      return false;
+    }
+    if (type == VTK_TETRA)
+      tets.insert(tets.end(), v, v + 4), tetCells.push_back(c);
+    else if (type == VTK_WEDGE)
+      prisms.insert(prisms.end(),
+                    { static_cast<int32_t>(v[0]), static_cast<int32_t>(v[2]), static_cast<int32_t>(v[1]),
+                      static_cast<int32_t>(v[3]), static_cast<int32_t>(v[5]), static_cast<int32_t>(v[4]) }),
+        prismCells.push_back(c);
+    else
+      pyramids.insert(pyramids.end(), v, v + 5), pyramidCells.push_back(c);
+  }
+  vq::MixedCells mixed;
+  mixed.tets = &tets;
+  mixed.prisms = &prisms;
+  mixed.pyramids = &pyramids;
+  vq::CfdCellMetrics cells;
+  const vq::CfdSummary s = vq::cfdMetricsMixed(xyz, mixed, &cells);
+  std::vector<vtkIdType> order(tetCells); // Core's cell order -> the grid's
+  order.insert(order.end(), prismCells.begin(), prismCells.end());
+  order.insert(order.end(), pyramidCells.begin(), pyramidCells.end());
+  const std::pair<const char*, std::vector<double>*> columns[] = { { "NonOrthogonality", &cells.nonOrthogonality },
+                                                                   { "Skewness", &cells.skewness },
+                                                                   { "VolumeRatio", &cells.volumeRatio } };
+  for (const auto& column : columns)
+  {
+    arrays.push_back(newCellArray(column.first, numCells));
+    double* dst = arrays.back()->GetPointer(0);
+    for (size_t i = 0; i < order.size(); ++i)
+      dst[order[i]] = (*column.second)[i];
+  }
+  double pyramidVolume = 0, cellVolume = 0;
+  for (size_t i = 0; i < order.size(); ++i)
+    (i >= tetCells.size() + prismCells.size() ? pyramidVolume : cellVolume) += cells.volume[i];
+  addScalar(summary, "PyramidVolume", pyramidVolume);
+  // The total as checkMesh splits the cells: the wedges' own volumes (three tets each) overlap or leave
+  // gaps where neighbouring wedges split a warped side quad differently.
+  addScalar(summary, kMixedTotalVolume, cellVolume + pyramidVolume);
+  AddCfdFigures(s, summary);
+  return true;
 }
 
 bool vtkVolGridQuality::Internals::Surface(vtkVolGridQuality* self, vtkPolyData* input,
@@ -792,6 +876,11 @@ bool vtkVolGridQuality::Execute(vtkDataSet* input, vtkDataSet* output, vtkTable*
   }
   if (volume)
   {
+    if (vtkDataArray* mixed = summary->GetArray(kMixedTotalVolume))
+    {
+      totalVolume = mixed->GetTuple1(0);
+      summary->RemoveArray(kMixedTotalVolume);
+    }
     addScalar(summary, "TotalVolume", totalVolume);
   }
   vtkFieldData* fd = output->GetFieldData();

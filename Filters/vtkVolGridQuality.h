@@ -2,25 +2,30 @@
  * @class   vtkVolGridQuality
  * @brief   Volume and surface grid quality of the VolGrid paper (section 8.2), threaded, with statistics.
  *
- * Input: a vtkUnstructuredGrid (tetrahedra and wedges are measured) or a vtkPolyData (triangles are
- * measured). Other cells are skipped: their values are NaN and a warning says how many there were.
+ * Input: a vtkUnstructuredGrid (tetrahedra and wedges are measured; pyramids by the CFD metrics only) or a
+ * vtkPolyData (triangles are measured). Other cells are skipped: their values are NaN and a warning says
+ * how many there were.
  *
  * Output port 0: the input with per-cell arrays added.
  *  - Volume grids: AspectRatio, MinDihedralAngle, MaxDihedralAngle (degrees), MinSolidAngle (steradians),
  *    Volume (signed: inverted tets are negative), VolumeGradient (largest |volume difference| with a
  *    face neighbour), RadiusEdgeRatio, RadiusRatio (vtkMeshQuality's tet radius ratio); for grids of
- *    tets only, the CFD metrics of OpenFOAM's checkMesh (Core/Quality/CfdQuality.h), each the largest over the
- *    cell's faces: NonOrthogonality (degrees), Skewness, VolumeRatio (with the face neighbours).
+ *    tets, wedges and pyramids (no other cell), the CFD metrics of OpenFOAM's checkMesh on every cell
+ *    (Core/Quality/CfdQuality.h), each the largest over the cell's faces: NonOrthogonality (degrees),
+ *    Skewness, VolumeRatio (with the face neighbours).
  *    Wedges (boundary-layer prisms) get their own arrays, NaN on the other cells (the tet arrays are NaN
  *    on wedges): WedgeVolume (signed) and WedgeScaledJacobian (the smallest corner's, 1 for a right prism
  *    on an equilateral triangle at any height, <= 0 at an inverted corner), as Core/Quality/PrismQuality.h
  *    defines them; field data NumberOfWedges and InvertedWedges (wedges with a corner tet that is not
- *    positive, decided exactly). TotalVolume is the tets' and the wedges' volume.
+ *    positive, decided exactly); NumberOfPyramids and PyramidVolume (checkMesh's cell volume). TotalVolume
+ *    is the tets' and the wedges' volume; on a grid whose CFD metrics are measured, the sum of checkMesh's
+ *    cell volumes, pyramids included (the wedges' own volumes overlap where neighbours split a warped side
+ *    quad differently; checkMesh's, split about the quad's centre, add up to the domain's).
  *  - Surface grids: AspectRatio, Area, MinAngle, MaxAngle (degrees).
  *  - Quality: a copy of the selected metric (see SetMetric), so that ParaView colours by it at once.
  *  Field data: per metric a 6-component array "<Metric>Statistics" (Count, Min, Max, Mean, StdDev,
- *  WorstCell), and the grid-wide figures (NumberOfTetrahedra, SkippedCells, TotalVolume, and for tet
- *  grids checkMesh's face figures MaxNonOrthogonality, AverageNonOrthogonality,
+ *  WorstCell), and the grid-wide figures (NumberOfTetrahedra, SkippedCells, TotalVolume, and for
+ *  tet, wedge and pyramid grids checkMesh's face figures MaxNonOrthogonality, AverageNonOrthogonality,
  *  SevereNonOrthogonalFaces (> 70 deg), MaxSkewness, HighlySkewFaces (> 4), MaxVolumeRatio; or for
  *  surfaces NumberOfElements, SurfaceArea, EnclosedVolume, BoundaryEdges, BoundaryLoops,
  *  NonManifoldEdges, Shells, SkippedCells).

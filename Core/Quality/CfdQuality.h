@@ -1,6 +1,12 @@
-// CFD cell metrics of a tet mesh, defined as OpenFOAM's checkMesh defines them, so that VolGrid Quality and
-// checkMesh report the same figures for the same mesh (the test compares them):
-// - Cell centre: the tet's centroid (checkMesh's face-pyramid centre reduces to it for a tet).
+// CFD cell metrics of a tet mesh or of a mixed one (tets, boundary-layer prisms, pyramids), defined as
+// OpenFOAM's checkMesh defines them, so that VolGrid Quality and checkMesh report the same figures for the
+// same mesh (the tests compare them):
+// - Cell centre: the tet's centroid (checkMesh's face-pyramid centre reduces to it for a tet). Other cells:
+//   checkMesh's, the volume-weighted centroid of the pyramids that join each face to the mean of the
+//   face centres; the cell volume is their sum.
+// - Face centre and area vector: a triangle's centroid and half its cross product; a quad's (checkMesh's):
+//   fanned into four triangles about the mean of its corners, the area-weighted mean of their centroids
+//   and the sum of their area vectors (so a warped quad is measured as checkMesh measures it).
 // - Face non-orthogonality (internal faces, degrees): the angle between the face's area vector S and the
 //   vector d from the owner's centre to the neighbour's, acos(min(1, d.S / (|d| |S|))). Boundary faces
 //   have none. checkMesh counts faces above 70 degrees as severely non-orthogonal.
@@ -26,16 +32,18 @@ constexpr double kHighSkewness = 4.0;            // checkMesh's threshold
 struct CfdSummary
 {
   int64_t internalFaces = 0, boundaryFaces = 0;
-  double maxNonOrthogonality = 0, averageNonOrthogonality = 0; // over internal faces, degrees
-  int64_t severelyNonOrthogonalFaces = 0;                      // > kSevereNonOrthogonality
-  double maxSkewness = 0;                                      // over all faces
-  int64_t highlySkewFaces = 0;                                 // > kHighSkewness
+  // Over internal faces, degrees; the average is checkMesh's, the angle of the mean cosine.
+  double maxNonOrthogonality = 0, averageNonOrthogonality = 0;
+  int64_t severelyNonOrthogonalFaces = 0; // > kSevereNonOrthogonality
+  double maxSkewness = 0;                 // over all faces
+  int64_t highlySkewFaces = 0;            // > kHighSkewness
   double maxVolumeRatio = 1;
 };
 
 struct CfdCellMetrics
 {
-  std::vector<double> nonOrthogonality, skewness, volumeRatio; // one per tet
+  std::vector<double> nonOrthogonality, skewness, volumeRatio; // one per cell
+  std::vector<double> volume;                                  // one per cell, positive
 };
 
 // Non-orthogonality in degrees of a face with area vector `area` between cells centred at `owner` and
@@ -50,6 +58,21 @@ double boundaryFaceSkewness(const double* a, const double* b, const double* c, c
 // All faces of the tet mesh (points: xyz; tets: 4 ids each). `cells` (may be null) receives the per-tet
 // maxima.
 CfdSummary cfdMetrics(const std::vector<double>& points, const std::vector<int32_t>& tets, CfdCellMetrics* cells);
+
+// The cells of a mixed mesh, each shape in SolverMesh's order (Mesh/SolverMesh.h): tets (4 ids, positive),
+// prisms (6: base a,b,c whose normal points to the top a',b',c'), pyramids (5: the quad turning towards
+// the apex, then the apex). A cell given the other way round is measured the same (its faces are turned
+// to point out of it).
+struct MixedCells
+{
+  const std::vector<int32_t>* tets = nullptr;
+  const std::vector<int32_t>* prisms = nullptr;
+  const std::vector<int32_t>* pyramids = nullptr;
+};
+
+// All faces of the mixed mesh; faces match by their corner ids. `cells` (may be null) receives the
+// per-cell maxima, tets first, then prisms, then pyramids. For tets only, the figures equal cfdMetrics'.
+CfdSummary cfdMetricsMixed(const std::vector<double>& points, const MixedCells& mesh, CfdCellMetrics* cells);
 
 } // namespace quality
 } // namespace volgrid

@@ -83,6 +83,38 @@ def check_mesh_counts(out):
     return counts
 
 
+def check_mesh_figures(out):
+    """checkMesh's non-orthogonality (max, average, faces over 70 deg) and skewness (max, faces over 4)."""
+    f = {}
+    m = re.search(r"Mesh non-orthogonality Max: ([0-9.e+-]+) average: ([0-9.e+-]+)", out)
+    if m:
+        f["max_non_orthogonality"], f["average_non_orthogonality"] = float(m.group(1)), float(m.group(2))
+    m = re.search(r"severely non-orthogonal \(> 70 degrees\) faces: (\d+)", out)
+    f["severe_faces"] = int(m.group(1)) if m else 0
+    m = re.search(r"Max skewness = ([0-9.e+-]+)(?:, (\d+) highly skew faces)?", out)
+    if m:
+        f["max_skewness"], f["skew_faces"] = float(m.group(1)), int(m.group(2) or 0)
+    return f
+
+
+def expect_quality_as_check_mesh(vtu, out, what):
+    """volgrid quality on the .vtu of the mesh checkMesh printed `out` for: the same CFD figures, every cell
+    measured (checkMesh prints 6 significant digits)."""
+    r = run([volgrid, "quality", vtu, "--json"])
+    expect(r.returncode == 0, what + ": volgrid quality", r)
+    if r.returncode != 0:
+        return
+    q = json.loads(r.stdout.strip().splitlines()[-1])
+    f = check_mesh_figures(out)
+    mine = {"max_non_orthogonality": q["MaxNonOrthogonality"], "average_non_orthogonality":
+            q["AverageNonOrthogonality"], "severe_faces": q["SevereNonOrthogonalFaces"],
+            "max_skewness": q["MaxSkewness"], "skew_faces": q["HighlySkewFaces"]}
+    print(what + ": checkMesh", f, "\n  volgrid quality", mine)
+    same = set(f) == set(mine) and all(
+        abs(mine[k] - f[k]) <= 1e-5 * abs(f[k]) + 1e-4 if isinstance(f[k], float) else mine[k] == f[k] for k in f)
+    expect(same and q["SkippedCells"] == 0, what + ": volgrid quality's CFD figures are checkMesh's", r)
+
+
 # Split prisms: a tet-only mesh; checkMesh must say "Mesh OK" when OpenFOAM is installed.
 r = run([volgrid, "mesh", w("sis.off"), w("sis_foam"), "--format", "openfoam", "--split-prisms", "--json"] + layers)
 expect(r.returncode == 0, "split prisms to OpenFOAM", r)
@@ -105,6 +137,7 @@ if r.returncode == 0:
         n = check_mesh_counts(c.stdout)
         expect("Mesh OK." in c.stdout and n.get("prisms") == j["wedges"] and n.get("tetrahedra") == j["tets"]
                and n.get("cells") == j["wedges"] + j["tets"], "checkMesh on the OpenFOAM prisms: Mesh OK, %s" % n, c)
+        expect_quality_as_check_mesh(w("sis.vtu"), c.stdout, "sphere in sphere, prisms")
 
 # Wedges in gmsh 2.2 through gmshToFoam: checkMesh on the mixed mesh itself.
 r = run([volgrid, "mesh", w("sis.off"), w("sis.msh"), "--format", "gmsh22"] + layers)
@@ -279,6 +312,10 @@ if r.returncode == 0:
                "straight wing: checkMesh on the direct OpenFOAM pyramids = gmshToFoam's: %s %s" % (nf, ng), cf)
         for line in ("Cell volumes OK", "Face pyramids OK", "Upper triangular ordering OK", "Number of regions: 1 (OK)"):
             expect(line in cf.stdout, "straight wing, direct OpenFOAM: checkMesh: " + line, cf)
+        r = run([volgrid, "mesh", w("wing.off"), w("wing_layers.vtu"), "--layers", "10", "--first-height", "1e-4",
+                 "--growth", "1.2"])
+        expect(r.returncode == 0, "straight wing with pyramids to .vtu", r)
+        expect_quality_as_check_mesh(w("wing_layers.vtu"), cf.stdout, "straight wing, prisms and pyramids")
         expect(re.search(r"Boundary openness .* OK", cf.stdout) is not None, "straight wing, direct: closed boundary", cf)
     # Pyramids go to every format that takes prisms; TetGen refuses both, nothing written.
     r = run([volgrid, "mesh", w("wing.off"), w("wing.node"), "--layers", "10", "--first-height", "1e-4"])

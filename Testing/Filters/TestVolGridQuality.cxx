@@ -292,6 +292,59 @@ TEST(VolGridQuality, NonTetCellsAreSkipped)
   EXPECT_EQ(sum, 1.0);
 }
 
+TEST(VolGridQuality, MixedGridsGetTheCfdMetrics)
+{
+  // Two wedges stacked, the upper one's top moved by (2, 0, 0): their centres are (1, 0, 1) apart, 45
+  // degrees from the shared face's normal (Core's test works it out). VTK's wedge order: (a c b a' c' b').
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const double xyz[9][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 },
+                             { 0, 1, 1 }, { 2, 0, 2 }, { 3, 0, 2 }, { 2, 1, 2 } };
+  for (const auto& p : xyz)
+    points->InsertNextPoint(p);
+  vtkNew<vtkUnstructuredGrid> wedges;
+  wedges->SetPoints(points);
+  const vtkIdType lower[6] = { 0, 2, 1, 3, 5, 4 }, upper[6] = { 3, 5, 4, 6, 8, 7 };
+  wedges->InsertNextCell(VTK_WEDGE, 6, lower);
+  wedges->InsertNextCell(VTK_WEDGE, 6, upper);
+  vtkNew<vtkVolGridQuality> quality;
+  quality->SetInputData(wedges);
+  quality->SetMetric(vtkVolGridQuality::NON_ORTHOGONALITY);
+  quality->Update();
+  vtkDataSet* out = vtkDataSet::SafeDownCast(quality->GetOutputDataObject(0));
+  vtkFieldData* fd = out->GetFieldData();
+  EXPECT_EQ(quality->GetNumberOfSkippedCells(), 0);
+  EXPECT_NEAR(fd->GetArray("MaxNonOrthogonality")->GetTuple1(0), 45.0, 1e-9);
+  EXPECT_NEAR(out->GetCellData()->GetArray("Quality")->GetTuple1(1), 45.0, 1e-9);
+  EXPECT_NEAR(fd->GetArray("TotalVolume")->GetTuple1(0), 1.0, 1e-12);
+
+  // The unit cube as six pyramids around its centre, each base turning towards the apex (VTK's order):
+  // measured (not skipped), 1/6 each, faces between them orthogonal to the centre lines.
+  vtkNew<vtkPoints> cube;
+  for (int i = 0; i < 8; ++i)
+    cube->InsertNextPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  cube->InsertNextPoint(0.5, 0.5, 0.5);
+  vtkNew<vtkUnstructuredGrid> pyramids;
+  pyramids->SetPoints(cube);
+  const vtkIdType bases[6][4] = { { 0, 1, 3, 2 }, { 4, 6, 7, 5 }, { 0, 4, 5, 1 },
+                                  { 2, 3, 7, 6 }, { 0, 2, 6, 4 }, { 1, 5, 7, 3 } };
+  for (const auto& b : bases)
+  {
+    const vtkIdType pyramid[5] = { b[0], b[1], b[2], b[3], 8 };
+    pyramids->InsertNextCell(VTK_PYRAMID, 5, pyramid);
+  }
+  quality->SetInputData(pyramids);
+  quality->Update();
+  out = vtkDataSet::SafeDownCast(quality->GetOutputDataObject(0));
+  fd = out->GetFieldData();
+  EXPECT_EQ(quality->GetNumberOfSkippedCells(), 0);
+  EXPECT_EQ(fd->GetArray("NumberOfPyramids")->GetTuple1(0), 6.0);
+  EXPECT_NEAR(fd->GetArray("PyramidVolume")->GetTuple1(0), 1.0, 1e-12);
+  EXPECT_NEAR(fd->GetArray("TotalVolume")->GetTuple1(0), 1.0, 1e-12);
+  EXPECT_NEAR(fd->GetArray("MaxNonOrthogonality")->GetTuple1(0), 0.0, 1e-6);
+  EXPECT_EQ(fd->GetArray("SevereNonOrthogonalFaces")->GetTuple1(0), 0.0);
+}
+
 TEST(VolGridQuality, WedgesAreMeasuredByType)
 {
   // A right wedge of height 0.01 on the equilateral triangle (0 0) (1 0) (0.5 h) in VTK's order (the first
