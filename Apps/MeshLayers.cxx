@@ -188,22 +188,7 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
     return 1;
   if (!vtkOutput)
   {
-    SolverMesh mesh;
-    mesh.points = r.points;
-    mesh.tets = r.tets;
-    mesh.tetRegion = r.tetRegion;
-    mesh.triangles = r.boundaryTriangles;
-    mesh.trianglePatch = r.boundaryPatch;
-    mesh.patchNames = r.patchNames;
-    mesh.prisms = r.wedges;
-    mesh.prismRegion.assign(r.wedges.size() / 6, 0);
-    mesh.pyramids = r.pyramids;
-    mesh.pyramidRegion.assign(r.pyramids.size() / 5, 0);
-    if (!layers.splitPrisms)
-    {
-      mesh.quads = r.sideQuads;
-      mesh.quadPatch = r.sidePatch;
-    }
+    const SolverMesh mesh = layeredSolverMesh(r);
     if (!writeSolverOutput("mesh", out, format, mesh, request, json))
       return 1;
   }

@@ -2,6 +2,7 @@
 
 #include "VolGridConversion.h"
 
+#include "BoundaryFaceOwners.h"
 #include "LayeredMesher.h"
 
 #include "vtkCellArray.h"
@@ -11,11 +12,43 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <cstdint>
 #include <vector>
+
+namespace
+{
+// BoundaryFacePatch of the volume (see the header), in its cell order: wedges, pyramids, tets.
+vtkSmartPointer<vtkIntArray> layeredBoundaryFacePatch(const volgrid::LayeredMeshResult& r)
+{
+  if (r.wedges.empty() && r.pyramids.empty()) // split prisms: a tet grid like any other
+    return VolGridBoundaryFacePatch(r.tets, r.boundaryTriangles, r.boundaryPatch);
+  const volgrid::SolverMesh mesh = volgrid::layeredSolverMesh(r);
+  const int64_t tets = mesh.numberOfTets(), wedges = static_cast<int64_t>(r.wedges.size() / 6);
+  const int64_t pyramids = static_cast<int64_t>(r.pyramids.size() / 5);
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName("BoundaryFacePatch");
+  array->SetNumberOfComponents(5);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(tets + wedges + pyramids));
+  array->Fill(-1);
+  std::vector<volgrid::CellSide> owners;
+  volgrid::findBoundaryCellSides(mesh, owners); // a face without a cell has no entry (cell -1)
+  const size_t numTriangles = mesh.trianglePatch.size();
+  for (size_t f = 0; f < owners.size(); ++f)
+  {
+    const int64_t c = owners[f].cell; // Core's order: tets, prisms, pyramids
+    if (c < 0)
+      continue;
+    const int64_t cell = c < tets ? wedges + pyramids + c : c - tets; // layer cells keep their order
+    const int32_t patch = f < numTriangles ? mesh.trianglePatch[f] : mesh.quadPatch[f - numTriangles];
+    array->SetTypedComponent(static_cast<vtkIdType>(cell), owners[f].side, patch);
+  }
+  return array;
+}
+} // namespace
 
 void VolGridFillFromLayeredResult(const volgrid::LayeredMeshResult& r, vtkUnstructuredGrid* volume,
                                   vtkPolyData* boundary)
@@ -68,6 +101,7 @@ void VolGridFillFromLayeredResult(const volgrid::LayeredMeshResult& r, vtkUnstru
   volume->GetCellData()->AddArray(layer);
   volume->GetCellData()->AddArray(reason);
   volume->GetCellData()->AddArray(region);
+  volume->GetCellData()->AddArray(layeredBoundaryFacePatch(r));
   volume->GetCellData()->SetActiveScalars("LayerIndex");
 
   std::vector<int32_t> patches = r.boundaryPatch;

@@ -13,9 +13,14 @@ struct LayeredMeshResult;
 }
 
 // The volume: VTK_WEDGE cells (the prisms, first), VTK_PYRAMID cells (over collapsed columns) and VTK_TETRA
-// cells, with the cell arrays LayerIndex (-1 for the tets outside the layers), ThinnedReason (Core's ThinnedReason of the column) and Region,
-// and PatchNames as field data. The boundary (may be null): the boundary triangles and the prisms' side
-// quads on symmetry planes, with PatchId and PatchNames. Replaces the data sets' points and cells.
+// cells, with the cell arrays LayerIndex (-1 for the tets outside the layers), ThinnedReason (Core's
+// ThinnedReason of the column), Region and BoundaryFacePatch, and PatchNames as field data.
+// BoundaryFacePatch (so that a writer given only the volume, ParaView's Save Data, writes every patch):
+// with split prisms (tets only) as VolGridBoundaryFacePatch; else 5 components, component k the patch of
+// the cell's Exodus II side k + 1 (Core/IO/BoundaryFaceOwners.h: kExodusTetSide, kExodusWedgeSide,
+// kExodusPyramidSide, in Core's vertex order of the cell), -1 where that side is not a boundary face. The boundary (may
+// be null): the boundary triangles and the prisms' side quads on symmetry planes, with PatchId and PatchNames. Replaces
+// the data sets' points and cells.
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromLayeredResult(const volgrid::LayeredMeshResult& result,
                                                            vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 

@@ -1,5 +1,8 @@
-// Boundary triangle -> owning tet face, by hashing each triangle's sorted vertex triple.
+// Boundary triangle -> owning tet face, by hashing each triangle's sorted vertex triple; the faces of
+// prisms and pyramids by sorted keys.
 #include "BoundaryFaceOwners.h"
+
+#include "CellFaces.h"
 
 #include <algorithm>
 #include <array>
@@ -10,6 +13,12 @@ namespace volgrid
 {
 
 const int kExodusTetSide[4][3] = { { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 }, { 0, 2, 1 } };
+const int kExodusWedgeSide[5][4] = { { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 0, 3, 5, 2 }, { 0, 2, 1, -1 }, { 3, 4, 5, -1 } };
+const int kExodusPyramidSide[5][4] = { { 0, 1, 4, -1 },
+                                       { 1, 2, 4, -1 },
+                                       { 2, 3, 4, -1 },
+                                       { 3, 0, 4, -1 },
+                                       { 0, 3, 2, 1 } };
 
 namespace
 {
@@ -32,6 +41,20 @@ struct KeyHash
     return static_cast<size_t>(h ^ (h >> 29));
   }
 };
+
+// The sides of the cells of one layer kind (n points each, numbered from `first`) by sorted key.
+void addLayerSides(const std::vector<int32_t>& cells, size_t n, const int (&sides)[5][4], int64_t first,
+                   std::vector<std::pair<std::array<int32_t, 4>, CellSide>>& out)
+{
+  for (size_t c = 0; c < cells.size() / n; ++c)
+    for (int side = 0; side < 5; ++side)
+    {
+      const int* f = sides[side];
+      const int32_t* v = cells.data() + n * c;
+      out.push_back(
+        { cellFaceKey(v[f[0]], v[f[1]], v[f[2]], f[3] < 0 ? -1 : v[f[3]]), { first + static_cast<int64_t>(c), side } });
+    }
+}
 } // namespace
 
 Status findBoundaryFaceOwners(const SolverMesh& mesh, std::vector<FaceOwner>& owners)
@@ -74,6 +97,45 @@ Status findBoundaryFaceOwners(const std::vector<int32_t>& tets, const std::vecto
                          std::to_string(orphans.size()) + " boundary triangle(s) are not a face of any tet (first " +
                            std::to_string(first[0]) + ")",
                          first);
+}
+
+Status findBoundaryCellSides(const SolverMesh& mesh, std::vector<CellSide>& owners)
+{
+  std::vector<FaceOwner> tetOwners;
+  const Status tets = findBoundaryFaceOwners(mesh, tetOwners);
+  if (!tets.ok() && mesh.prisms.empty() && mesh.pyramids.empty())
+    return tets;
+  std::vector<std::pair<std::array<int32_t, 4>, CellSide>> prismFaces; // and the pyramids'
+  addLayerSides(mesh.prisms, 6, kExodusWedgeSide, mesh.numberOfTets(), prismFaces);
+  addLayerSides(mesh.pyramids, 5, kExodusPyramidSide,
+                mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size()), prismFaces);
+  std::sort(prismFaces.begin(), prismFaces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const auto prismOwner = [&](const std::array<int32_t, 4>& key)
+  {
+    const auto it = std::lower_bound(prismFaces.begin(), prismFaces.end(), key,
+                                     [](const auto& a, const std::array<int32_t, 4>& k) { return a.first < k; });
+    return it != prismFaces.end() && it->first == key ? it->second : CellSide();
+  };
+  owners.assign(mesh.triangles.size() / 3 + mesh.quads.size() / 4, CellSide());
+  for (size_t t = 0; t < owners.size(); ++t)
+  {
+    const bool triangle = t < mesh.triangles.size() / 3;
+    if (triangle && tetOwners[t].tet >= 0)
+      owners[t] = { tetOwners[t].tet, tetOwners[t].side };
+    else if (triangle)
+      owners[t] = prismOwner(cellFaceKey(mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]));
+    else
+    {
+      const int32_t* q = mesh.quads.data() + 4 * (t - mesh.triangles.size() / 3);
+      owners[t] = prismOwner(cellFaceKey(q[0], q[1], q[2], q[3]));
+    }
+    if (owners[t].cell < 0)
+      return Status::failure(ErrorKind::InvalidOption,
+                             std::string("boundary ") + (triangle ? "triangle " : "quad ") +
+                               std::to_string(triangle ? t : t - mesh.triangles.size() / 3) +
+                               " is not a face of any tet, prism or pyramid");
+  }
+  return Status::success();
 }
 
 } // namespace volgrid

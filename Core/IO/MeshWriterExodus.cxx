@@ -8,12 +8,10 @@
 // Elements are numbered block by block, as Exodus numbers them. Point fields (SolverMesh::pointData)
 // become nodal variables at time 0.
 #include "BoundaryFaceOwners.h"
-#include "CellFaces.h"
 #include "LibraryOutput.h"
 #include "MeshWriter.h"
 
 #include <algorithm>
-#include <array>
 #include <exodusII.h>
 
 namespace volgrid
@@ -40,78 +38,6 @@ int putNames(int file, ex_entity_type kind, const std::vector<int32_t>& labels, 
   for (std::string& t : texts)
     pointers.push_back(&t[0]);
   return ex_put_names(file, kind, pointers.data());
-}
-
-// Side f + 1 of an Exodus II wedge in SolverMesh's order, outward (a triangle's fourth entry is -1).
-const int kExodusWedgeSide[5][4] = { { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 0, 3, 5, 2 }, { 0, 2, 1, -1 }, { 3, 4, 5, -1 } };
-// And of an Exodus II pyramid (quad 1-4 turning towards the apex 5).
-const int kExodusPyramidSide[5][4] = { { 0, 1, 4, -1 },
-                                       { 1, 2, 4, -1 },
-                                       { 2, 3, 4, -1 },
-                                       { 3, 0, 4, -1 },
-                                       { 0, 3, 2, 1 } };
-
-// A boundary face's owner: its element (tets first, then prisms, then pyramids: prism w is element
-// numberOfTets + w, all 0-based before the block numbering) and its 0-based Exodus side.
-struct SideOwner
-{
-  int64_t cell = -1;
-  int side = -1;
-};
-
-// The sides of the cells of one layer kind (n points each, numbered from `first`) by sorted key.
-void addLayerSides(const std::vector<int32_t>& cells, size_t n, const int (&sides)[5][4], int64_t first,
-                   std::vector<std::pair<std::array<int32_t, 4>, SideOwner>>& out)
-{
-  for (size_t c = 0; c < cells.size() / n; ++c)
-    for (int side = 0; side < 5; ++side)
-    {
-      const int* f = sides[side];
-      const int32_t* v = cells.data() + n * c;
-      out.push_back(
-        { cellFaceKey(v[f[0]], v[f[1]], v[f[2]], f[3] < 0 ? -1 : v[f[3]]), { first + static_cast<int64_t>(c), side } });
-    }
-}
-
-// Owners of the boundary triangles (then the quads, after them): tet faces by findBoundaryFaceOwners, the
-// rest among the prisms' and pyramids' faces. Fails naming the first face that is none of these.
-Status findSideOwners(const SolverMesh& mesh, std::vector<SideOwner>& owners)
-{
-  std::vector<FaceOwner> tetOwners;
-  const Status tets = findBoundaryFaceOwners(mesh, tetOwners);
-  if (!tets.ok() && mesh.prisms.empty() && mesh.pyramids.empty())
-    return tets;
-  std::vector<std::pair<std::array<int32_t, 4>, SideOwner>> prismFaces; // and the pyramids'
-  addLayerSides(mesh.prisms, 6, kExodusWedgeSide, mesh.numberOfTets(), prismFaces);
-  addLayerSides(mesh.pyramids, 5, kExodusPyramidSide,
-                mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size()), prismFaces);
-  std::sort(prismFaces.begin(), prismFaces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  const auto prismOwner = [&](const std::array<int32_t, 4>& key)
-  {
-    const auto it = std::lower_bound(prismFaces.begin(), prismFaces.end(), key,
-                                     [](const auto& a, const std::array<int32_t, 4>& k) { return a.first < k; });
-    return it != prismFaces.end() && it->first == key ? it->second : SideOwner();
-  };
-  owners.assign(mesh.triangles.size() / 3 + mesh.quads.size() / 4, SideOwner());
-  for (size_t t = 0; t < owners.size(); ++t)
-  {
-    const bool triangle = t < mesh.triangles.size() / 3;
-    if (triangle && tetOwners[t].tet >= 0)
-      owners[t] = { tetOwners[t].tet, tetOwners[t].side };
-    else if (triangle)
-      owners[t] = prismOwner(cellFaceKey(mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2]));
-    else
-    {
-      const int32_t* q = mesh.quads.data() + 4 * (t - mesh.triangles.size() / 3);
-      owners[t] = prismOwner(cellFaceKey(q[0], q[1], q[2], q[3]));
-    }
-    if (owners[t].cell < 0)
-      return Status::failure(ErrorKind::InvalidOption,
-                             std::string("boundary ") + (triangle ? "triangle " : "quad ") +
-                               std::to_string(triangle ? t : t - mesh.triangles.size() / 3) +
-                               " is not a face of any tet, prism or pyramid");
-  }
-  return Status::success();
 }
 
 size_t longestName(const SolverMesh& mesh)
@@ -184,7 +110,7 @@ bool writeBlocks(int file, const SolverMesh& mesh, const std::vector<int32_t>& r
 }
 
 bool writeSideSets(int file, const SolverMesh& mesh, const std::vector<int32_t>& patches,
-                   const std::vector<SideOwner>& owners, const std::vector<int64_t>& elementNumber)
+                   const std::vector<CellSide>& owners, const std::vector<int64_t>& elementNumber)
 {
   std::vector<int32_t> facePatch = mesh.trianglePatch; // triangles, then quads, as the owners
   facePatch.insert(facePatch.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
@@ -229,7 +155,7 @@ bool writePointData(int file, const SolverMesh& mesh)
   return true;
 }
 
-bool writeFile(int file, const SolverMesh& mesh, const std::vector<SideOwner>& owners)
+bool writeFile(int file, const SolverMesh& mesh, const std::vector<CellSide>& owners)
 {
   const std::vector<int32_t> regions = distinctLabels(mesh.tetRegion);
   std::vector<int32_t> faces = mesh.trianglePatch;
@@ -264,8 +190,8 @@ Status writeExodus(const std::string& path, const SolverMesh& mesh)
       mesh.numberOfTets() + static_cast<int64_t>(mesh.prismRegion.size() + mesh.pyramidRegion.size()) > 2147483647LL)
     return Status::failure(ErrorKind::InvalidOption,
                            "cannot write Exodus II file '" + path + "': more than 2^31 points or cells");
-  std::vector<SideOwner> owners;
-  Status s = findSideOwners(mesh, owners);
+  std::vector<CellSide> owners;
+  Status s = findBoundaryCellSides(mesh, owners);
   if (!s.ok())
     return Status::failure(ErrorKind::InvalidOption, "cannot write Exodus II file '" + path + "': " + s.message);
   LibraryOutput out;

@@ -170,4 +170,25 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
   return Status::success();
 }
 
+SolverMesh layeredSolverMesh(const LayeredMeshResult& r)
+{
+  SolverMesh mesh;
+  mesh.points = r.points;
+  mesh.tets = r.tets;
+  mesh.tetRegion = r.tetRegion;
+  mesh.triangles = r.boundaryTriangles;
+  mesh.trianglePatch = r.boundaryPatch;
+  mesh.patchNames = r.patchNames;
+  mesh.prisms = r.wedges;
+  mesh.prismRegion.assign(r.wedges.size() / 6, 0);
+  mesh.pyramids = r.pyramids;
+  mesh.pyramidRegion.assign(r.pyramids.size() / 5, 0);
+  if (!r.wedges.empty()) // split prisms put their side quads into boundaryTriangles
+  {
+    mesh.quads = r.sideQuads;
+    mesh.quadPatch = r.sidePatch;
+  }
+  return mesh;
+}
+
 } // namespace volgrid

@@ -6,6 +6,7 @@
 #include "BoundaryLayers.h"
 #include "Mesher.h"
 #include "PatchNames.h"
+#include "SolverMesh.h"
 
 #include <cstdint>
 #include <string>
@@ -43,6 +44,10 @@ struct LayeredMeshResult
   std::vector<std::string> warnings;
   double seconds = 0;
 };
+
+// The result as the solver formats take it: tets, prisms and pyramids (the layers' region 0), the boundary
+// triangles and, unless the prisms were split, the prisms' side quads on symmetry planes.
+SolverMesh layeredSolverMesh(const LayeredMeshResult& result);
 
 // Grows the layers and meshes the rest. Without layers (options.layers == 0) this is an error: call
 // meshSurface. On failure the result is empty and the Status says which stage failed and why.

@@ -2,13 +2,18 @@
 Data): the wing-in-sphere mesh of VolGrid Tetrahedralize saved as gmsh 4.1 and 2.2, SU2, Medit, TetGen, an
 OpenFOAM case, CGNS and Exodus II, each read back by a reader VolGrid did not write (gmsh's API, meshio,
 OpenFOAM's checkMesh, ParaView's CGNS and Exodus readers), which must report the tets, points and patch
-names with the face counts of Tetrahedralize's own outputs. A save into a missing directory fails with a
-clear error and leaves no file. Usage: pvpython test_savedata.py WORKDIR (plugin in $VOLGRID_PLUGIN)."""
+names with the face counts of Tetrahedralize's own outputs; the same with boundary layers (prisms and
+pyramids) for every format that takes them. A save into a missing directory fails with a clear error and
+leaves no file. Usage: pvpython test_savedata.py WORKDIR (plugin in $VOLGRID_PLUGIN)."""
 import collections
+import json
 import os
+import re
 import shutil
 import subprocess
 import sys
+
+import meshio
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
@@ -19,6 +24,8 @@ import solver_readers as R  # noqa: E402
 from test_solver_export import write_potential_case  # noqa: E402
 
 LoadPlugin(os.environ["VOLGRID_PLUGIN"], remote=False, ns=globals())
+# Cells by type of a CGNS or Exodus II file as ParaView's readers see them (run under pvpython).
+READERS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Apps", "mixed_mesh_readers.py")
 failures = []
 
 
@@ -82,6 +89,44 @@ p = subprocess.run([volgrid, "refine", w("mesh.msh"), w("none.exo"), "--size-arr
                    stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 check(p.returncode == 1 and "TargetSize" in p.stdout and not os.path.exists(w("none.exo")),
       "refine on a mesh without the target array: clear error, no file")
+
+# Boundary layers: the prisms and the pyramids of collapsed columns are saved too (the volume's 5-component
+# BoundaryFacePatch), each file read back by meshio, checkMesh or ParaView's readers with the cells by type
+# and the boundary faces of Tetrahedralize's outputs; TetGen refuses them with a message and writes nothing.
+layered = VolGridTetrahedralize(Input=domain, NumberOfLayers=10, FirstLayerHeight=1e-4)
+layered.UpdatePipeline()
+lv, lb = servermanager.Fetch(layered, idx=0), servermanager.Fetch(layered, idx=1)
+types = collections.Counter(lv.GetCellType(i) for i in range(lv.GetNumberOfCells()))
+cells = {"tetra": types[10], "wedge": types[13], "pyramid": types[14]}
+print("Tetrahedralize with layers: %s, %d boundary faces" % (cells, lb.GetNumberOfCells()))
+check(cells["wedge"] > 0 and cells["pyramid"] > 0 and sum(cells.values()) == lv.GetNumberOfCells(),
+      "layers: wedges, pyramids and tets only")
+for name in ("layers.msh", "layers.su2", "layers.mesh", "layers.cgns", "layers.exo", "layers_case.foam"):
+    SaveData(w(name), proxy=layered)
+for kind, name in (("gmsh", "layers.msh"), ("su2", "layers.su2"), ("medit", "layers.mesh")):
+    m = meshio.read(w(name), file_format=kind)
+    got = {k: sum(len(b.data) for b in m.cells if b.type == k) for k in cells}
+    faces = sum(len(b.data) for b in m.cells if b.type in ("triangle", "quad"))
+    check(got == cells and faces == lb.GetNumberOfCells(),
+          "meshio on the saved %s with layers: cells %s, %d boundary faces" % (name, got, faces))
+for kind, name in (("cgns", "layers.cgns"), ("exodus", "layers.exo")):
+    p = subprocess.run([os.environ["VOLGRID_PVPYTHON"], READERS, kind, w(name)], stdout=subprocess.PIPE, text=True)
+    got = json.loads(p.stdout.strip().splitlines()[-1]) if p.returncode == 0 else {}
+    check({k: got.get(n) for k, n in (("tetra", "tets"), ("wedge", "wedges"), ("pyramid", "pyramids"))} == cells
+          and got.get("other") == 0 and got["tet_min_max"][0] > 0 and got["pyramid_min_max"][0] > 0
+          and got["wedge_min_max"][1] < 0,  # CGNS's and Exodus's wedge order is VTK's reversed (test_cli_layers)
+          "ParaView's reader on the saved %s with layers: the same cells, every one of them valid (%s)" % (name, got))
+write_potential_case(w("layers_case"))
+foam = R.check_mesh(w("layers_case"))
+shapes = {k: int(n) for k, n in re.findall(r"^\s+(prisms|pyramids|tetrahedra):\s+(\d+)", foam["output"], re.M)}
+check(shapes == {"prisms": cells["wedge"], "pyramids": cells["pyramid"], "tetrahedra": cells["tetra"]}
+      and sum(foam["patches"].values()) == lb.GetNumberOfCells() and "Cell volumes OK" in foam["output"],
+      "checkMesh on the saved OpenFOAM case with layers: cells %s, boundary faces, volumes OK" % shapes)
+writer = CreateWriter(w("layers.node"), layered)
+writer.UpdatePipeline()
+check(writer.GetClientSideObject().GetErrorCode() != 0 and not os.path.exists(w("layers.node")),
+      "TetGen with layers: an error (printed above, saying to split the prisms), no file")
+del writer
 
 # A directory that does not exist: the writer reports it, no file appears.
 writer = CreateWriter(w("missing/mesh.cgns"), mesh)
