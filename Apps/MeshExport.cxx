@@ -139,6 +139,8 @@ bool writeSolverOutput(const char* command, const std::string& out, MeshFormat f
               static_cast<long long>(normalized.numberOfPoints()), static_cast<long long>(normalized.numberOfTets()));
   if (!normalized.prisms.empty())
     std::printf(", %lld prisms", static_cast<long long>(normalized.prisms.size() / 6));
+  if (!normalized.pyramids.empty())
+    std::printf(", %lld pyramids", static_cast<long long>(normalized.pyramids.size() / 5));
   std::printf(", patches");
   std::vector<int32_t> faces = normalized.trianglePatch; // boundary faces: triangles and prism side quads
   faces.insert(faces.end(), normalized.quadPatch.begin(), normalized.quadPatch.end());

@@ -1,5 +1,7 @@
 #include "VolGridConversion.h"
 
+#include "VolGridLayeredConversion.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -197,16 +199,21 @@ std::map<int32_t, std::string> VolGridReadLabelNames(vtkDataObject* data, const 
 
 void VolGridFillFromSolverMesh(const volgrid::SolverMesh& mesh, vtkUnstructuredGrid* volume, vtkPolyData* boundary)
 {
-  volgrid::MesherResult result; // the same arrays under the mesher's names
-  result.points = mesh.points;
-  result.tets = mesh.tets;
-  result.tetRegion = mesh.tetRegion;
-  result.tetRegion.resize(mesh.tets.size() / 4, 0);
-  result.boundaryTriangles = mesh.triangles;
-  result.boundaryPatch = mesh.trianglePatch;
-  result.boundaryPatch.resize(mesh.triangles.size() / 3, 0);
-  VolGridFillFromMesherResult(result, volume, boundary);
-  VolGridSetPatchAndRegionNames(result, mesh.patchNames, mesh.regionNames, volume, boundary);
+  if (volgrid::hasLayerCells(mesh))
+    VolGridFillFromMixedSolverMesh(mesh, volume, boundary);
+  else
+  {
+    volgrid::MesherResult result; // the same arrays under the mesher's names
+    result.points = mesh.points;
+    result.tets = mesh.tets;
+    result.tetRegion = mesh.tetRegion;
+    result.tetRegion.resize(mesh.tets.size() / 4, 0);
+    result.boundaryTriangles = mesh.triangles;
+    result.boundaryPatch = mesh.trianglePatch;
+    result.boundaryPatch.resize(mesh.triangles.size() / 3, 0);
+    VolGridFillFromMesherResult(result, volume, boundary);
+    VolGridSetPatchAndRegionNames(result, mesh.patchNames, mesh.regionNames, volume, boundary);
+  }
   for (const auto& field : mesh.pointData)
   {
     if (field.second.size() != mesh.points.size() / 3)

@@ -66,7 +66,8 @@ VTKVOLGRIDFILTERS_EXPORT void VolGridSetPatchAndRegionNames(const volgrid::Meshe
 
 // A solver's mesh (Core/IO/MeshReader.h) as VTK data: `volume` gets the tets with Region, PatchNames and
 // RegionNames and the point fields as point arrays; `boundary` (may be null) the boundary triangles with
-// PatchId and PatchNames.
+// PatchId and PatchNames. With prisms or pyramids, VolGridFillFromMixedSolverMesh's grid (and the point
+// fields).
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromSolverMesh(const volgrid::SolverMesh& mesh, vtkUnstructuredGrid* volume,
                                                         vtkPolyData* boundary);
 

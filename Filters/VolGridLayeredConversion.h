@@ -10,6 +10,7 @@ class vtkUnstructuredGrid;
 namespace volgrid
 {
 struct LayeredMeshResult;
+struct SolverMesh;
 }
 
 // The volume: VTK_WEDGE cells (the prisms, first), VTK_PYRAMID cells (over collapsed columns) and VTK_TETRA
@@ -21,6 +22,12 @@ struct LayeredMeshResult;
 // kExodusPyramidSide, in Core's vertex order of the cell), -1 where that side is not a boundary face. The boundary (may
 // be null): the boundary triangles and the prisms' side quads on symmetry planes, with PatchId and PatchNames. Replaces
 // the data sets' points and cells.
+// A mesh with prisms and pyramids (a layered result, or a solver file read back) as the volume above
+// without LayerIndex and ThinnedReason: VTK_WEDGE, VTK_PYRAMID and VTK_TETRA cells, Region (the cells'
+// region labels), BoundaryFacePatch, PatchNames and RegionNames; the boundary (may be null) as above.
+VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromMixedSolverMesh(const volgrid::SolverMesh& mesh,
+                                                             vtkUnstructuredGrid* volume, vtkPolyData* boundary);
+
 VTKVOLGRIDFILTERS_EXPORT void VolGridFillFromLayeredResult(const volgrid::LayeredMeshResult& result,
                                                            vtkUnstructuredGrid* volume, vtkPolyData* boundary);
 

@@ -1,5 +1,6 @@
-// Solver mesh readers: a tet mesh with its named boundary patches and regions back into a SolverMesh,
-// so that `volgrid convert`, `refine` and `quality` take a solver's mesh. One format per file
+// Solver mesh readers: a tet mesh (Medit, gmsh and SU2: with its boundary-layer prisms, pyramids and
+// quads too) with its named boundary patches and regions back into a SolverMesh, so that `volgrid
+// convert`, `refine` and `quality` take a solver's mesh. One format per file
 // (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx,
 // MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx, MeshReaderCGNS.cxx, MeshReaderExodus.cxx). Errors name the file, the
 // line and the problem.
@@ -17,17 +18,19 @@ namespace volgrid
 bool solverMeshReaderSupports(const std::string& path);
 
 // Reads by extension (.mesh, .msh, .su2, .node/.ele/.face, .cgns, .exo/.e/.ex2), or an OpenFOAM case
-// directory. The mesh is cleared first.
+// directory. The mesh is cleared first. Quads are kept only with prisms or pyramids (finishReadCells).
 Status readSolverMesh(const std::string& path, SolverMesh& mesh);
 
-// Medit .mesh (ASCII): Vertices, Triangles (ref = patch), Tetrahedra (ref = region); other sections
-// skipped. Names from VolGrid's "# VolGrid patch|region LABEL NAME" comment lines.
+// Medit .mesh (ASCII): Vertices, Triangles and Quadrilaterals (ref = patch), Tetrahedra, Prisms and
+// Pyramids (ref = region); other sections skipped. Names from VolGrid's "# VolGrid patch|region LABEL NAME" comment
+// lines.
 Status readMeditVolume(const std::string& path, SolverMesh& mesh);
 
-// gmsh .msh, ASCII 2.2 and 4.1: triangles (patch = physical tag of the entity, else the entity tag)
-// and tets (region likewise); names from $PhysicalNames.
+// gmsh .msh, ASCII 2.2 and 4.1: triangles and quads (patch = physical tag of the entity, else the entity
+// tag), tets, prisms and pyramids (region likewise); names from $PhysicalNames.
 Status readGmshVolume(const std::string& path, SolverMesh& mesh);
-// SU2 (.su2, ASCII, 3D): tets and triangle markers; marker k (file order) is patch k named by MARKER_TAG.
+// SU2 (.su2, ASCII, 3D): tets, prisms, pyramids, and triangle and quad markers; marker k (file order) is
+// patch k named by MARKER_TAG.
 Status readSU2(const std::string& path, SolverMesh& mesh);
 // TetGen STEM.node/.ele/.face (`path` any of them or the stem): region = first tet attribute (else 1),
 // patch = face marker (else 1); 0- or 1-based as the first node says. No names.

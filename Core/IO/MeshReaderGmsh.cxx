@@ -120,7 +120,7 @@ Status readNodes(Scanner& sc, SolverMesh& mesh, GmshState& st, int64_t limit)
 // One element of `type` with label `label`: its node tags follow in the scanner.
 Status addElement(Scanner& sc, SolverMesh& mesh, GmshState& st, int64_t type, int32_t label, int64_t nodes)
 {
-  int32_t ids[4];
+  int32_t ids[6];
   for (int64_t k = 0; k < nodes; ++k)
   {
     int64_t tag = 0;
@@ -130,7 +130,7 @@ Status addElement(Scanner& sc, SolverMesh& mesh, GmshState& st, int64_t type, in
     const auto it = st.nodeIndex.find(tag);
     if (it == st.nodeIndex.end())
       return sc.error("element refers to unknown node " + std::to_string(tag));
-    if (k < 4)
+    if (k < 6)
       ids[k] = it->second;
   }
   if (type == 2)
@@ -142,6 +142,21 @@ Status addElement(Scanner& sc, SolverMesh& mesh, GmshState& st, int64_t type, in
   {
     mesh.tets.insert(mesh.tets.end(), ids, ids + 4);
     mesh.tetRegion.push_back(label);
+  }
+  else if (type == 3) // boundary quads, prisms and pyramids: SolverMesh's order is gmsh's
+  {
+    mesh.quads.insert(mesh.quads.end(), ids, ids + 4);
+    mesh.quadPatch.push_back(label);
+  }
+  else if (type == 6)
+  {
+    mesh.prisms.insert(mesh.prisms.end(), ids, ids + 6);
+    mesh.prismRegion.push_back(label);
+  }
+  else if (type == 7)
+  {
+    mesh.pyramids.insert(mesh.pyramids.end(), ids, ids + 5);
+    mesh.pyramidRegion.push_back(label);
   }
   return Status::success();
 }
@@ -159,6 +174,10 @@ int64_t nodesOf(int64_t type)
       return 4;
     case 4:
       return 4;
+    case 6:
+      return 6;
+    case 7:
+      return 5;
     case 15:
       return 1;
     default:
@@ -189,14 +208,15 @@ Status readElements(Scanner& sc, SolverMesh& mesh, GmshState& st, int64_t limit)
         if (k < 2)
           tags[k] = v;
       }
-      eh[0] = eh[2] == 4 ? 3 : 2;
+      eh[0] = eh[2] == 4 || eh[2] == 6 || eh[2] == 7 ? 3 : 2;
       eh[1] = tags[0] != 0 ? tags[0] : tags[1];
     }
     else
       s = readInts(sc, eh, 4, "an element block header");
     const int64_t nodes = nodesOf(eh[2]);
     if (s.ok() && nodes < 0)
-      return sc.error("element type " + std::to_string(eh[2]) + " is not supported (triangles and tets only)");
+      return sc.error("element type " + std::to_string(eh[2]) +
+                      " is not supported (triangles, quads, tets, prisms and pyramids only)");
     const auto phys = st.entityPhysical.find({ eh[0], eh[1] });
     const int32_t label = static_cast<int32_t>(phys != st.entityPhysical.end() ? phys->second : eh[1]);
     for (int64_t e = 0; e < eh[3] && s.ok(); ++e)
@@ -255,8 +275,8 @@ Status readGmshVolume(const std::string& path, SolverMesh& mesh)
   }
   if (!s.ok())
     return s;
-  if (mesh.tets.empty())
-    return readError(path, 0, "no tetrahedra: not a volume mesh");
+  if (!finishReadCells(mesh))
+    return readError(path, 0, "no tetrahedra, prisms or pyramids: not a volume mesh");
   return Status::success();
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <string_view>
 
 namespace volgrid
@@ -98,10 +99,23 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
   readNameComments(text, mesh);
   Scanner sc(text, path, true);
   const int64_t limit = countLimit(text);
-  static const std::pair<const char*, int> skipped[] = { { "Edges", 3 },         { "Quadrilaterals", 5 },
-                                                         { "Hexahedra", 9 },     { "Corners", 1 },
-                                                         { "Ridges", 1 },        { "RequiredVertices", 1 },
-                                                         { "RequiredEdges", 1 }, { "RequiredTriangles", 1 } };
+  static const std::pair<const char*, int> skipped[] = {
+    { "Edges", 3 },         { "Hexahedra", 9 },        { "Corners", 1 }, { "Ridges", 1 }, { "RequiredVertices", 1 },
+    { "RequiredEdges", 1 }, { "RequiredTriangles", 1 }
+  };
+  // Cell sections: vertices per cell, and where the cells and their references go (SolverMesh's order is
+  // Medit's for every kind, MeshWriterMedit.cxx).
+  const struct
+  {
+    const char* name;
+    int vertices;
+    std::vector<int32_t>* cells;
+    std::vector<int32_t>* refs;
+  } sections[] = { { "Tetrahedra", 4, &mesh.tets, &mesh.tetRegion },
+                   { "Triangles", 3, &mesh.triangles, &mesh.trianglePatch },
+                   { "Quadrilaterals", 4, &mesh.quads, &mesh.quadPatch },
+                   { "Prisms", 6, &mesh.prisms, &mesh.prismRegion },
+                   { "Pyramids", 5, &mesh.pyramids, &mesh.pyramidRegion } };
   std::string_view tok;
   int64_t value = 0;
   while (s.ok() && sc.next(tok) && tok != "End")
@@ -113,7 +127,9 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
         return sc.error("only 3D Medit meshes are supported");
       continue;
     }
-    const bool tets = tok == "Tetrahedra", tris = tok == "Triangles", verts = tok == "Vertices";
+    const bool verts = tok == "Vertices";
+    const auto* section =
+      std::find_if(std::begin(sections), std::end(sections), [&](const auto& c) { return tok == c.name; });
     int64_t count = 0;
     s = sc.readCount(count, "an entry count", limit);
     if (!s.ok())
@@ -128,18 +144,13 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
           mesh.points.push_back(x);
       }
     }
-    else if (tets || tris)
-      s = readCells(sc, count, tets ? 4 : 3, mesh.numberOfPoints(), tets ? mesh.tets : mesh.triangles,
-                    tets ? mesh.tetRegion : mesh.trianglePatch);
+    else if (section != std::end(sections))
+      s = readCells(sc, count, section->vertices, mesh.numberOfPoints(), *section->cells, *section->refs);
     else
     {
       int per = 0;
       for (const auto& sk : skipped)
         per = tok == sk.first ? sk.second : per;
-      if (tok == "Prisms" || tok == "Pyramids") // skipping them would leave a hole in the volume
-        return sc.error("Medit " + std::string(tok) +
-                        " (boundary layers) are not read: VolGrid reads tet meshes only "
-                        "(write the layers with --split-prisms to read them back)");
       if (per == 0)
         return sc.error("unknown Medit section '" + std::string(tok.substr(0, 40)) + "'");
       double ignored = 0;
@@ -149,8 +160,8 @@ Status readMeditVolume(const std::string& path, SolverMesh& mesh)
   }
   if (!s.ok())
     return s;
-  if (mesh.tets.empty())
-    return readError(path, 0, "no Tetrahedra section: not a volume mesh");
+  if (!finishReadCells(mesh))
+    return readError(path, 0, "no Tetrahedra, Prisms or Pyramids section: not a volume mesh");
   return Status::success();
 }
 

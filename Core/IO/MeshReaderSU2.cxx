@@ -1,10 +1,12 @@
-// SU2 native mesh reader (.su2, ASCII, 3D): tets (type 10), points, and markers of triangles (type 5).
-// Each marker becomes a patch, labelled 1, 2, ... in file order and named by its MARKER_TAG; SU2 has no
-// regions (all tets get region 1). Other element types are refused with their type number.
+// SU2 native mesh reader (.su2, ASCII, 3D): tets (type 10), boundary-layer prisms (13, VTK's order) and
+// pyramids (14), points, and markers of triangles (type 5) and quads (9). Each marker becomes a patch,
+// labelled 1, 2, ... in file order and named by its MARKER_TAG; SU2 has no regions (every cell gets
+// region 1). Other element types are refused with their type number.
 #include "MeshReader.h"
 #include "SurfaceReaderSupport.h"
 
 #include <string_view>
+#include <utility>
 
 namespace volgrid
 {
@@ -72,14 +74,30 @@ Status readSU2(const std::string& path, SolverMesh& mesh)
       {
         int64_t type = 0, index = 0;
         s = sc.readInt(type, "an element type");
-        if (s.ok() && type != 10)
-          return sc.error("SU2 element type " + std::to_string(type) + " is not supported (tets, type 10, only)");
+        if (s.ok() && type != 10 && type != 13 && type != 14)
+          return sc.error("SU2 element type " + std::to_string(type) +
+                          " is not supported (tets 10, prisms 13 and pyramids 14 only)");
         if (s.ok())
-          s = readIds(sc, 4, -1, mesh.tets);
+          s = readIds(sc,
+                      type == 10     ? 4
+                        : type == 13 ? 6
+                                     : 5,
+                      -1,
+                      type == 10     ? mesh.tets
+                        : type == 13 ? mesh.prisms
+                                     : mesh.pyramids);
+        if (s.ok() && type == 13) // VTK's wedge order: both triangles the other way round from SolverMesh's
+        {
+          int32_t* v = mesh.prisms.data() + mesh.prisms.size() - 6;
+          std::swap(v[1], v[2]);
+          std::swap(v[4], v[5]);
+        }
         if (s.ok() && sc.nextOnLine(tok) && !parseInt(tok, index))
           return sc.error("bad element index");
       }
       mesh.tetRegion.assign(mesh.tets.size() / 4, 1);
+      mesh.prismRegion.assign(mesh.prisms.size() / 6, 1);
+      mesh.pyramidRegion.assign(mesh.pyramids.size() / 5, 1);
     }
     else if (keywordValue(sc, tok, "NPOIN=", value) && (s = readCount(sc, value, limit, count)).ok())
     {
@@ -107,11 +125,12 @@ Status readSU2(const std::string& path, SolverMesh& mesh)
       {
         int64_t type = 0;
         s = sc.readInt(type, "a marker element type");
-        if (s.ok() && type != 5)
-          return sc.error("SU2 marker element type " + std::to_string(type) + " is not supported (triangles only)");
+        if (s.ok() && type != 5 && type != 9)
+          return sc.error("SU2 marker element type " + std::to_string(type) +
+                          " is not supported (triangles 5 and quads 9 only)");
         if (s.ok())
-          s = readIds(sc, 3, mesh.numberOfPoints(), mesh.triangles);
-        mesh.trianglePatch.push_back(marker);
+          s = readIds(sc, type == 5 ? 3 : 4, mesh.numberOfPoints(), type == 5 ? mesh.triangles : mesh.quads);
+        (type == 5 ? mesh.trianglePatch : mesh.quadPatch).push_back(marker);
       }
     }
     else if (s.ok())
@@ -119,11 +138,12 @@ Status readSU2(const std::string& path, SolverMesh& mesh)
   }
   if (!s.ok())
     return s;
-  for (int32_t v : mesh.tets)
-    if (v >= mesh.numberOfPoints())
-      return readError(path, 0, "tet point id " + std::to_string(v) + " out of range");
-  if (mesh.tets.empty())
-    return readError(path, 0, "no tetrahedra: not a volume mesh");
+  for (const std::vector<int32_t>* cells : { &mesh.tets, &mesh.prisms, &mesh.pyramids })
+    for (int32_t v : *cells)
+      if (v >= mesh.numberOfPoints())
+        return readError(path, 0, "cell point id " + std::to_string(v) + " out of range");
+  if (!finishReadCells(mesh))
+    return readError(path, 0, "no tetrahedra, prisms or pyramids: not a volume mesh");
   return Status::success();
 }
 

@@ -24,6 +24,21 @@ void renumber(std::vector<int32_t>& labels, NameTable& names, const char* prefix
 }
 } // namespace
 
+bool hasLayerCells(const SolverMesh& mesh)
+{
+  return !mesh.prisms.empty() || !mesh.pyramids.empty();
+}
+
+bool finishReadCells(SolverMesh& mesh)
+{
+  if (!hasLayerCells(mesh))
+  {
+    mesh.quads.clear();
+    mesh.quadPatch.clear();
+  }
+  return !mesh.tets.empty() || hasLayerCells(mesh);
+}
+
 std::vector<int32_t> distinctLabels(const std::vector<int32_t>& labels)
 {
   std::vector<int32_t> d(labels);

@@ -43,6 +43,14 @@ struct SolverMesh
   int64_t numberOfTriangles() const { return static_cast<int64_t>(triangles.size() / 3); }
 };
 
+// Whether the mesh has cells of boundary layers (prisms or pyramids).
+bool hasLayerCells(const SolverMesh& mesh);
+
+// What a reader does last: quads are boundary faces of prisms and pyramids only, so a mesh without those
+// drops them (a tet mesh's file may list surface quads, as before); a mesh needs some volume cell.
+// False when it has none.
+bool finishReadCells(SolverMesh& mesh);
+
 // The distinct labels in ascending order.
 std::vector<int32_t> distinctLabels(const std::vector<int32_t>& labels);
 

@@ -276,9 +276,57 @@ TEST(MeshWriterMedit, PrismsAndSideQuadsInTheirSections)
             std::string::npos)
     << text;
   EXPECT_NE(text.find("# VolGrid patch 2 symmetry\n"), std::string::npos) << text;
-  // VolGrid's reader takes tets only: the prisms are refused with a message, not skipped.
+}
+
+// Medit, gmsh and SU2 files with layers read back into the mesh that was written: prisms, pyramids, the
+// side quads and their labels (SU2 has no regions: every cell comes back in region 1).
+TEST(MeshReaders, PrismsPyramidsAndQuadsReadBack)
+{
+  const std::pair<MeshFormat, const char*> formats[] = { { MeshFormat::Medit, "mesh" },
+                                                         { MeshFormat::Gmsh22, "msh" },
+                                                         { MeshFormat::Gmsh41, "msh" },
+                                                         { MeshFormat::SU2, "su2" } };
+  for (const SolverMesh& mesh : { prismUnderTet(), pyramidBesideTet() })
+    for (const auto& [format, ext] : formats)
+    {
+      const std::string path = tempPath(std::string("layers-back.") + ext);
+      std::filesystem::remove(path);
+      ASSERT_TRUE(writeSolverMesh(path, mesh, format).ok());
+      SolverMesh back;
+      const Status s = readSolverMesh(path, back);
+      ASSERT_TRUE(s.ok()) << ext << ": " << s.message;
+      const bool su2 = format == MeshFormat::SU2;
+      EXPECT_EQ(back.points, mesh.points) << ext;
+      EXPECT_EQ(back.tets, mesh.tets) << ext;
+      EXPECT_EQ(back.prisms, mesh.prisms) << ext;
+      EXPECT_EQ(back.pyramids, mesh.pyramids) << ext;
+      EXPECT_EQ(back.quads, mesh.quads) << ext;
+      EXPECT_EQ(back.triangles, mesh.triangles) << ext;
+      EXPECT_EQ(back.prismRegion, su2 ? std::vector<int32_t>(mesh.prismRegion.size(), 1) : mesh.prismRegion) << ext;
+      EXPECT_EQ(back.pyramidRegion, su2 ? std::vector<int32_t>(mesh.pyramidRegion.size(), 1) : mesh.pyramidRegion)
+        << ext;
+      if (!su2) // SU2 numbers its markers in file order
+      {
+        EXPECT_EQ(back.quadPatch, mesh.quadPatch) << ext;
+        EXPECT_EQ(back.trianglePatch, mesh.trianglePatch) << ext;
+      }
+      EXPECT_EQ(back.quadPatch.size(), mesh.quadPatch.size()) << ext;
+    }
+}
+
+// Quads are faces of prisms and pyramids only: a tet mesh's file with quads reads as the tet mesh.
+TEST(MeshReaders, QuadsWithoutLayerCellsAreDropped)
+{
+  SolverMesh m = twoTets();
+  m.quads = { 0, 1, 2, 3 };
+  m.quadPatch = { 1 };
+  const std::string path = tempPath("tets-with-quads.mesh");
+  std::filesystem::remove(path);
+  ASSERT_TRUE(writeSolverMesh(path, m, MeshFormat::Medit).ok());
   SolverMesh back;
-  expectRefused(readSolverMesh(tempPath("prism.mesh"), back), "Medit Prisms (boundary layers) are not read");
+  ASSERT_TRUE(readSolverMesh(path, back).ok());
+  EXPECT_EQ(back.tets, m.tets);
+  EXPECT_TRUE(back.quads.empty() && back.quadPatch.empty());
 }
 
 TEST(MeshWriters, PyramidsInEveryFormatWithPrisms)
