@@ -398,6 +398,8 @@ bool vtkVolGridQuality::Internals::Volume(vtkVolGridQuality* self, vtkUnstructur
   addScalar(summary, "NumberOfTetrahedra", static_cast<double>(numTets));
   addScalar(summary, "SkippedCells", static_cast<double>(self->NumberOfSkippedCells));
   addScalar(summary, "NumberOfPyramids", static_cast<double>(numPyramids));
+  if (numPyramids == 0)
+    addScalar(summary, "PyramidVolume", 0.0); // with pyramids: measured with the CFD metrics (CfdMixed)
   if (!Wedges(self, input, points, arrays, summary))
     return false;
   if (numTets == numCells && numCells > 0)
@@ -563,7 +565,8 @@ bool vtkVolGridQuality::Internals::CfdMixed(vtkVolGridQuality* self, vtkUnstruct
   double pyramidVolume = 0, cellVolume = 0;
   for (size_t i = 0; i < order.size(); ++i)
     (i >= tetCells.size() + prismCells.size() ? pyramidVolume : cellVolume) += cells.volume[i];
-  addScalar(summary, "PyramidVolume", pyramidVolume);
+  if (!pyramidCells.empty())
+    addScalar(summary, "PyramidVolume", pyramidVolume);
   // The total as checkMesh splits the cells: the wedges' own volumes (three tets each) overlap or leave
   // gaps where neighbouring wedges split a warped side quad differently.
   addScalar(summary, kMixedTotalVolume, cellVolume + pyramidVolume);
