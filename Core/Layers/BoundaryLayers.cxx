@@ -549,7 +549,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
   status = buildWalls(s, checks, chosen, walls, wallIds, otherIds);
   if (!status.ok())
     return status;
-  const WallSkewness skewness = wallSkewness(s.points, walls.triangles);
+  const WallFaceQuality wallQuality = wallFaceQuality(s.points, walls.triangles);
   const std::vector<double> directions = layers_detail::marchingDirections(walls, options.normalSmoothing);
   const std::vector<double> offsets = layers_detail::layerOffsets(options);
   std::vector<int32_t> start, list;
@@ -596,7 +596,7 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
                              " is more than the domain allows: every layer column had "
                              "to be thinned");
   }
-  result.stats.wallSkewness = skewness;
+  result.stats.wallFaceQuality = wallQuality;
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report.report(1, "Boundary layers: marching");
   return Status::success();

@@ -22,7 +22,7 @@
 #include "Progress.h"
 #include "Status.h"
 #include "SurfaceMesh.h"
-#include "WallSkewness.h"
+#include "WallFaceQuality.h"
 
 #include <cstdint>
 #include <string>
@@ -78,7 +78,7 @@ struct LayerStatistics
   int iterations = 0;  // thinning rounds
   double minScale = 1; // smallest column factor
   double seconds = 0;
-  WallSkewness wallSkewness;      // what the wall triangulation alone implies for checkMesh (WallSkewness.h)
+  WallFaceQuality wallFaceQuality; // what the wall triangulation alone implies for checkMesh (WallFaceQuality.h)
   int64_t collapsedTriangles = 0; // layered triangles with a collapsed corner: fewer than all the layers
   // Share of layered triangles with their full height (strict; thinned columns count against it).
   double coverage() const { return layeredTriangles ? double(fullTriangles) / double(layeredTriangles) : 0.0; }

@@ -144,19 +144,8 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
   result.layerStats = layers.stats;
   result.mesherStats = tets.stats;
   result.warnings = tets.warnings;
-  const WallSkewness& skew = layers.stats.wallSkewness;
-  if (skew.edgesOverLimit > 0)
-  {
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "%lld wall edge(s) have a skewness above 4 in the surface itself (worst %.3g at (%.6g, %.6g, %.6g), "
-                  "between two triangles whose centroids miss the edge): every prism side face over such an edge "
-                  "inherits it, so OpenFOAM's checkMesh reports highly skew faces whatever the layers; refine the "
-                  "wall triangulation there",
-                  (long long)skew.edgesOverLimit, skew.worst, skew.worstPoint[0], skew.worstPoint[1],
-                  skew.worstPoint[2]);
-    result.warnings.push_back(text);
-  }
+  for (std::string& text : wallFaceWarnings(layers.stats.wallFaceQuality))
+    result.warnings.push_back(std::move(text));
   if (result.interfaceOnTets != static_cast<int64_t>(result.interfaceTriangles.size() / 3) ||
       result.tetBoundaryOnInterface != result.interfaceOnTets)
   {

@@ -304,16 +304,44 @@ TEST(BoundaryLayers, WallSkewnessIsOpenFoamsFaceSkewnessInTheSurface)
   const auto skew = [&](double ax, double bx)
   {
     const std::vector<double> points = { 0, 0, 0, 1, 0, 0, ax, 1, 0, bx, -1, 0 };
-    return wallSkewness(points, triangles);
+    return wallFaceQuality(points, triangles).skewness;
   };
   EXPECT_NEAR(skew(0.5, 0.5).worst, 0.0, 1e-12);
   EXPECT_EQ(skew(0.5, 0.5).edgesOverLimit, 0);
-  const WallSkewness sheared = skew(-10, -10);
+  const WallEdgeExtreme sheared = skew(-10, -10);
   EXPECT_NEAR(sheared.worst, 7.0, 1e-12);
   EXPECT_EQ(sheared.edgesOverLimit, 1);
   EXPECT_DOUBLE_EQ(sheared.worstPoint[0], 0.5);
   // Sheared the opposite ways: centroids (-3, 1/3) and (4, -1/3), a line through the midpoint again.
   EXPECT_NEAR(skew(-10, 11).worst, 0.0, 1e-12);
+}
+
+TEST(BoundaryLayers, WallNonOrthogonalityIsTheAngleOfTheCentroidLine)
+{
+  // The same edge along x, both triangles in z = 0 (marching along z: the side face's normal is y). Apexes
+  // at x = 0.5 +- s: the centroids (0.5 + s/3, 1/3) and (0.5 - s/3, -1/3), a line at atan(s) from y.
+  const std::vector<int32_t> triangles = { 0, 1, 2, 1, 0, 3 };
+  const auto ortho = [&](double s, double fold)
+  {
+    const std::vector<double> points = { 0, 0, 0, 1, 0, 0, 0.5 + s, 1, fold, 0.5 - s, -1, fold };
+    return wallFaceQuality(points, triangles).nonOrthogonality;
+  };
+  EXPECT_NEAR(ortho(0, 0).worst, 0.0, 1e-12);
+  EXPECT_NEAR(ortho(1, 0).worst, 45.0, 1e-12);
+  const WallEdgeExtreme steep = ortho(3, 0);
+  EXPECT_NEAR(steep.worst, std::atan(3.0) * 180 / 3.14159265358979323846, 1e-12); // 71.57 deg
+  EXPECT_EQ(steep.edgesOverLimit, 1);
+  EXPECT_EQ(ortho(2.7, 0).edgesOverLimit, 0); // 69.68 deg
+  // Folded about the edge (a ridge, both apexes raised): the marching direction is the mean normal and the
+  // side face stays upright, so the fold alone adds no angle.
+  EXPECT_NEAR(ortho(0, 0.5).worst, 0.0, 1e-12);
+  EXPECT_NEAR(ortho(1, 0.5).worst, 45.0, 1e-9);
+  // One warning per measure over its limit, naming the worst edge's midpoint.
+  const std::vector<std::string> warnings =
+    wallFaceWarnings(wallFaceQuality({ 0, 0, 0, 1, 0, 0, 3.5, 1, 0, -2.5, -1, 0 }, triangles));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("non-orthogonality above 70 deg"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("(0.5, 0, 0)"), std::string::npos) << warnings[0];
 }
 
 TEST(BoundaryLayers, TotalThicknessGivesTheGrowthOrTheFirstHeight)
