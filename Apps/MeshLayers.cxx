@@ -204,14 +204,16 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
       "%lld, "
       "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
       "\"wall_skew_edges\": %lld, \"wall_skewness_max\": %.6g, \"wall_nonortho_edges\": %lld, "
-      "\"wall_nonortho_max\": %.6g, \"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
+      "\"wall_nonortho_max\": %.6g, \"transition_faces\": %lld, \"transition_ratio_median\": %.6g, "
+      "\"transition_ratio_p90\": %.6g, \"transition_ratio_max\": %.6g, \"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
       jsonString(surfaceName).c_str(), (long long)(r.points.size() / 3), wedges, (long long)(r.pyramids.size() / 5),
       tets, layers.layers, layers.resolved().firstHeight, layers.resolved().growth, layers.resolved().totalThickness(),
       (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(), l.allLayersShare(),
       (long long)l.thinnedColumns, (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3],
       (long long)l.thinnedBy[4], l.minScale, (long long)inverted, (long long)r.interfaceOnTets,
       (long long)l.wallFaceQuality.skewness.edgesOverLimit, l.wallFaceQuality.skewness.worst,
-      (long long)l.wallFaceQuality.nonOrthogonality.edgesOverLimit, l.wallFaceQuality.nonOrthogonality.worst, l.seconds,
+      (long long)l.wallFaceQuality.nonOrthogonality.edgesOverLimit, l.wallFaceQuality.nonOrthogonality.worst,
+      (long long)r.transition.faces, r.transition.medianRatio, r.transition.p90Ratio, r.transition.maxRatio, l.seconds,
       seconds);
   else
     std::printf(

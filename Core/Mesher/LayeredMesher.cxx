@@ -155,6 +155,10 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
                            "the tet region does not share the last layer's surface exactly (" + std::to_string(asked) +
                              " layer faces) : a bug, please report it");
   }
+  result.transition = measureLayerTransition(result, layerOptions.resolved().layers);
+  const std::string transitionWarning = layerTransitionWarning(result.transition);
+  if (!transitionWarning.empty())
+    result.warnings.push_back(transitionWarning);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return Status::success();
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "BoundaryLayers.h"
+#include "LayerTransition.h"
 #include "Mesher.h"
 #include "PatchNames.h"
 #include "SolverMesh.h"
@@ -39,6 +40,7 @@ struct LayeredMeshResult
   std::vector<int32_t> interfaceTriangles; // the last layer's outer surface, 3 each
   int64_t interfaceOnTets = 0;             // of those, how many are faces of the tet region's boundary
   int64_t tetBoundaryOnInterface = 0;      // tet-region boundary triangles of the interface patch
+  LayerTransition transition;              // the size step from the last layer to the tets (LayerTransition.h)
   LayerStatistics layerStats;
   MesherStatistics mesherStats;
   std::vector<std::string> warnings;

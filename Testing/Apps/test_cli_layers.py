@@ -216,6 +216,24 @@ else:
         expect(m.get("cells", {}).get("wedge") == 24200 and min(m["min"].values()) > 0
                and close(m["total_volume"], ms["total_volume"]) and "wedge" not in ms["cells"],
                "Medit read by meshio: 24200 prisms, positive volumes, the split mesh's volume: %s %s" % (m, ms))
+    # The size step from the last layer to the tets (--json transition_*), recomputed from the Medit file by
+    # layer_transition.py (meshio), for layers far thinner than the wall's triangles (a warning) and for
+    # layers whose last one is about as tall as the tets over it (none).
+    TRANSITION = os.path.join(os.path.dirname(os.path.abspath(__file__)), "layer_transition.py")
+    for name, options, warned in (("thin", layers, True),
+                                  ("matched", ["--layers", "5", "--first-height", "0.01", "--growth", "1.5"], False)):
+        r = run([volgrid, "mesh", w("sis.off"), w("sis_%s.mesh" % name), "--json"] + options)
+        t = run([MESHIO_PYTHON, TRANSITION, w("sis_%s.mesh" % name)])
+        expect(r.returncode == 0 and t.returncode == 0, "transition, %s layers" % name, r if r.returncode else t)
+        if r.returncode == 0 and t.returncode == 0:
+            j, mine = json.loads(r.stdout.strip().splitlines()[-1]), json.loads(t.stdout.strip().splitlines()[-1])
+            print("sphere in sphere, %s layers: transition" % name, {k: v for k, v in j.items() if "transition" in k},
+                  "\n  meshio:", mine)
+            expect(j["transition_faces"] == mine["faces"] == j["layered_faces"]
+                   and all(close(j["transition_ratio_" + k], mine[k], 1e-5) for k in ("median", "p90", "max"))
+                   and ("times as tall as it" in r.stderr) == warned
+                   and (j["transition_ratio_median"] > 4) == warned,
+                   "transition, %s layers: the figures meshio's recomputation gives, warned: %s" % (name, warned), r)
 
 
 for fmt in ("su2", "cgns", "exo"):

@@ -66,6 +66,32 @@ TEST(LayeredMesher, SphereInSphereIsConformalWithPrismsAndTets)
   EXPECT_EQ(r.boundaryTriangles.size() / 3, size_t(1280 + 80)); // wall + far field
 }
 
+TEST(LayeredMesher, TheSizeStepToTheTetsIsMeasuredAndWarnedAbout)
+{
+  // Ten layers of 1e-3 (the last 5.2e-3 tall) under tets as large as the sphere's triangles: a step of
+  // more than 4, with a warning. Thicker layers (growth 2: the last 0.51) bring the step down, whether
+  // the prisms are kept or split.
+  const SurfaceMesh s = layertest::sphereInSphere(3);
+  LayeredMeshResult thin, thick, thickSplit;
+  ASSERT_TRUE(meshSurfaceWithLayers(s, MesherOptions(), tenLayers(), thin).ok());
+  EXPECT_EQ(thin.transition.faces, 1280);
+  EXPECT_GT(thin.transition.medianRatio, 4);
+  EXPECT_LE(thin.transition.minRatio, thin.transition.medianRatio);
+  EXPECT_LE(thin.transition.medianRatio, thin.transition.p90Ratio);
+  EXPECT_LE(thin.transition.p90Ratio, thin.transition.maxRatio);
+  EXPECT_TRUE(std::any_of(thin.warnings.begin(), thin.warnings.end(),
+                          [](const std::string& w) { return w.find("times as tall as it") != std::string::npos; }));
+  LayerOptions o = tenLayers();
+  o.growth = 2;
+  ASSERT_TRUE(meshSurfaceWithLayers(s, MesherOptions(), o, thick).ok());
+  o.splitPrisms = true;
+  ASSERT_TRUE(meshSurfaceWithLayers(s, MesherOptions(), o, thickSplit).ok());
+  EXPECT_EQ(thick.transition.faces, 1280);
+  EXPECT_EQ(thickSplit.transition.faces, 1280);
+  EXPECT_LT(thick.transition.medianRatio, thin.transition.medianRatio / 20);
+  EXPECT_LT(thickSplit.transition.medianRatio, thin.transition.medianRatio / 20);
+}
+
 TEST(LayeredMesher, SplitPrismsGiveAConformalTetMesh)
 {
   const SurfaceMesh s = layertest::sphereInSphere(2);
