@@ -2,6 +2,7 @@
 // tet metrics (Quality.h), wedge metrics (PrismQuality.h) and checkMesh's CFD metrics (CfdQuality.h).
 #include "VolGridQualityVolume.h"
 
+#include "VolGridCellOrder.h"
 #include "VolGridQualityArrays.h"
 #include "vtkVolGridQuality.h"
 
@@ -106,7 +107,7 @@ bool measureWedges(vtkAlgorithm* self, vtkUnstructuredGrid* input, const double*
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
   vtkUnsignedCharArray* types = input->GetCellTypesArray();
-  std::vector<vtkIdType> wedges, wedgeCells; // SolverMesh's order: VTK's triangles reversed
+  std::vector<vtkIdType> wedges, wedgeCells; // in Core's prism order (VolGridCellOrder.h)
   for (vtkIdType c = 0; c < numCells; ++c)
   {
     if (types->GetValue(c) != VTK_WEDGE)
@@ -119,7 +120,8 @@ bool measureWedges(vtkAlgorithm* self, vtkUnstructuredGrid* input, const double*
       vtkErrorWithObjectMacro(self, "Wedge cell " << c << " has " << npts << " points instead of 6.");
       return false;
     }
-    wedges.insert(wedges.end(), { v[0], v[2], v[1], v[3], v[5], v[4] });
+    const auto prism = VolGridPrismFromWedge<vtkIdType>(v);
+    wedges.insert(wedges.end(), prism.begin(), prism.end());
     wedgeCells.push_back(c);
   }
   VolGridAddScalar(summary, "NumberOfWedges", static_cast<double>(wedgeCells.size()));
@@ -195,7 +197,8 @@ bool measureMixedCfd(vtkAlgorithm* self, vtkUnstructuredGrid* input, const doubl
   self->SetProgressText("CFD face metrics");
   const vtkIdType numCells = input->GetNumberOfCells();
   std::vector<double> xyz(points, points + 3 * input->GetNumberOfPoints());
-  // Each shape in Core's order (VTK's wedge lists its triangles the other way round), and where it came from.
+  // Each shape in Core's order (VolGridCellOrder.h: VTK's wedge lists its triangles the other way round), and
+  // where it came from.
   std::vector<int32_t> tets, prisms, pyramids;
   std::vector<vtkIdType> tetCells, prismCells, pyramidCells;
   vtkUnsignedCharArray* types = input->GetCellTypesArray();
@@ -220,10 +223,11 @@ bool measureMixedCfd(vtkAlgorithm* self, vtkUnstructuredGrid* input, const doubl
     if (type == VTK_TETRA)
       tets.insert(tets.end(), v, v + 4), tetCells.push_back(c);
     else if (type == VTK_WEDGE)
-      prisms.insert(prisms.end(),
-                    { static_cast<int32_t>(v[0]), static_cast<int32_t>(v[2]), static_cast<int32_t>(v[1]),
-                      static_cast<int32_t>(v[3]), static_cast<int32_t>(v[5]), static_cast<int32_t>(v[4]) }),
-        prismCells.push_back(c);
+    {
+      const auto prism = VolGridPrismFromWedge<int32_t>(v);
+      prisms.insert(prisms.end(), prism.begin(), prism.end());
+      prismCells.push_back(c);
+    }
     else
       pyramids.insert(pyramids.end(), v, v + 5), pyramidCells.push_back(c);
   }
