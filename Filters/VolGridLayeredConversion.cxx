@@ -1,5 +1,6 @@
 #include "VolGridLayeredConversion.h"
 
+#include "VolGridCellOrder.h"
 #include "VolGridConversion.h"
 
 #include "BoundaryFaceOwners.h"
@@ -69,15 +70,12 @@ void VolGridFillFromMixedSolverMesh(const volgrid::SolverMesh& mesh, vtkUnstruct
   volume->Allocate(static_cast<vtkIdType>(prisms + pyramids + tets));
   for (size_t w = 0; w < prisms; ++w)
   {
-    // Core's base triangle has its normal towards the top; VTK's wedge has its first triangle's normal
-    // pointing away from the second: both triangles reversed.
-    const int32_t* v = mesh.prisms.data() + 6 * w;
-    const vtkIdType ids[6] = { v[0], v[2], v[1], v[3], v[5], v[4] };
-    volume->InsertNextCell(VTK_WEDGE, 6, ids);
+    const auto ids = VolGridWedgeFromPrism<vtkIdType>(mesh.prisms.data() + 6 * w); // both triangles reversed
+    volume->InsertNextCell(VTK_WEDGE, 6, ids.data());
   }
   for (size_t p = 0; p < pyramids; ++p)
   {
-    // Core's quad turns like a positive tet's base towards the apex, as VTK's pyramid base does.
+    // Core's quad turns like a positive tet's base towards the apex, as VTK's pyramid base does (same order).
     const int32_t* v = mesh.pyramids.data() + 5 * p;
     const vtkIdType ids[5] = { v[0], v[1], v[2], v[3], v[4] };
     volume->InsertNextCell(VTK_PYRAMID, 5, ids);

@@ -1,5 +1,6 @@
 #include "VolGridSolverMeshFromGrid.h"
 
+#include "VolGridCellOrder.h"
 #include "VolGridConversion.h"
 
 #include "vtkCellData.h"
@@ -95,8 +96,8 @@ bool VolGridSolverMeshFromGrid(vtkUnstructuredGrid* grid, volgrid::SolverMesh& m
       addCell(ids, 4, kTet, cells->GetCellId(), facePatch, region, mesh.tets, mesh.tetRegion, mesh);
     else if (mixed && type == VTK_WEDGE)
     {
-      const vtkIdType core[6] = { ids[0], ids[2], ids[1], ids[3], ids[5], ids[4] }; // VTK's triangles reversed
-      addCell(core, 6, kWedge, cells->GetCellId(), facePatch, region, mesh.prisms, mesh.prismRegion, mesh);
+      const auto core = VolGridPrismFromWedge<vtkIdType>(ids);
+      addCell(core.data(), 6, kWedge, cells->GetCellId(), facePatch, region, mesh.prisms, mesh.prismRegion, mesh);
     }
     else if (mixed && type == VTK_PYRAMID)
       addCell(ids, 5, kPyramid, cells->GetCellId(), facePatch, region, mesh.pyramids, mesh.pyramidRegion, mesh);

@@ -118,8 +118,6 @@ private:
   vtkVolGridQuality(const vtkVolGridQuality&) = delete;
   void operator=(const vtkVolGridQuality&) = delete;
 
-  struct Internals;
-  friend struct Internals;
   bool ExecuteThreaded(class vtkDataSet* input, class vtkDataSet* output, class vtkTable* table);
   bool Execute(class vtkDataSet* input, class vtkDataSet* output, class vtkTable* table);
 };
