@@ -1,5 +1,5 @@
-// Solver mesh readers: a tet mesh (Medit, gmsh, SU2, CGNS and Exodus II: with its boundary-layer prisms,
-// pyramids and quads too) with its named boundary patches and regions back into a SolverMesh, so that `volgrid
+// Solver mesh readers: a tet mesh (with its boundary-layer prisms, pyramids and quads too; TetGen: tets
+// only) with its named boundary patches and regions back into a SolverMesh, so that `volgrid
 // convert`, `refine` and `quality` take a solver's mesh. One format per file
 // (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx,
 // MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx, MeshReaderCGNS.cxx, MeshReaderExodus.cxx). Errors name the file, the
@@ -45,7 +45,8 @@ Status readCGNS(const std::string& path, SolverMesh& mesh);
 Status readExodus(const std::string& path, SolverMesh& mesh);
 // True when `path` is a directory with constant/polyMesh/faces.
 bool isOpenFoamCase(const std::string& path);
-// OpenFOAM polyMesh of CASE (ASCII, tetrahedral cells): patches labelled 1.. in the boundary file's order
+// OpenFOAM polyMesh of CASE (ASCII): tets, prisms (2 triangles + 3 quads) and pyramids (1 quad + 4
+// triangles) from their faces; patches (triangles and quads) labelled 1.. in the boundary file's order
 // with their names, region 1.
 Status readOpenFOAM(const std::string& caseDir, SolverMesh& mesh);
 

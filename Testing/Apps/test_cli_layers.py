@@ -360,8 +360,8 @@ if r.returncode == 0:
     # VolGrid's Medit, gmsh, SU2, CGNS and Exodus II readers take the prisms, pyramids and quads: written
     # again, each Medit, gmsh, SU2 and Exodus file is the same byte for byte; the Medit file converted to gmsh
     # 2.2, and the CGNS file converted to Medit, are the files `mesh` wrote; `volgrid quality` on each
-    # measures what it measures on the .vtu of the same mesh. OpenFOAM cases with layers are refused with a
-    # message; `refine` refuses layers (it refines tets).
+    # measures what it measures on the .vtu of the same mesh. The OpenFOAM reader takes them too (below);
+    # `refine` refuses layers (it refines tets).
     for src, extra in (("wing.mesh", []), ("wing.su2", []), ("wing.msh", ["--format", "gmsh22"]), ("wing.exo", [])):
         back = w("back_" + src)
         r = run([volgrid, "convert", w(src), back] + extra)
@@ -388,6 +388,18 @@ if r.returncode == 0:
         q = json.loads(r.stdout.strip().splitlines()[-1]) if r.returncode == 0 else {}
         expect(ref and all(q.get(k) == ref[k] for k in figures),
                "quality of %s with layers = quality of its .vtu: %s" % (src, {k: q.get(k) for k in figures}), r)
+    # The direct OpenFOAM case read back (prism and pyramid cells from their faces): convert writes the same
+    # polyMesh files again, and `volgrid quality` counts the .vtu's cells and measures its figures (to 1e-9:
+    # the points file holds OpenFOAM's ASCII digits).
+    r = run([volgrid, "convert", w("wing_foam"), w("back_foam"), "--format", "openfoam"])
+    poly = lambda case, f: open(os.path.join(case, "constant", "polyMesh", f), "rb").read()
+    expect(r.returncode == 0 and all(poly(w("wing_foam"), f) == poly(w("back_foam"), f)
+                                     for f in ("points", "faces", "owner", "neighbour", "boundary")),
+           "convert wing_foam with layers, read and written again: identical", r)
+    r = run([volgrid, "quality", w("wing_foam"), "--json"])
+    q = json.loads(r.stdout.strip().splitlines()[-1]) if r.returncode == 0 else {}
+    expect(ref and q and all(close(q[k], ref[k]) if isinstance(ref[k], float) else q[k] == ref[k] for k in figures),
+           "quality of wing_foam with layers = quality of its .vtu: %s" % {k: q.get(k) for k in figures}, r)
     r = run([volgrid, "refine", w("wing.msh"), w("refined.msh"), "--size-array", "none"])
     expect(refused_cleanly(r) and "not a tetrahedron" in r.stderr and not os.path.exists(w("refined.msh")),
            "refine of a mesh with layers refused with a message", r)

@@ -346,7 +346,7 @@ TEST(MeshWriters, PyramidsInEveryFormatWithPrisms)
             std::string::npos)
     << medit;
   // CGNS (a PYRA_5 section) and Exodus II (a PYRAMID block, the base its side 5) take them, and VolGrid's
-  // readers read them back (TestLayeredCgnsExodus.cxx has more); TetGen refuses them with a message,
+  // readers read them back (TestLayeredReaders.cxx has more); TetGen refuses them with a message,
   // nothing written.
   for (MeshFormat f : { MeshFormat::CGNS, MeshFormat::Exodus })
   {

@@ -1,7 +1,8 @@
-// Boundary layers through CGNS and Exodus II: a hand-made mesh of a tet, a prism, two pyramids and
-// boundary triangles and quads in three patches, written by VolGrid's writers and read back by its readers,
-// has the same cells (vertex tuples in the same order), regions and patches (faces in the same orientation),
-// and every cell read back has a positive volume (exact orient3d of each tet of its split).
+// Boundary layers through CGNS, Exodus II and OpenFOAM: a hand-made mesh of a tet, a prism, two pyramids
+// and boundary triangles and quads in three patches, written by VolGrid's writers and read back by its
+// readers, has the same cells (vertex tuples in the same order; OpenFOAM: the same cells in the same
+// orientation, from any first point), regions and patches (faces in the same orientation), and every cell
+// read back has a positive volume (exact orient3d of each tet of its split).
 #include "MeshReader.h"
 #include "MeshWriter.h"
 #include "Predicates.h"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -109,6 +111,43 @@ void expectPositiveVolumes(const SolverMesh& m)
     positive(m.pyramids.data() + 5 * c, pyramid, 2, "pyramid");
 }
 
+// A cell of `n` points in a form that only its points and orientation decide: tets sorted (the last two
+// swapped after an odd permutation), prisms and pyramids the least of their equal forms (prism: a base
+// rotation, or top and base swapped and reversed; pyramid: a rotation of the quad).
+std::vector<int32_t> canonicalCell(std::vector<int32_t> v)
+{
+  if (v.size() == 4)
+  {
+    bool odd = false;
+    for (size_t i = 0; i < 4; ++i)
+      for (size_t j = 0; j + 1 < 4 - i; ++j)
+        if (v[j] > v[j + 1])
+          std::swap(v[j], v[j + 1]), odd = !odd;
+    if (odd)
+      std::swap(v[2], v[3]);
+    return v;
+  }
+  std::vector<std::vector<int32_t>> forms;
+  if (v.size() == 6)
+    for (const std::vector<int32_t>& p : { v, std::vector<int32_t>{ v[3], v[5], v[4], v[0], v[2], v[1] } })
+      for (int r = 0; r < 3; ++r)
+        forms.push_back({ p[r], p[(r + 1) % 3], p[(r + 2) % 3], p[3 + r], p[3 + (r + 1) % 3], p[3 + (r + 2) % 3] });
+  else
+    for (int r = 0; r < 4; ++r)
+      forms.push_back({ v[r], v[(r + 1) % 4], v[(r + 2) % 4], v[(r + 3) % 4], v[4] });
+  return *std::min_element(forms.begin(), forms.end());
+}
+
+std::vector<std::vector<int32_t>> canonicalCells(const std::vector<int32_t>& cells, size_t n)
+{
+  std::vector<std::vector<int32_t>> out;
+  for (size_t c = 0; c < cells.size() / n; ++c)
+    out.push_back(canonicalCell(std::vector<int32_t>(cells.begin() + static_cast<std::ptrdiff_t>(n * c),
+                                                     cells.begin() + static_cast<std::ptrdiff_t>(n * c + n))));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // Written, read back: the same mesh, positive cells.
 SolverMesh roundTrip(const SolverMesh& mesh, const std::string& path)
 {
@@ -121,12 +160,12 @@ SolverMesh roundTrip(const SolverMesh& mesh, const std::string& path)
 }
 } // namespace
 
-TEST(LayeredCgnsExodus, TheTestMeshIsPositive)
+TEST(LayeredReaders, TheTestMeshIsPositive)
 {
   expectPositiveVolumes(layeredMesh());
 }
 
-TEST(LayeredCgnsExodus, CgnsRoundTripKeepsPrismsPyramidsAndQuads)
+TEST(LayeredReaders, CgnsRoundTripKeepsPrismsPyramidsAndQuads)
 {
   const SolverMesh mesh = layeredMesh();
   const SolverMesh back = roundTrip(mesh, temp("mesh.cgns"));
@@ -140,7 +179,7 @@ TEST(LayeredCgnsExodus, CgnsRoundTripKeepsPrismsPyramidsAndQuads)
   expectSameMesh(back, roundTrip(back, temp("again.cgns")));
 }
 
-TEST(LayeredCgnsExodus, ExodusRoundTripKeepsPrismsPyramidsQuadsAndBytes)
+TEST(LayeredReaders, ExodusRoundTripKeepsPrismsPyramidsQuadsAndBytes)
 {
   const SolverMesh mesh = layeredMesh();
   const std::string path = temp("mesh.exo"), again = temp("again.exo");
@@ -155,7 +194,7 @@ TEST(LayeredCgnsExodus, ExodusRoundTripKeepsPrismsPyramidsQuadsAndBytes)
 }
 
 // A region with prisms but no tets, and a patch of quads only: both come back under their names.
-TEST(LayeredCgnsExodus, LayerOnlyRegionsAndQuadOnlyPatchesKeepTheirNames)
+TEST(LayeredReaders, LayerOnlyRegionsAndQuadOnlyPatchesKeepTheirNames)
 {
   SolverMesh mesh = layeredMesh();
   mesh.prismRegion = { 2 };
@@ -166,4 +205,59 @@ TEST(LayeredCgnsExodus, LayerOnlyRegionsAndQuadOnlyPatchesKeepTheirNames)
     const SolverMesh back = roundTrip(mesh, temp(name));
     expectSameMesh(mesh, back);
   }
+}
+
+// OpenFOAM keeps cells as faces: the cells come back in the same orientation (any first point; the prism
+// may stand on its top), all in region 1; faces with their patches by name; written again, the same files.
+TEST(LayeredReaders, OpenFoamRoundTripKeepsPrismsPyramidsQuadsAndFiles)
+{
+  const SolverMesh mesh = layeredMesh();
+  const std::string dir = temp("foam"), again = temp("foam-again");
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(again);
+  ASSERT_TRUE(writeSolverMesh(dir, mesh, MeshFormat::OpenFOAM).ok());
+  SolverMesh back;
+  const Status s = readSolverMesh(dir, back);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(back.points, mesh.points);
+  EXPECT_EQ(canonicalCells(back.tets, 4), canonicalCells(mesh.tets, 4));
+  EXPECT_EQ(canonicalCells(back.prisms, 6), canonicalCells(mesh.prisms, 6));
+  EXPECT_EQ(canonicalCells(back.pyramids, 5), canonicalCells(mesh.pyramids, 5));
+  ASSERT_EQ(back.prisms.size(), 6u);
+  ASSERT_EQ(back.pyramids.size(), 10u);
+  for (const std::vector<int32_t>* regions : { &back.tetRegion, &back.prismRegion, &back.pyramidRegion })
+    EXPECT_EQ(*regions, std::vector<int32_t>(regions->size(), 1));
+  EXPECT_EQ(labelled(back.triangles, 3, back.trianglePatch, true),
+            labelled(mesh.triangles, 3, mesh.trianglePatch, true));
+  EXPECT_EQ(labelled(back.quads, 4, back.quadPatch, true), labelled(mesh.quads, 4, mesh.quadPatch, true));
+  EXPECT_EQ(back.patchNames, mesh.patchNames);
+  expectPositiveVolumes(back);
+  ASSERT_TRUE(writeSolverMesh(again, back, MeshFormat::OpenFOAM).ok());
+  for (const char* f : { "points", "faces", "owner", "neighbour", "boundary" })
+    EXPECT_EQ(contents(dir + "/constant/polyMesh/" + f), contents(again + "/constant/polyMesh/" + f)) << f;
+}
+
+// A cell of other faces (here a hexahedron's six quads) is refused by number, with its faces counted.
+TEST(LayeredReaders, OpenFoamRefusesOtherCellsByNumber)
+{
+  const std::string dir = temp("foam-hex");
+  std::filesystem::remove_all(dir);
+  const std::string mesh = dir + "/constant/polyMesh/";
+  std::filesystem::create_directories(mesh);
+  const std::string header = "FoamFile { version 2.0; format ascii; class dictionary; object x; }\n";
+  std::ofstream(mesh + "points") << header
+                                 << "8\n(\n(0 0 0)\n(1 0 0)\n(1 1 0)\n(0 1 0)\n(0 0 1)\n(1 0 1)\n"
+                                    "(1 1 1)\n(0 1 1)\n)\n";
+  std::ofstream(mesh + "faces") << header
+                                << "6\n(\n4(0 3 2 1)\n4(4 5 6 7)\n4(0 1 5 4)\n4(1 2 6 5)\n4(2 3 7 6)\n4(3 0 4 7)\n)\n";
+  std::ofstream(mesh + "owner") << header << "6\n(\n0\n0\n0\n0\n0\n0\n)\n";
+  std::ofstream(mesh + "neighbour") << header << "0\n(\n)\n";
+  std::ofstream(mesh + "boundary") << header << "1\n(\nwalls\n{\ntype wall;\nnFaces 6;\nstartFace 0;\n}\n)\n";
+  SolverMesh back;
+  const Status s = readSolverMesh(dir, back);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("cell 0 is not a tetrahedron, prism or pyramid (6 faces: 0 triangles, 6 quads)"),
+            std::string::npos)
+    << s.message;
+  EXPECT_EQ(back.numberOfPoints(), 0);
 }
