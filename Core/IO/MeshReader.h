@@ -1,5 +1,5 @@
-// Solver mesh readers: a tet mesh (Medit, gmsh and SU2: with its boundary-layer prisms, pyramids and
-// quads too) with its named boundary patches and regions back into a SolverMesh, so that `volgrid
+// Solver mesh readers: a tet mesh (with its boundary-layer prisms, pyramids and quads too; TetGen: tets
+// only) with its named boundary patches and regions back into a SolverMesh, so that `volgrid
 // convert`, `refine` and `quality` take a solver's mesh. One format per file
 // (MeshReaderMedit.cxx, MeshReaderGmsh.cxx, MeshReaderSU2.cxx,
 // MeshReaderTetGen.cxx, MeshReaderOpenFOAM.cxx, MeshReaderCGNS.cxx, MeshReaderExodus.cxx). Errors name the file, the
@@ -35,14 +35,18 @@ Status readSU2(const std::string& path, SolverMesh& mesh);
 // TetGen STEM.node/.ele/.face (`path` any of them or the stem): region = first tet attribute (else 1),
 // patch = face marker (else 1); 0- or 1-based as the first node says. No names.
 Status readTetGenVolume(const std::string& path, SolverMesh& mesh);
-// CGNS: the first unstructured zone; TETRA_4 sections are regions (named after the section), boundary
-// conditions over TRI_3 elements (or their vertices) are patches named after the condition.
+// CGNS: the first unstructured zone; TETRA_4 sections are regions (named after the section), PENTA_6 and
+// PYRA_5 sections "<region>_prisms" / "<region>_pyramids" join that region; boundary conditions over TRI_3
+// and QUAD_4 elements (or their vertices) are patches named after the condition.
 Status readCGNS(const std::string& path, SolverMesh& mesh);
-// Exodus II: TETRA element blocks are regions, side sets are patches, both named as in the file.
+// Exodus II: TETRA element blocks are regions, WEDGE and PYRAMID blocks "<region>_prisms" /
+// "<region>_pyramids" join that region; side sets (tet, wedge and pyramid sides: triangles and quads) are
+// patches; named as in the file.
 Status readExodus(const std::string& path, SolverMesh& mesh);
 // True when `path` is a directory with constant/polyMesh/faces.
 bool isOpenFoamCase(const std::string& path);
-// OpenFOAM polyMesh of CASE (ASCII, tetrahedral cells): patches labelled 1.. in the boundary file's order
+// OpenFOAM polyMesh of CASE (ASCII): tets, prisms (2 triangles + 3 quads) and pyramids (1 quad + 4
+// triangles) from their faces; patches (triangles and quads) labelled 1.. in the boundary file's order
 // with their names, region 1.
 Status readOpenFOAM(const std::string& caseDir, SolverMesh& mesh);
 

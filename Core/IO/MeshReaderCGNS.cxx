@@ -1,11 +1,15 @@
 // CGNS reader (Debian's libcgns): the first unstructured zone of the first base. TETRA_4 sections are the
-// tets, one region per section (named after it); TRI_3 sections the boundary triangles. Patches are the
-// boundary conditions (named after them) over element ranges or lists, or over vertex lists (a triangle
-// whose three vertices are listed); triangles no condition covers keep one patch per section.
+// tets, one region per section (named after it); PENTA_6 and PYRA_5 sections the boundary-layer prisms and
+// pyramids (CGNS's node orders are SolverMesh's, as MeshWriterCGNS.cxx writes them), in the region of the
+// section's name without "_prisms" / "_pyramids" (a new region when no section had that name); TRI_3 and
+// QUAD_4 sections the boundary triangles and quads. Patches are the boundary conditions (named after them)
+// over element ranges or lists, or over vertex lists (a face whose vertices are all listed); faces no
+// condition covers keep one patch per section (a "<patch>_quads" section joins patch <patch>).
 #include "MeshReader.h"
 
 #include <algorithm>
 #include <cgnslib.h>
+#include <iterator>
 #include <map>
 #include <sys/stat.h>
 
@@ -52,14 +56,57 @@ Status readCoordinates(const std::string& path, int file, int zone, cgsize_t num
   return Status::success();
 }
 
-// The sections: tets and triangles appended to `mesh`, each triangle's element number in `triangleOf`.
+// A boundary face by its element number: a triangle or a quad, and its index among those.
+struct FaceRef
+{
+  bool quad = false;
+  int64_t index = 0;
+};
+using FaceOfElement = std::map<cgsize_t, FaceRef>;
+
+int32_t newLabel(NameTable& names, const std::string& name)
+{
+  const int32_t label = names.empty() ? 1 : names.rbegin()->first + 1;
+  names[label] = name;
+  return label;
+}
+
+// The label of a section VolGrid's writer named "<label's name><suffix>" (the name cut to fit CGNS's 32
+// characters with the suffix): the first label of that name, else a new label named without the suffix.
+int32_t labelNamed(NameTable& names, const std::string& section, const std::string& suffix)
+{
+  const bool suffixed =
+    section.size() > suffix.size() && section.compare(section.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const std::string base = suffixed ? section.substr(0, section.size() - suffix.size()) : section;
+  const bool cut = suffixed && section.size() == 32;
+  for (const auto& entry : names)
+    if (entry.second == base || (cut && entry.second.compare(0, base.size(), base) == 0))
+      return entry.first;
+  return newLabel(names, base);
+}
+
+// The sections: cells and boundary faces appended to `mesh`, each face's element number in `faceOf`.
 Status readSections(const std::string& path, int file, int zone, cgsize_t numPoints, SolverMesh& mesh,
-                    std::map<cgsize_t, int64_t>& triangleOf)
+                    FaceOfElement& faceOf)
 {
   int numSections = 0;
   if (cg_nsections(file, 1, zone, &numSections) != CG_OK)
     return cgnsFailure(path, cg_get_error());
-  int32_t region = 0, sectionPatch = 0;
+  // The element types read, their vertices (CGNS's orders are SolverMesh's), where they go, and the suffix
+  // the writer gives a layer section's or quad section's name (none: each section is a new label).
+  const struct
+  {
+    CGNS_ENUMT(ElementType_t) type;
+    int vertices;
+    std::vector<int32_t>* cells;
+    std::vector<int32_t>* labels;
+    NameTable* names;
+    const char* suffix;
+  } kinds[] = { { CGNS_ENUMV(TETRA_4), 4, &mesh.tets, &mesh.tetRegion, &mesh.regionNames, nullptr },
+                { CGNS_ENUMV(PENTA_6), 6, &mesh.prisms, &mesh.prismRegion, &mesh.regionNames, "_prisms" },
+                { CGNS_ENUMV(PYRA_5), 5, &mesh.pyramids, &mesh.pyramidRegion, &mesh.regionNames, "_pyramids" },
+                { CGNS_ENUMV(TRI_3), 3, &mesh.triangles, &mesh.trianglePatch, &mesh.patchNames, nullptr },
+                { CGNS_ENUMV(QUAD_4), 4, &mesh.quads, &mesh.quadPatch, &mesh.patchNames, "_quads" } };
   for (int section = 1; section <= numSections; ++section)
   {
     char name[33] = {};
@@ -69,12 +116,12 @@ Status readSections(const std::string& path, int file, int zone, cgsize_t numPoi
     if (cg_section_read(file, 1, zone, section, name, &type, &start, &end, &boundary, &parents) != CG_OK ||
         cg_ElementDataSize(file, 1, zone, section, &dataSize) != CG_OK)
       return cgnsFailure(path, cg_get_error());
-    const int perCell = type == CGNS_ENUMV(TETRA_4) ? 4 : type == CGNS_ENUMV(TRI_3) ? 3 : 0;
-    if (perCell == 0)
+    const auto* kind = std::find_if(std::begin(kinds), std::end(kinds), [&](const auto& k) { return k.type == type; });
+    if (kind == std::end(kinds))
       return cgnsFailure(path,
                          "section '" + std::string(name) + "' holds " + cg_ElementTypeName(type) +
-                           " elements (only TETRA_4 and TRI_3 are read)");
-    if (end < start || dataSize != (end - start + 1) * perCell || dataSize > countLimit(path))
+                           " elements (only TETRA_4, PENTA_6, PYRA_5, TRI_3 and QUAD_4 are read)");
+    if (end < start || dataSize != (end - start + 1) * kind->vertices || dataSize > countLimit(path))
       return cgnsFailure(path, "section '" + std::string(name) + "' has an inconsistent size");
     std::vector<cgsize_t> connectivity(static_cast<size_t>(dataSize));
     if (cg_elements_read(file, 1, zone, section, connectivity.data(), nullptr) != CG_OK)
@@ -84,29 +131,21 @@ Status readSections(const std::string& path, int file, int zone, cgsize_t numPoi
         return cgnsFailure(path,
                            "section '" + std::string(name) + "' names point " + std::to_string(v) + " of " +
                              std::to_string(numPoints));
-    std::vector<int32_t>& cells = perCell == 4 ? mesh.tets : mesh.triangles;
     for (cgsize_t v : connectivity)
-      cells.push_back(static_cast<int32_t>(v - 1));
-    if (perCell == 4)
-    {
-      mesh.regionNames[++region] = name;
-      mesh.tetRegion.insert(mesh.tetRegion.end(), static_cast<size_t>(end - start + 1), region);
-      continue;
-    }
-    mesh.patchNames[++sectionPatch] = name;
-    for (cgsize_t e = start; e <= end; ++e)
-    {
-      triangleOf[e] = static_cast<int64_t>(mesh.trianglePatch.size());
-      mesh.trianglePatch.push_back(sectionPatch);
-    }
+      kind->cells->push_back(static_cast<int32_t>(v - 1));
+    const int64_t first = static_cast<int64_t>(kind->labels->size());
+    const int32_t label = kind->suffix ? labelNamed(*kind->names, name, kind->suffix) : newLabel(*kind->names, name);
+    kind->labels->insert(kind->labels->end(), static_cast<size_t>(end - start + 1), label);
+    if (kind->names == &mesh.patchNames)
+      for (cgsize_t e = start; e <= end; ++e)
+        faceOf[e] = { kind->cells == &mesh.quads, first + static_cast<int64_t>(e - start) };
   }
   return Status::success();
 }
 
-// The triangles one boundary condition covers.
-Status conditionTriangles(const std::string& path, int file, int zone, int bc, const SolverMesh& mesh,
-                          const std::map<cgsize_t, int64_t>& triangleOf, std::string& name,
-                          std::vector<int64_t>& covered)
+// The faces one boundary condition covers.
+Status conditionFaces(const std::string& path, int file, int zone, int bc, const SolverMesh& mesh,
+                      const FaceOfElement& faceOf, std::string& name, std::vector<FaceRef>& covered)
 {
   char text[33] = {};
   CGNS_ENUMT(BCType_t) type;
@@ -138,15 +177,25 @@ Status conditionTriangles(const std::string& path, int file, int zone, int bc, c
       if (p >= 1 && p <= numPoints)
         listed[static_cast<size_t>(p - 1)] = 1;
     }
+    const auto allListed = [&](const std::vector<int32_t>& faces, int n, int64_t f)
+    {
+      for (int k = 0; k < n; ++k)
+        if (!listed[static_cast<size_t>(faces[static_cast<size_t>(n * f + k)])])
+          return false;
+      return true;
+    };
     for (int64_t t = 0; t < mesh.numberOfTriangles(); ++t)
-      if (listed[mesh.triangles[3 * t]] && listed[mesh.triangles[3 * t + 1]] && listed[mesh.triangles[3 * t + 2]])
-        covered.push_back(t);
+      if (allListed(mesh.triangles, 3, t))
+        covered.push_back({ false, t });
+    for (int64_t q = 0; q < static_cast<int64_t>(mesh.quads.size() / 4); ++q)
+      if (allListed(mesh.quads, 4, q))
+        covered.push_back({ true, q });
     return Status::success();
   }
   auto add = [&](cgsize_t element)
   {
-    const auto it = triangleOf.find(element);
-    if (it != triangleOf.end())
+    const auto it = faceOf.find(element);
+    if (it != faceOf.end())
       covered.push_back(it->second);
   };
   if (range)
@@ -158,36 +207,41 @@ Status conditionTriangles(const std::string& path, int file, int zone, int bc, c
   return Status::success();
 }
 
-// Relabels the triangles by boundary condition: condition k is patch k; triangles no condition covers
-// keep their section's patch, after the conditions.
+// Relabels the faces by boundary condition: condition k is patch k; faces no condition covers keep their
+// section's patch, after the conditions.
 Status readBoundaryConditions(const std::string& path, int file, int zone, SolverMesh& mesh,
-                              const std::map<cgsize_t, int64_t>& triangleOf)
+                              const FaceOfElement& faceOf)
 {
   int numConditions = 0;
   if (cg_nbocos(file, 1, zone, &numConditions) != CG_OK)
     return cgnsFailure(path, cg_get_error());
   if (numConditions == 0)
     return Status::success();
-  std::vector<int32_t> patch(mesh.trianglePatch.size(), 0);
+  std::vector<int32_t> patch[2] = { std::vector<int32_t>(mesh.trianglePatch.size(), 0),
+                                    std::vector<int32_t>(mesh.quadPatch.size(), 0) };
   NameTable names;
   for (int bc = 1; bc <= numConditions; ++bc)
   {
     std::string name;
-    std::vector<int64_t> covered;
-    Status s = conditionTriangles(path, file, zone, bc, mesh, triangleOf, name, covered);
+    std::vector<FaceRef> covered;
+    Status s = conditionFaces(path, file, zone, bc, mesh, faceOf, name, covered);
     if (!s.ok())
       return s;
     names[bc] = name;
-    for (int64_t t : covered)
-      patch[static_cast<size_t>(t)] = bc;
+    for (const FaceRef& f : covered)
+      patch[f.quad][static_cast<size_t>(f.index)] = bc;
   }
-  for (size_t t = 0; t < patch.size(); ++t)
-    if (patch[t] == 0)
-    {
-      patch[t] = numConditions + mesh.trianglePatch[t];
-      names[patch[t]] = mesh.patchNames[mesh.trianglePatch[t]];
-    }
-  mesh.trianglePatch = patch;
+  std::vector<int32_t>* sectionPatch[2] = { &mesh.trianglePatch, &mesh.quadPatch };
+  for (int kind = 0; kind < 2; ++kind)
+  {
+    for (size_t f = 0; f < patch[kind].size(); ++f)
+      if (patch[kind][f] == 0)
+      {
+        patch[kind][f] = numConditions + (*sectionPatch[kind])[f];
+        names[patch[kind][f]] = mesh.patchNames[(*sectionPatch[kind])[f]];
+      }
+    *sectionPatch[kind] = patch[kind];
+  }
   mesh.patchNames = names;
   return Status::success();
 }
@@ -217,14 +271,14 @@ Status readCGNS(const std::string& path, SolverMesh& mesh)
     return cgnsFailure(path,
                        "zone '" + std::string(zoneName) + "' claims " + std::to_string(size[0]) +
                          " points, impossible in a file of this size");
-  std::map<cgsize_t, int64_t> triangleOf;
+  FaceOfElement faceOf;
   Status s = readCoordinates(path, file.id, 1, size[0], mesh);
   if (s.ok())
-    s = readSections(path, file.id, 1, size[0], mesh, triangleOf);
+    s = readSections(path, file.id, 1, size[0], mesh, faceOf);
   if (s.ok())
-    s = readBoundaryConditions(path, file.id, 1, mesh, triangleOf);
-  if (s.ok() && mesh.numberOfTets() == 0)
-    s = cgnsFailure(path, "no TETRA_4 elements");
+    s = readBoundaryConditions(path, file.id, 1, mesh, faceOf);
+  if (s.ok() && !finishReadCells(mesh))
+    s = cgnsFailure(path, "no TETRA_4, PENTA_6 or PYRA_5 elements");
   if (!s.ok())
     mesh = SolverMesh();
   return s;
