@@ -223,6 +223,7 @@ bool addCell(const FoamFaces& faces, const CellFaceRef* refs, int numFaces, Solv
   mesh.prismRegion.push_back(1);
   return true;
 }
+
 Status readPolyMesh(const std::string& caseDir, SolverMesh& mesh)
 {
   const std::string dir = caseDir + "/constant/polyMesh/";

@@ -60,7 +60,7 @@ std::unordered_map<TriKey, int64_t, TriKeyHash> interfaceIndex(const LayeredMesh
   return index;
 }
 
-double quantile(std::vector<double> sorted, double q)
+double quantile(const std::vector<double>& sorted, double q)
 {
   if (sorted.empty())
     return 0;
