@@ -301,26 +301,18 @@ bool VolGridMeasureVolumeGrid(vtkAlgorithm* self, vtkUnstructuredGrid* input,
     out.volume = ptr(Q::VOLUME);
     out.radiusEdgeRatio = ptr(Q::RADIUS_EDGE_RATIO);
     out.radiusRatio = ptr(Q::RADIUS_RATIO);
-    if (cells->IsStorage64Bit())
+    // The connectivity is 64- or 32-bit: one check and one measurement for either.
+    auto measure = [&](const auto* conn)
     {
-      const vtkTypeInt64* conn = cells->GetConnectivityArray64()->GetPointer(0);
       if (!idsInRange(conn, 4 * numTets, numPoints))
       {
         vtkErrorWithObjectMacro(self, "The grid has point ids outside [0, " << numPoints << ").");
         return false;
       }
-      ok = measureTetsAndGradient(self, points, numPoints, conn, numTets, out, ptr(Q::VOLUME_GRADIENT));
-    }
-    else
-    {
-      const vtkTypeInt32* conn = cells->GetConnectivityArray32()->GetPointer(0);
-      if (!idsInRange(conn, 4 * numTets, numPoints))
-      {
-        vtkErrorWithObjectMacro(self, "The grid has point ids outside [0, " << numPoints << ").");
-        return false;
-      }
-      ok = measureTetsAndGradient(self, points, numPoints, conn, numTets, out, ptr(Q::VOLUME_GRADIENT));
-    }
+      return measureTetsAndGradient(self, points, numPoints, conn, numTets, out, ptr(Q::VOLUME_GRADIENT));
+    };
+    ok = cells->IsStorage64Bit() ? measure(cells->GetConnectivityArray64()->GetPointer(0))
+                                 : measure(cells->GetConnectivityArray32()->GetPointer(0));
   }
   else
   {
