@@ -264,6 +264,7 @@ void printReport(const Arguments& args, const volgrid::MesherResult& result,
       "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
       "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
       "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
+      "\"nonortho_severe_faces\": %lld, \"nonortho_severe_before_moves\": %lld, \"nonortho_moves\": %lld, "
       "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
       "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
       "\"field_points\": %.6f, \"optimization\": %.6f}, "
@@ -279,7 +280,9 @@ void printReport(const Arguments& args, const volgrid::MesherResult& result,
       static_cast<long long>(s.improvement.clusterPoints), json(dihedral.minDihedral, "%.4f").c_str(),
       json(dihedral.maxDihedral, "%.4f").c_str(), json(dihedral.shareBelow10(), "%.6g").c_str(),
       static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
-      ratio.max, static_cast<long long>(ratio.aboveThreshold), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
+      ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(s.improvement.severeFacesAfter),
+      static_cast<long long>(s.improvement.severeFacesBefore), static_cast<long long>(s.improvement.orthogonalityMoves),
+      s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
       s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
       s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
   }

@@ -2,6 +2,7 @@
 #include "SpatialReorder.h"
 
 #include "DomainSizing.h"
+#include "OrthogonalitySmoothing.h"
 #include "QualityRounds.h"
 
 #include "Predicates.h"
@@ -190,6 +191,18 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     s = rounds.run();
     if (!s.ok())
       return s;
+    if (options.orthogonalitySmoothing)
+    {
+      OrthogonalitySmoothingOptions oo;
+      oo.targetDegrees = options.optimization.targetDegrees;
+      OrthogonalitySmoothingReport orep;
+      s = smoothNonOrthogonalFaces(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, oo, progress, &orep);
+      if (!s.ok())
+        return s;
+      stats.severeFacesBefore = orep.severeBefore;
+      stats.severeFacesAfter = orep.severeAfter;
+      stats.orthogonalityMoves = orep.moves;
+    }
     stats.after = summarizeDihedrals(mesh, options.threads);
     stats.secondsOptimization = since(t0);
   }

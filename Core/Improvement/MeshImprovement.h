@@ -24,6 +24,8 @@
 //      few points and keep them only when the worst tet improves. Last, on any mesh size, vertex insertion
 //      as an improvement operation for the worst tets (InsertionImprovement.h): a point searched in the
 //      frame of each face of the tet, flipped and smoothed around, kept only when its region improves.
+//   5. Orthogonality: vertex moves for the faces a finite-volume solver finds severely non-orthogonal
+//      (OrthogonalitySmoothing.h), never making a tet worse than step 4 left it below its target.
 // The boundary is therefore the input boundary, exactly: same points, same triangles. New vertices are
 // marked VertexKind::SteinerInterior in `kinds` (field and cluster points are strictly interior), region
 // labels follow the tets, and the editor's vertex map is rebuilt for the output stage.
@@ -87,6 +89,9 @@ struct ImprovementOptions
   // Rounds of vertex insertion as an improvement operation for the worst tets, any mesh size
   // (InsertionImprovement.h; 0 = none).
   int insertionRounds = 12;
+  // After the rounds: vertex moves for the faces a finite-volume solver finds severely non-orthogonal,
+  // never making a tet worse than the rounds left it below the target (OrthogonalitySmoothing.h).
+  bool orthogonalitySmoothing = true;
   // Threads for the stage's threaded steps (ParallelFor.h rule: 0 = all cores; meshSurface sets it from
   // MesherOptions::threads). The result is the same for any value.
   int threads = 0;
@@ -104,6 +109,9 @@ struct ImprovementStatistics
   int optimizationPasses = 0;
   int64_t flips = 0; // 2-3 flips and edge removals
   int64_t smoothMoves = 0;
+  // Interior faces over 70 degrees of non-orthogonality (OpenFOAM's severe limit) before and after the
+  // orthogonality smoothing, and the vertices it moved.
+  int64_t severeFacesBefore = 0, severeFacesAfter = 0, orthogonalityMoves = 0;
   int64_t splitPoints = 0; // points inserted to split tets optimisation could not fix (still in the mesh)
   // Interior points removed by optimisation's vertex collapses: boundary recovery's Steiner points and
   // field or split points (fieldPoints and splitPoints count only those left).

@@ -1,0 +1,55 @@
+// Vertex moves for the faces a finite-volume solver finds severely non-orthogonal (issue 16, acceptance 6).
+//
+// A solver such as OpenFOAM measures an interior face by the angle between the line joining its two cells'
+// centroids and the face's normal (checkMesh's non-orthogonality; above 70 degrees it calls the face
+// severe). The quality stage optimises dihedral angles, which is a different thing: on the ONERA M6 domain
+// it leaves 1,021 severe faces where the mesh before it had 588, and raising its target angle does not
+// lower the count (a tet with good dihedral angles can still sit sheared against its neighbour). Flips do
+// not help either: of the 2-3 and 3-2 flips that remove severe faces there, none keeps the tets' quality.
+//
+// This stage works on the severe faces only. For each, the unlocked vertices of its two tets are tried:
+// a compass search moves the vertex to make the least orthogonal face of its star (every face of every tet
+// holding it, towards the tets beyond too) as orthogonal as it can, under two constraints:
+//   - every tet of the star stays strictly positive (exact orient3d),
+//   - the star's worst sine quality stays at least the smaller of its worst before and the target's: no
+//     tet gets worse than the quality stage left it below its target, and none falls below the target.
+// The move that removes the most severe faces is kept, when it removes at least one. Every move made lowers
+// the mesh's severe count, so the stage ends; it is a worklist (the tets around a moved vertex are
+// examined again), after one sweep over the mesh. Locked vertices (on constrained faces: the boundary and
+// region interfaces; or locked by the caller) never move, so the boundary is kept exactly.
+#pragma once
+
+#include "Progress.h"
+#include "Status.h"
+#include "TetEditor.h"
+#include "TetMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace volgrid
+{
+
+struct OrthogonalitySmoothingOptions
+{
+  double severeDegrees = 70; // checkMesh's limit for a severely non-orthogonal face
+  double targetDegrees = 18; // the quality stage's target for min(theta_min, 180 - theta_max)
+};
+
+struct OrthogonalitySmoothingReport
+{
+  int64_t severeBefore = 0; // interior faces above severeDegrees before the stage
+  int64_t severeAfter = 0;
+  int64_t moves = 0;
+};
+
+// The angle in degrees between the line joining the centroids of tet t and its neighbour across `face` and
+// that face's normal, as OpenFOAM's checkMesh measures it (0 = orthogonal; 0 for a face without neighbour).
+double faceNonOrthogonality(const TetMesh& mesh, int32_t t, int face);
+
+// See above. locked: optional extra per-vertex locks (non-zero = keep). Errors: Cancelled.
+Status smoothNonOrthogonalFaces(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
+                                const OrthogonalitySmoothingOptions& options, Progress* progress = nullptr,
+                                OrthogonalitySmoothingReport* report = nullptr);
+
+} // namespace volgrid
