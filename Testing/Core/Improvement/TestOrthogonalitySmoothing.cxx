@@ -89,15 +89,41 @@ std::vector<std::array<int32_t, 4>> tetList(const TetMesh& m)
   m.forEachTet([&](int32_t t) { out.push_back({ m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2), m.vertex(t, 3) }); });
   return out;
 }
-} // namespace
 
-TEST(OrthogonalitySmoothing, RemovesSevereFacesAndMakesNoTetWorseThanItsFloor)
+// The wing's mesh, built once for the suite (two seconds); each test works on a copy.
+class OrthogonalitySmoothing : public ::testing::Test
 {
+protected:
+  static void SetUpTestSuite()
+  {
+    wing_ = new TetMesh;
+    wingMesh(*wing_, numBoundary_);
+  }
+  static void TearDownTestSuite()
+  {
+    delete wing_;
+    wing_ = nullptr;
+  }
+  void SetUp() override
+  {
+    ASSERT_GT(wing_->numTets(), 0) << "the wing did not mesh";
+    mesh = *wing_;
+    numBoundary = numBoundary_;
+  }
+
   TetMesh mesh;
   int32_t numBoundary = 0;
-  wingMesh(mesh, numBoundary);
-  if (HasFatalFailure())
-    return;
+
+private:
+  static TetMesh* wing_;
+  static int32_t numBoundary_;
+};
+TetMesh* OrthogonalitySmoothing::wing_ = nullptr;
+int32_t OrthogonalitySmoothing::numBoundary_ = 0;
+} // namespace
+
+TEST_F(OrthogonalitySmoothing, RemovesSevereFacesAndMakesNoTetWorseThanItsFloor)
+{
   const std::vector<double> pointsBefore = mesh.points;
   const auto tetsBefore = tetList(mesh);
   std::vector<double> qualityBefore;
@@ -138,13 +164,8 @@ TEST(OrthogonalitySmoothing, RemovesSevereFacesAndMakesNoTetWorseThanItsFloor)
   }
 }
 
-TEST(OrthogonalitySmoothing, LockedVerticesStay)
+TEST_F(OrthogonalitySmoothing, LockedVerticesStay)
 {
-  TetMesh mesh;
-  int32_t numBoundary = 0;
-  wingMesh(mesh, numBoundary);
-  if (HasFatalFailure())
-    return;
   const std::vector<double> pointsBefore = mesh.points;
   const std::vector<uint8_t> all(static_cast<size_t>(mesh.numVertices()), 1);
   OrthogonalitySmoothingReport report;
