@@ -11,8 +11,10 @@
 // a compass search moves the vertex to make the least orthogonal face of its star (every face of every tet
 // holding it, towards the tets beyond too) as orthogonal as it can, under two constraints:
 //   - every tet of the star stays strictly positive (exact orient3d),
-//   - the star's worst sine quality stays at least the smaller of its worst before and the target's: no
-//     tet gets worse than the quality stage left it below its target, and none falls below the target.
+//   - each tet of the star keeps a sine quality of at least min(its own before, the target's, max(the
+//     star's worst before, 10 degrees)): a tet under the target gets no worse, a tet over it may give up
+//     angle down to the target or to the star's worst tet, and none falls under 10 degrees that was not
+//     (so the minimum dihedral angle and the share of tets under 10 degrees never get worse).
 // The move that removes the most severe faces is kept, when it removes at least one. Every move made lowers
 // the mesh's severe count, so the stage ends; it is a worklist (the tets around a moved vertex are
 // examined again), after one sweep over the mesh. Locked vertices (on constrained faces: the boundary and
