@@ -211,11 +211,6 @@ private:
 };
 } // namespace
 
-double faceNonOrthogonality(const TetMesh& mesh, int32_t t, int face)
-{
-  return std::acos(std::min(1.0, faceCosine(mesh, t, face))) / kDegree;
-}
-
 Status smoothNonOrthogonalFaces(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
                                 const OrthogonalitySmoothingOptions& options, Progress* progress,
                                 OrthogonalitySmoothingReport* reportOut)

@@ -21,6 +21,8 @@
 // region interfaces; or locked by the caller) never move, so the boundary is kept exactly.
 #pragma once
 
+#include "CfdQuality.h"
+#include "OptionTable.h"
 #include "Progress.h"
 #include "Status.h"
 #include "TetEditor.h"
@@ -34,8 +36,10 @@ namespace volgrid
 
 struct OrthogonalitySmoothingOptions
 {
-  double severeDegrees = 70; // checkMesh's limit for a severely non-orthogonal face
-  double targetDegrees = 18; // the quality stage's target for min(theta_min, 180 - theta_max)
+  // checkMesh's limit for a severely non-orthogonal face.
+  double severeDegrees = quality::kSevereNonOrthogonality;
+  // The quality stage's target for min(theta_min, 180 - theta_max).
+  double targetDegrees = option::targetAngle.defaultValue;
 };
 
 struct OrthogonalitySmoothingReport
@@ -44,10 +48,6 @@ struct OrthogonalitySmoothingReport
   int64_t severeAfter = 0;
   int64_t moves = 0;
 };
-
-// The angle in degrees between the line joining the centroids of tet t and its neighbour across `face` and
-// that face's normal, as OpenFOAM's checkMesh measures it (0 = orthogonal; 0 for a face without neighbour).
-double faceNonOrthogonality(const TetMesh& mesh, int32_t t, int face);
 
 // See above. locked: optional extra per-vertex locks (non-zero = keep). Errors: Cancelled.
 Status smoothNonOrthogonalFaces(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
