@@ -238,20 +238,45 @@ bool write(const std::string& path, vtkDataSet* data)
   }
   return true;
 }
+// What the report says of the output mesh itself: its dihedral angles (the mesher's own summary covers only
+// its improvement stage) and the size ratio between face-neighbouring tets (SizeRatio.h) against the
+// gradation option. Taken before writing, so that the mesher's arrays can go before the writer runs.
+struct OutputSummary
+{
+  volgrid::DihedralSummary dihedral;
+  volgrid::SizeRatioSummary ratio;
+};
+
+OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult& result)
+{
+  OutputSummary summary;
+  summary.dihedral = volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
+                                                 static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
+  summary.ratio = volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4,
+                                               args.options.improvement.sizing.gradation);
+  return summary;
+}
+
+// Once the VTK data sets hold their own copies, the mesher's per-point and per-tet arrays are released:
+// at millions of tets the writer's own buffers then take their place instead of adding to them (the
+// legacy writer converts the cells to 64-bit ids, about 40 bytes per tet). Only the statistics stay.
+void releaseMeshArrays(volgrid::MesherResult& result)
+{
+  for (std::vector<int32_t>* ids : { &result.tets, &result.tetRegion, &result.inputToOutputPoint,
+                                     &result.boundaryTriangles, &result.boundaryInputTriangle, &result.boundaryPatch,
+                                     &result.triangleShell })
+    std::vector<int32_t>().swap(*ids);
+  std::vector<double>().swap(result.points);
+  std::vector<uint8_t>().swap(result.tetForced);
+}
+
 // The run's summary on stdout (--json: one JSON line): counts, Steiner points, the output's dihedral
 // angles and size ratios, the boundary and volume check, the stage times.
-void printReport(const Arguments& args, const volgrid::MesherResult& result,
+void printReport(const Arguments& args, const volgrid::MesherStatistics& s, const OutputSummary& output,
                  const volgrid::BoundaryCheckReport& boundary, bool boundaryPreserved, double seconds)
 {
-  const volgrid::MesherStatistics& s = result.stats;
-  // Dihedral angles of the output (the mesher's own summary covers only its improvement stage).
-  const volgrid::DihedralSummary dihedral =
-    volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
-                                static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
-  // Size ratio between face-neighbouring tets (SizeRatio.h), against the gradation option.
-  const double gradation = args.options.improvement.sizing.gradation;
-  const volgrid::SizeRatioSummary ratio =
-    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, gradation);
+  const volgrid::DihedralSummary& dihedral = output.dihedral;
+  const volgrid::SizeRatioSummary& ratio = output.ratio;
   if (args.json)
   {
     const auto json = [](double v, const char* format = "%.17g") { return volgrid::cli::jsonNumber(v, format); };
@@ -300,7 +325,7 @@ void printReport(const Arguments& args, const volgrid::MesherResult& result,
     std::printf("size ratio between face-neighbouring tets (mean edge length): 99th percentile %.3f, max %.3f; "
                 "%lld of %lld faces above the gradation %.3g\n",
                 ratio.p99, ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(ratio.faces),
-                gradation);
+                args.options.improvement.sizing.gradation);
     if (s.forcedTets > 0)
       std::printf("%lld tets forced by the input surface (four boundary vertices, a dihedral angle under 10 or "
                   "over 170 deg: cell array Forced)\n",
@@ -391,6 +416,7 @@ int runMeshCommand(int argc, char** argv)
   const volgrid::BoundaryCheckReport boundary = volgrid::checkBoundaryConformity(
     result.points, result.numInputPoints, result.tets, inputTriangles, result.stats.enclosedVolume);
   const bool boundaryPreserved = boundary.meshValid() && boundary.boundaryEqualsInput();
+  const OutputSummary output = summarizeOutput(args, result);
 
   volgrid::SolverMesh solverMesh; // named patches; --patch applied to result.boundaryPatch too
   if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh, !vtkOutput))
@@ -403,6 +429,8 @@ int runMeshCommand(int argc, char** argv)
     vtkNew<vtkPolyData> boundarySurface;
     VolGridFillFromMesherResult(result, volume, boundarySurface);
     VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, volume, boundarySurface);
+    if (vtkOutput)
+      releaseMeshArrays(result);
     if (!vtkOutput && !volgrid::cli::writeSolverOutput("mesh", args.out, format, solverMesh, exportRequest, args.json))
       return 1;
     if (vtkOutput && !write(args.out, volume.Get()))
@@ -411,7 +439,7 @@ int runMeshCommand(int argc, char** argv)
       return 1;
   }
 
-  printReport(args, result, boundary, boundaryPreserved, seconds);
+  printReport(args, result.stats, output, boundary, boundaryPreserved, seconds);
   if (checkFailed)
   {
     std::fprintf(stderr, "volgrid mesh: check failed (nothing written): %s\n", boundary.summary().c_str());
