@@ -31,6 +31,7 @@
 #include <cstring>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 using volgrid::cli::readPointsWithArray; // PointFiles.h
 
@@ -257,17 +258,14 @@ OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult
   return summary;
 }
 
-// Once the VTK data sets hold their own copies, the mesher's per-point and per-tet arrays are released:
-// at millions of tets the writer's own buffers then take their place instead of adding to them (the
-// legacy writer converts the cells to 64-bit ids, about 40 bytes per tet). Only the statistics stay.
+// Once the VTK data sets hold their own copies, the mesher's arrays are released: at millions of tets the
+// writer's own buffers then take their place instead of adding to them (the legacy writer converts the
+// cells to 64-bit ids, about 40 bytes per tet). Only the statistics stay, for the report.
 void releaseMeshArrays(volgrid::MesherResult& result)
 {
-  for (std::vector<int32_t>* ids : { &result.tets, &result.tetRegion, &result.inputToOutputPoint,
-                                     &result.boundaryTriangles, &result.boundaryInputTriangle, &result.boundaryPatch,
-                                     &result.triangleShell })
-    std::vector<int32_t>().swap(*ids);
-  std::vector<double>().swap(result.points);
-  std::vector<uint8_t>().swap(result.tetForced);
+  volgrid::MesherResult statisticsOnly;
+  statisticsOnly.stats = result.stats;
+  result = std::move(statisticsOnly);
 }
 
 // The run's summary on stdout (--json: one JSON line): counts, Steiner points, the output's dihedral
