@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -50,5 +51,5 @@ int runConvertCommand(int argc, char** argv)
     std::fprintf(stderr, "volgrid convert: %s\n", s.message.c_str());
     return 1;
   }
-  return volgrid::cli::writeSolverOutput("convert", positional[1], format, mesh, request, false) ? 0 : 1;
+  return volgrid::cli::writeSolverOutput("convert", positional[1], format, std::move(mesh), request, false) ? 0 : 1;
 }

@@ -268,6 +268,40 @@ void releaseMeshArrays(volgrid::MesherResult& result)
   result = std::move(statisticsOnly);
 }
 
+// OUT (VTK data set or solver format) and --boundary's OUT.vtp. The mesher's arrays are gone afterwards (its
+// statistics stay): for VTK output they are released once the VTK data sets hold their copies, for a
+// solver format they move into the solver mesh. Either way the writer's buffers take their place at the
+// peak instead of adding to them. False (message printed) when a write fails.
+bool writeOutputs(const Arguments& args, volgrid::MeshFormat format, bool vtkOutput,
+                  const volgrid::cli::ExportRequest& request, volgrid::MesherResult& result,
+                  volgrid::SolverMesh solverMesh)
+{
+  vtkNew<vtkPolyData> boundarySurface;
+  vtkPolyData* const boundary = args.boundaryOut.empty() ? nullptr : boundarySurface.Get();
+  if (vtkOutput)
+  {
+    vtkNew<vtkUnstructuredGrid> volume;
+    VolGridFillFromMesherResult(result, volume, boundary);
+    VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, volume, boundary);
+    releaseMeshArrays(result);
+    if (!write(args.out, volume.Get()))
+      return false;
+  }
+  else
+  {
+    if (boundary)
+    {
+      VolGridFillFromMesherResult(result, nullptr, boundary);
+      VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, nullptr, boundary);
+    }
+    volgrid::cli::moveGeometry(result, solverMesh);
+    releaseMeshArrays(result);
+    if (!volgrid::cli::writeSolverOutput("mesh", args.out, format, std::move(solverMesh), request, args.json))
+      return false;
+  }
+  return !boundary || write(args.boundaryOut, boundary);
+}
+
 // The run's summary on stdout (--json: one JSON line): counts, Steiner points, the output's dihedral
 // angles and size ratios, the boundary and volume check, the stage times.
 void printReport(const Arguments& args, const volgrid::MesherStatistics& s, const OutputSummary& output,
@@ -417,25 +451,12 @@ int runMeshCommand(int argc, char** argv)
   const OutputSummary output = summarizeOutput(args, result);
 
   volgrid::SolverMesh solverMesh; // named patches; --patch applied to result.boundaryPatch too
-  if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh, !vtkOutput))
+  if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh))
     return 1;
   // A failed --check leaves the earlier output files as they were.
   const bool checkFailed = args.check && !(boundaryPreserved && boundary.relativeVolumeError <= 1e-9);
-  if (!checkFailed)
-  {
-    vtkNew<vtkUnstructuredGrid> volume;
-    vtkNew<vtkPolyData> boundarySurface;
-    VolGridFillFromMesherResult(result, volume, boundarySurface);
-    VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, volume, boundarySurface);
-    if (vtkOutput)
-      releaseMeshArrays(result);
-    if (!vtkOutput && !volgrid::cli::writeSolverOutput("mesh", args.out, format, solverMesh, exportRequest, args.json))
-      return 1;
-    if (vtkOutput && !write(args.out, volume.Get()))
-      return 1;
-    if (!args.boundaryOut.empty() && !write(args.boundaryOut, boundarySurface.Get()))
-      return 1;
-  }
+  if (!checkFailed && !writeOutputs(args, format, vtkOutput, exportRequest, result, std::move(solverMesh)))
+    return 1;
 
   printReport(args, result.stats, output, boundary, boundaryPreserved, seconds);
   if (checkFailed)

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 namespace volgrid
 {
@@ -100,7 +101,7 @@ bool chooseFormat(const char* command, const std::string& out, const ExportReque
 }
 
 bool solverMeshFromResult(const char* command, const ExportRequest& request, const SurfaceMesh& surface,
-                          MesherResult& result, SolverMesh& mesh, bool withGeometry)
+                          MesherResult& result, SolverMesh& mesh)
 {
   mesh.patchNames = surface.hasPatchIds() ? surface.patchNames : NameTable();
   if (!request.patches.empty())
@@ -112,22 +113,23 @@ bool solverMeshFromResult(const char* command, const ExportRequest& request, con
       return false;
     }
   }
-  if (!withGeometry)
-    return true;
-  mesh.points = result.points;
-  mesh.tets = result.tets;
-  mesh.tetRegion = result.tetRegion;
-  mesh.triangles = result.boundaryTriangles;
-  mesh.trianglePatch = result.boundaryPatch;
   return true;
 }
 
-bool writeSolverOutput(const char* command, const std::string& out, MeshFormat format, const SolverMesh& mesh,
+void moveGeometry(MesherResult& result, SolverMesh& mesh)
+{
+  mesh.points = std::move(result.points);
+  mesh.tets = std::move(result.tets);
+  mesh.tetRegion = std::move(result.tetRegion);
+  mesh.triangles = std::move(result.boundaryTriangles);
+  mesh.trianglePatch = std::move(result.boundaryPatch);
+}
+
+bool writeSolverOutput(const char* command, const std::string& out, MeshFormat format, SolverMesh mesh,
                        const ExportRequest& request, bool quiet)
 {
-  SolverMesh normalized = mesh;
-  normalizeLabels(normalized);
-  const Status s = writeSolverMesh(out, normalized, format, request.writeOptions);
+  normalizeLabels(mesh);
+  const Status s = writeSolverMesh(out, mesh, format, request.writeOptions);
   if (!s.ok())
   {
     std::fprintf(stderr, "volgrid %s: %s\n", command, s.message.c_str());
@@ -136,18 +138,18 @@ bool writeSolverOutput(const char* command, const std::string& out, MeshFormat f
   if (quiet)
     return true;
   std::printf("wrote %s '%s': %lld points, %lld tets", meshFormatName(format), out.c_str(),
-              static_cast<long long>(normalized.numberOfPoints()), static_cast<long long>(normalized.numberOfTets()));
-  if (!normalized.prisms.empty())
-    std::printf(", %lld prisms", static_cast<long long>(normalized.prisms.size() / 6));
-  if (!normalized.pyramids.empty())
-    std::printf(", %lld pyramids", static_cast<long long>(normalized.pyramids.size() / 5));
+              static_cast<long long>(mesh.numberOfPoints()), static_cast<long long>(mesh.numberOfTets()));
+  if (!mesh.prisms.empty())
+    std::printf(", %lld prisms", static_cast<long long>(mesh.prisms.size() / 6));
+  if (!mesh.pyramids.empty())
+    std::printf(", %lld pyramids", static_cast<long long>(mesh.pyramids.size() / 5));
   std::printf(", patches");
-  std::vector<int32_t> faces = normalized.trianglePatch; // boundary faces: triangles and prism side quads
-  faces.insert(faces.end(), normalized.quadPatch.begin(), normalized.quadPatch.end());
+  std::vector<int32_t> faces = mesh.trianglePatch; // boundary faces: triangles and prism side quads
+  faces.insert(faces.end(), mesh.quadPatch.begin(), mesh.quadPatch.end());
   const std::vector<int32_t> patches = distinctLabels(faces);
   const std::vector<int64_t> counts = labelCounts(faces, patches);
   for (size_t k = 0; k < patches.size(); ++k)
-    std::printf(" %s (%lld)", labelName(normalized.patchNames, patches[k], "patch").c_str(),
+    std::printf(" %s (%lld)", labelName(mesh.patchNames, patches[k], "patch").c_str(),
                 static_cast<long long>(counts[k]));
   std::printf("\n");
   return true;

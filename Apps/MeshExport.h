@@ -34,15 +34,20 @@ bool takeExportOptions(const char* command, int& argc, char** argv, ExportReques
 bool chooseFormat(const char* command, const std::string& out, const ExportRequest& request, MeshFormat& format,
                   bool& vtk);
 
-// The mesher's output as a SolverMesh: patch names from the input surface, the user's --patch grouping
-// applied (to `result`'s boundaryPatch as well, so the VTK outputs agree). False (message printed) on
-// a bad assignment. Without `withGeometry` only the names are filled (the VTK outputs need no copy).
+// The names of the mesher's output as a SolverMesh: patch names from the input surface, the user's --patch
+// grouping applied (to `result`'s boundaryPatch as well, so the VTK outputs agree). False (message
+// printed) on a bad assignment. The geometry follows with moveGeometry, once nothing else needs it.
 bool solverMeshFromResult(const char* command, const ExportRequest& request, const SurfaceMesh& surface,
-                          MesherResult& result, SolverMesh& mesh, bool withGeometry);
+                          MesherResult& result, SolverMesh& mesh);
 
-// Writes `mesh` in `format`; prints "wrote FORMAT PATH: points, tets, patch (faces) ..." to stdout unless
+// Moves the points, tets, regions and boundary triangles of `result` into `mesh` (no copy: at millions of
+// tets a copy would add to the writer's peak); `result` keeps its other arrays and its statistics.
+void moveGeometry(MesherResult& result, SolverMesh& mesh);
+
+// Writes `mesh` in `format` (by value: its labels are normalised in place, so a caller that passes it with
+// std::move adds no copy); prints "wrote FORMAT PATH: points, tets, patch (faces) ..." to stdout unless
 // quiet. False (message naming the path and reason printed) on failure.
-bool writeSolverOutput(const char* command, const std::string& out, MeshFormat format, const SolverMesh& mesh,
+bool writeSolverOutput(const char* command, const std::string& out, MeshFormat format, SolverMesh mesh,
                        const ExportRequest& request, bool quiet);
 } // namespace cli
 } // namespace volgrid

@@ -188,8 +188,7 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
     return 1;
   if (!vtkOutput)
   {
-    const SolverMesh mesh = layeredSolverMesh(r);
-    if (!writeSolverOutput("mesh", out, format, mesh, request, json))
+    if (!writeSolverOutput("mesh", out, format, layeredSolverMesh(r), request, json))
       return 1;
   }
   const LayerStatistics& l = r.layerStats;

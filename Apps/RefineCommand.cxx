@@ -38,6 +38,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -298,7 +299,7 @@ int runRefineCommand(int argc, char** argv)
   {
     volgrid::SolverMesh refined;
     if (!VolGridSolverMeshFromGrid(out, refined, writeError) ||
-        !volgrid::cli::writeSolverOutput("refine", args.out, format, refined, exportRequest, args.json))
+        !volgrid::cli::writeSolverOutput("refine", args.out, format, std::move(refined), exportRequest, args.json))
     {
       if (!writeError.empty())
         std::fprintf(stderr, "volgrid refine: %s\n", writeError.c_str());

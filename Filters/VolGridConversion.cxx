@@ -107,17 +107,10 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int32_
     array->SetValue(static_cast<vtkIdType>(i), values[i]);
   return array;
 }
-} // namespace
 
-void VolGridFillFromMesherResult(const volgrid::MesherResult& result, vtkUnstructuredGrid* volume,
-                                 vtkPolyData* boundary)
+// VolGridFillFromMesherResult's volume: the tets on `points`, with their cell arrays.
+void fillVolume(const volgrid::MesherResult& result, vtkPoints* points, vtkUnstructuredGrid* volume)
 {
-  const vtkIdType numPoints = static_cast<vtkIdType>(result.points.size() / 3);
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numPoints);
-  for (vtkIdType i = 0; i < numPoints; ++i)
-    points->SetPoint(i, result.points.data() + 3 * i);
   volume->SetPoints(points);
   volume->SetCells(VTK_TETRA, fixedSizeCells(result.tets, 4));
   volume->GetCellData()->RemoveArray("Region");
@@ -135,6 +128,20 @@ void VolGridFillFromMesherResult(const volgrid::MesherResult& result, vtkUnstruc
   volume->GetCellData()->RemoveArray("BoundaryFacePatch");
   volume->GetCellData()->AddArray(
     VolGridBoundaryFacePatch(result.tets, result.boundaryTriangles, result.boundaryPatch));
+}
+} // namespace
+
+void VolGridFillFromMesherResult(const volgrid::MesherResult& result, vtkUnstructuredGrid* volume,
+                                 vtkPolyData* boundary)
+{
+  const vtkIdType numPoints = static_cast<vtkIdType>(result.points.size() / 3);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+    points->SetPoint(i, result.points.data() + 3 * i);
+  if (volume)
+    fillVolume(result, points, volume);
   if (boundary)
   {
     boundary->SetPoints(points);
@@ -180,8 +187,11 @@ void VolGridSetPatchAndRegionNames(const volgrid::MesherResult& result,
                                    const std::map<int32_t, std::string>& regionNames, vtkUnstructuredGrid* volume,
                                    vtkPolyData* boundary)
 {
-  VolGridSetLabelNames(volume, "PatchNames", result.boundaryPatch, patchNames, "patch");
-  VolGridSetLabelNames(volume, "RegionNames", result.tetRegion, regionNames, "region");
+  if (volume)
+  {
+    VolGridSetLabelNames(volume, "PatchNames", result.boundaryPatch, patchNames, "patch");
+    VolGridSetLabelNames(volume, "RegionNames", result.tetRegion, regionNames, "region");
+  }
   if (boundary)
     VolGridSetLabelNames(boundary, "PatchNames", result.boundaryPatch, patchNames, "patch");
 }

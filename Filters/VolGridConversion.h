@@ -37,8 +37,8 @@ VTKVOLGRIDFILTERS_EXPORT vtkSmartPointer<vtkIntArray> VolGridBoundaryFacePatch(c
                                                                                const std::vector<int32_t>& triangles,
                                                                                const std::vector<int32_t>& patches);
 
-// Fills `volume` with the mesher's points and tets (cell arrays Region, Forced and BoundaryFacePatch) and
-// `boundary` (may be null) with
+// Fills `volume` (may be null) with the mesher's points and tets (cell arrays Region, Forced and
+// BoundaryFacePatch) and `boundary` (may be null) with
 // the same points and the boundary triangles (cell array PatchId). Replaces their points, cells and the
 // named arrays; other arrays are left to the caller. Forced (unsigned char): 1 where the input surface
 // forces the tet's shape (MesherResult::tetForced).
@@ -58,7 +58,7 @@ VTKVOLGRIDFILTERS_EXPORT std::map<int32_t, std::string> VolGridReadLabelNames(vt
                                                                               const char* arrayName);
 
 // PatchNames (of result.boundaryPatch) on both outputs and RegionNames (of result.tetRegion) on the
-// volume; `boundary` may be null.
+// volume; either may be null.
 VTKVOLGRIDFILTERS_EXPORT void VolGridSetPatchAndRegionNames(const volgrid::MesherResult& result,
                                                             const std::map<int32_t, std::string>& patchNames,
                                                             const std::map<int32_t, std::string>& regionNames,
