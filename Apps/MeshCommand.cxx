@@ -239,6 +239,7 @@ bool write(const std::string& path, vtkDataSet* data)
   }
   return true;
 }
+
 // What the report says of the output mesh itself: its dihedral angles (the mesher's own summary covers only
 // its improvement stage) and the size ratio between face-neighbouring tets (SizeRatio.h) against the
 // gradation option. Taken before writing, so that the mesher's arrays can go before the writer runs.
@@ -258,7 +259,7 @@ OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult
   return summary;
 }
 
-// Once the VTK data sets hold their own copies, the mesher's arrays are released: at millions of tets the
+// The mesher's arrays, released once the output holds what it needs of them: at millions of tets the
 // writer's own buffers then take their place instead of adding to them (the legacy writer converts the
 // cells to 64-bit ids, about 40 bytes per tet). Only the statistics stay, for the report.
 void releaseMeshArrays(volgrid::MesherResult& result)
@@ -276,30 +277,22 @@ bool writeOutputs(const Arguments& args, volgrid::MeshFormat format, bool vtkOut
                   const volgrid::cli::ExportRequest& request, volgrid::MesherResult& result,
                   volgrid::SolverMesh solverMesh)
 {
+  vtkNew<vtkUnstructuredGrid> volumeGrid;
   vtkNew<vtkPolyData> boundarySurface;
+  vtkUnstructuredGrid* const volume = vtkOutput ? volumeGrid.Get() : nullptr;
   vtkPolyData* const boundary = args.boundaryOut.empty() ? nullptr : boundarySurface.Get();
-  if (vtkOutput)
+  if (volume || boundary)
   {
-    vtkNew<vtkUnstructuredGrid> volume;
     VolGridFillFromMesherResult(result, volume, boundary);
     VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, volume, boundary);
-    releaseMeshArrays(result);
-    if (!write(args.out, volume.Get()))
-      return false;
   }
-  else
-  {
-    if (boundary)
-    {
-      VolGridFillFromMesherResult(result, nullptr, boundary);
-      VolGridSetPatchAndRegionNames(result, solverMesh.patchNames, solverMesh.regionNames, nullptr, boundary);
-    }
+  if (!vtkOutput)
     volgrid::cli::moveGeometry(result, solverMesh);
-    releaseMeshArrays(result);
-    if (!volgrid::cli::writeSolverOutput("mesh", args.out, format, std::move(solverMesh), request, args.json))
-      return false;
-  }
-  return !boundary || write(args.boundaryOut, boundary);
+  releaseMeshArrays(result);
+  const bool written =
+    vtkOutput ? write(args.out, volume)
+              : volgrid::cli::writeSolverOutput("mesh", args.out, format, std::move(solverMesh), request, args.json);
+  return written && (!boundary || write(args.boundaryOut, boundary));
 }
 
 // The run's summary on stdout (--json: one JSON line): counts, Steiner points, the output's dihedral
