@@ -5,6 +5,8 @@
 // the boundary faces grouped by patch in label order. A boundary face takes the patch of the boundary triangle (or
 // quad: prism sides on a symmetry plane) with the same points; a boundary face without one fails (the mesh and its
 // patches disagree). Triangles between two cells (an interface between regions) are internal faces.
+// No face list is built: the cell across each cell face (CellFaces.h, 4 bytes per cell face) and the
+// boundary faces are all it keeps; every file is written by walking the cells again.
 #include "CellFaces.h"
 #include "MeshWriter.h"
 #include "OutputFile.h"
@@ -22,20 +24,22 @@ namespace volgrid
 {
 namespace
 {
-struct PolyMesh
+// The polyMesh's faces without a list of them: the cell across each cell face, and the boundary faces.
+struct PolyFaces
 {
-  std::vector<std::array<int32_t, 4>> faces;  // a triangle's fourth point is -1
-  std::vector<int32_t> owner, neighbour;      // neighbour: internal faces only
+  std::vector<int32_t> neighbour; // per cell face (MixedCellFaces numbering): the cell across, or -1
+  int64_t internalFaces = 0;
+  struct Boundary
+  {
+    int32_t patch;
+    std::array<int32_t, 4> key;
+    int32_t cell;
+    int face;
+    bool operator<(const Boundary& o) const { return patch < o.patch || (patch == o.patch && key < o.key); }
+  };
+  std::vector<Boundary> boundary;             // by patch, then by point ids
   std::vector<int32_t> patchStart, patchSize; // per patch in label order
 };
-
-std::string faceText(const std::array<int32_t, 4>& key)
-{
-  std::string text = "(" + std::to_string(key[0]);
-  for (int k = 1; k < 4 && key[k] >= 0; ++k)
-    text += " " + std::to_string(key[k]);
-  return text + ")";
-}
 
 // The boundary triangles and quads by sorted key, with their patch.
 std::vector<std::pair<std::array<int32_t, 4>, int32_t>> boundaryKeys(const SolverMesh& mesh)
@@ -52,62 +56,63 @@ std::vector<std::pair<std::array<int32_t, 4>, int32_t>> boundaryKeys(const Solve
   return keys;
 }
 
-Status buildPolyMesh(const SolverMesh& mesh, const std::vector<int32_t>& patches, PolyMesh& poly)
+Status buildPolyFaces(const SolverMesh& mesh, const MixedCellFaces& cells, const std::vector<int32_t>& patches,
+                      PolyFaces& poly)
 {
-  const std::vector<CellFace> faces = sortedCellFaces(mesh.points, mesh.tets, mesh.prisms, mesh.pyramids);
-  struct Internal
-  {
-    int32_t owner, neighbour;
-    std::array<int32_t, 4> loop;
-  };
-  std::vector<Internal> internal;
-  std::vector<std::pair<int32_t, const CellFace*>> boundary; // (patch, face)
+  Status s = faceNeighbours(cells, mesh.numberOfPoints(), poly.neighbour);
+  if (!s.ok())
+    return s;
   const std::vector<std::pair<std::array<int32_t, 4>, int32_t>> keys = boundaryKeys(mesh);
-  for (size_t i = 0; i < faces.size();)
-  {
-    if (i + 1 < faces.size() && faces[i + 1].key == faces[i].key)
+  for (int64_t c = 0; c < cells.numberOfCells(); ++c)
+    for (int f = 0; f < cells.numberOfFaces(c); ++f)
     {
-      if (i + 2 < faces.size() && faces[i + 2].key == faces[i].key)
+      if (poly.neighbour[cells.firstFace(c) + f] >= 0)
+      {
+        ++poly.internalFaces;
+        continue;
+      }
+      const std::array<int32_t, 4> key = cells.key(c, f);
+      const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(key, INT32_MIN));
+      if (it == keys.end() || it->first != key)
         return Status::failure(ErrorKind::InvalidOption,
-                               "face " + faceText(faces[i].key) + " is shared by more than two cells (" +
-                                 std::to_string(faces[i].cell) + ", " + std::to_string(faces[i + 1].cell) + ", " +
-                                 std::to_string(faces[i + 2].cell) + ")");
-      const CellFace& a = faces[i]; // sorted: the smaller cell first
-      const CellFace& b = faces[i + 1];
-      internal.push_back({ a.cell, b.cell, a.loop });
-      i += 2;
-      continue;
+                               "boundary face " + cellFaceText(key) + " of cell " + std::to_string(c) + " is in no patch");
+      poly.boundary.push_back({ it->second, key, static_cast<int32_t>(c), f });
     }
-    const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(faces[i].key, INT32_MIN));
-    if (it == keys.end() || it->first != faces[i].key)
-      return Status::failure(ErrorKind::InvalidOption,
-                             "boundary face " + faceText(faces[i].key) + " of cell " + std::to_string(faces[i].cell) +
-                               " is in no patch");
-    boundary.emplace_back(it->second, &faces[i]);
-    ++i;
-  }
-  std::sort(internal.begin(), internal.end(),
-            [](const Internal& x, const Internal& y)
-            { return std::tie(x.owner, x.neighbour) < std::tie(y.owner, y.neighbour); });
-  std::stable_sort(boundary.begin(), boundary.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (const Internal& f : internal)
-  {
-    poly.faces.push_back(f.loop);
-    poly.owner.push_back(f.owner);
-    poly.neighbour.push_back(f.neighbour);
-  }
+  poly.internalFaces /= 2;
+  std::sort(poly.boundary.begin(), poly.boundary.end());
   size_t b = 0;
   for (int32_t p : patches)
   {
-    poly.patchStart.push_back(static_cast<int32_t>(poly.faces.size()));
-    for (; b < boundary.size() && boundary[b].first == p; ++b)
+    poly.patchStart.push_back(static_cast<int32_t>(poly.internalFaces + static_cast<int64_t>(b)));
+    const size_t first = b;
+    for (; b < poly.boundary.size() && poly.boundary[b].patch == p; ++b)
     {
-      poly.faces.push_back(boundary[b].second->loop);
-      poly.owner.push_back(boundary[b].second->cell);
     }
-    poly.patchSize.push_back(static_cast<int32_t>(poly.faces.size()) - poly.patchStart.back());
+    poly.patchSize.push_back(static_cast<int32_t>(b - first));
   }
   return Status::success();
+}
+
+// Visits the internal faces in upper triangular order: by owner (the smaller cell), then by neighbour.
+template <class Visit>
+void forEachInternalFace(const MixedCellFaces& cells, const PolyFaces& poly, Visit visit)
+{
+  for (int64_t c = 0; c < cells.numberOfCells(); ++c)
+  {
+    std::pair<int32_t, int> upper[5];
+    int n = 0;
+    for (int f = 0; f < cells.numberOfFaces(c); ++f)
+    {
+      const int32_t across = poly.neighbour[cells.firstFace(c) + f];
+      if (across > c)
+        upper[n++] = { across, f };
+    }
+    for (int k = 1; k < n; ++k) // insertion sort of at most 5
+      for (int j = k; j > 0 && upper[j] < upper[j - 1]; --j)
+        std::swap(upper[j], upper[j - 1]);
+    for (int k = 0; k < n; ++k)
+      visit(static_cast<int32_t>(c), upper[k].second, upper[k].first);
+  }
 }
 
 void foamHeader(std::FILE* f, const char* cls, const char* object, const std::string& note)
@@ -118,22 +123,33 @@ void foamHeader(std::FILE* f, const char* cls, const char* object, const std::st
   std::fprintf(f, "    location    \"constant/polyMesh\";\n    object      %s;\n}\n\n", object);
 }
 
-Status writeLabels(const std::string& path, const char* object, const std::vector<int32_t>& labels,
-                   const std::string& note)
+// A labelList of `count` labels, which `emit` prints one per line.
+template <class Emit>
+Status writeLabels(const std::string& path, const char* object, int64_t count, const std::string& note, Emit emit)
 {
   OutputFile out;
   Status s = out.open(path);
   if (!s.ok())
     return s;
   foamHeader(out.stream(), "labelList", object, note);
-  std::fprintf(out.stream(), "%zu\n(\n", labels.size());
-  for (int32_t l : labels)
-    std::fprintf(out.stream(), "%d\n", l);
+  std::fprintf(out.stream(), "%" PRId64 "\n(\n", count);
+  emit(out.stream());
   std::fprintf(out.stream(), ")\n");
   return out.commit();
 }
 
-Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh& poly,
+// A face's loop from its smallest point id: independent of the cell's vertex order.
+void printFace(std::FILE* out, const std::array<int32_t, 4>& f)
+{
+  const int n = f[3] < 0 ? 3 : 4;
+  const int k = static_cast<int>(std::min_element(f.begin(), f.begin() + n) - f.begin());
+  std::fprintf(out, "%d(%d", n, f[k]);
+  for (int j = 1; j < n; ++j)
+    std::fprintf(out, " %d", f[(k + j) % n]);
+  std::fprintf(out, ")\n");
+}
+
+Status writeFiles(const std::string& dir, const SolverMesh& mesh, const MixedCellFaces& cells, const PolyFaces& poly,
                   const std::vector<int32_t>& patches, const MeshWriteOptions& options)
 {
   OutputFile points, faces, boundary;
@@ -148,26 +164,29 @@ Status writeFiles(const std::string& dir, const SolverMesh& mesh, const PolyMesh
   std::fprintf(points.stream(), ")\n");
   if (!(s = points.commit()).ok() || !(s = faces.open(dir + "/faces")).ok())
     return s;
+  const int64_t numFaces = poly.internalFaces + static_cast<int64_t>(poly.boundary.size());
   foamHeader(faces.stream(), "faceList", "faces", "");
-  std::fprintf(faces.stream(), "%zu\n(\n", poly.faces.size());
-  for (const auto& f : poly.faces) // each loop from its smallest point id: independent of the cell's vertex order
-  {
-    const int n = f[3] < 0 ? 3 : 4;
-    const int k = static_cast<int>(std::min_element(f.begin(), f.begin() + n) - f.begin());
-    std::fprintf(faces.stream(), "%d(%d", n, f[k]);
-    for (int j = 1; j < n; ++j)
-      std::fprintf(faces.stream(), " %d", f[(k + j) % n]);
-    std::fprintf(faces.stream(), ")\n");
-  }
-  std::fprintf(faces.stream(), ")\n");
+  std::fprintf(faces.stream(), "%" PRId64 "\n(\n", numFaces);
+  std::FILE* out = faces.stream();
+  forEachInternalFace(cells, poly, [&](int32_t owner, int f, int32_t) { printFace(out, cells.loop(owner, f)); });
+  for (const PolyFaces::Boundary& b : poly.boundary)
+    printFace(out, cells.loop(b.cell, b.face));
+  std::fprintf(out, ")\n");
   if (!(s = faces.commit()).ok())
     return s;
-  const std::string note = "nPoints:" + std::to_string(mesh.numberOfPoints()) + "  nCells:" +
-    std::to_string(mesh.numberOfTets() + static_cast<int64_t>(mesh.prisms.size() / 6) +
-                   static_cast<int64_t>(mesh.pyramids.size() / 5)) +
-    "  nFaces:" + std::to_string(poly.faces.size()) + "  nInternalFaces:" + std::to_string(poly.neighbour.size());
-  if (!(s = writeLabels(dir + "/owner", "owner", poly.owner, note)).ok() ||
-      !(s = writeLabels(dir + "/neighbour", "neighbour", poly.neighbour, note)).ok() ||
+  const std::string note = "nPoints:" + std::to_string(mesh.numberOfPoints()) +
+    "  nCells:" + std::to_string(cells.numberOfCells()) + "  nFaces:" + std::to_string(numFaces) +
+    "  nInternalFaces:" + std::to_string(poly.internalFaces);
+  const auto owners = [&](std::FILE* f)
+  {
+    forEachInternalFace(cells, poly, [&](int32_t owner, int, int32_t) { std::fprintf(f, "%d\n", owner); });
+    for (const PolyFaces::Boundary& b : poly.boundary)
+      std::fprintf(f, "%d\n", b.cell);
+  };
+  const auto neighbours = [&](std::FILE* f)
+  { forEachInternalFace(cells, poly, [&](int32_t, int, int32_t across) { std::fprintf(f, "%d\n", across); }); };
+  if (!(s = writeLabels(dir + "/owner", "owner", numFaces, note, owners)).ok() ||
+      !(s = writeLabels(dir + "/neighbour", "neighbour", poly.internalFaces, note, neighbours)).ok() ||
       !(s = boundary.open(dir + "/boundary")).ok())
     return s;
   foamHeader(boundary.stream(), "polyBoundaryMesh", "boundary", "");
@@ -206,15 +225,16 @@ Status writeOpenFOAM(const std::string& caseDir, const SolverMesh& mesh, const M
     return Status::failure(ErrorKind::InvalidOption,
                            "cannot write the OpenFOAM case '" + caseDir +
                              "': it already exists (remove it or choose another name)");
-  PolyMesh poly;
-  Status s = buildPolyMesh(mesh, patches, poly);
+  const MixedCellFaces cells(mesh.points, mesh.tets, mesh.prisms, mesh.pyramids);
+  PolyFaces poly;
+  Status s = buildPolyFaces(mesh, cells, patches, poly);
   if (!s.ok())
     return s;
   const std::string temp = caseDir + ".volgrid-tmp-" + std::to_string(static_cast<long>(getpid()));
   fs::create_directories(temp + "/constant/polyMesh", ec);
   if (ec)
     return Status::failure(ErrorKind::InvalidOption, "cannot create '" + temp + "': " + ec.message());
-  s = writeFiles(temp + "/constant/polyMesh", mesh, poly, patches, options);
+  s = writeFiles(temp + "/constant/polyMesh", mesh, cells, poly, patches, options);
   if (s.ok())
   {
     fs::rename(temp, caseDir, ec);

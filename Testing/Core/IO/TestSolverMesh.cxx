@@ -256,6 +256,22 @@ TEST(MeshWriterOpenFOAM, PrismsAreCellsWithQuadSidesInTheirPatch)
   EXPECT_FALSE(std::filesystem::exists(dir2));
 }
 
+// The faces are matched by their point ids: a third tet on the face (1 2 3) makes a mesh no solver can
+// take, so it is refused, naming the face and its cells, before anything is written.
+TEST(MeshWriterOpenFOAM, AFaceOfThreeCellsIsRefused)
+{
+  SolverMesh three = twoTets();
+  three.points.insert(three.points.end(), { 2, 2, 2 });
+  three.tets.insert(three.tets.end(), { 3, 2, 1, 5 });
+  three.tetRegion.push_back(1);
+  const std::string dir = tempPath("foam-three");
+  std::filesystem::remove_all(dir);
+  const Status s = writeSolverMesh(dir, three, MeshFormat::OpenFOAM);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("face (1 2 3) is shared by more than two cells (0, 1, 2)"), std::string::npos) << s.message;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
 TEST(MeshWriterSU2, PrismsInVtkOrderAndSideQuadsInTheirMarker)
 {
   const std::string text = writtenText("prism.su2", prismUnderTet(), MeshFormat::SU2);
