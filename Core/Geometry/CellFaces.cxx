@@ -168,17 +168,17 @@ Status faceNeighbours(const MixedCellFaces& cells, int64_t numberOfPoints, std::
     {
       if (bucket[i + 1].key != bucket[i].key)
         continue;
-      if (i + 2 < bucket.size() && bucket[i + 2].key == bucket[i].key)
-        return Status::failure(ErrorKind::InvalidOption,
-                               "face " + cellFaceText(bucket[i].key) + " is shared by more than two cells (" +
-                                 std::to_string(bucket[i].cell) + ", " + std::to_string(bucket[i + 1].cell) + ", " +
-                                 std::to_string(bucket[i + 2].cell) + ")");
+      if (i + 2 < bucket.size() && bucket[i + 2].key == bucket[i].key && s.ok())
+        s = Status::failure(ErrorKind::InvalidOption,
+                            "face " + cellFaceText(bucket[i].key) + " is shared by more than two cells (" +
+                              std::to_string(bucket[i].cell) + ", " + std::to_string(bucket[i + 1].cell) + ", " +
+                              std::to_string(bucket[i + 2].cell) + ")");
       neighbour[bucket[i].face] = bucket[i + 1].cell;
       neighbour[bucket[i + 1].face] = bucket[i].cell;
       ++i;
     }
   }
-  return Status::success();
+  return s;
 }
 
 } // namespace volgrid

@@ -53,7 +53,8 @@ private:
 // For every cell face (by its number), the cell on the other side, or -1 where it is on the boundary. The
 // faces are matched by their point ids, bucketed by the smallest one: 4 bytes per cell face beside the
 // result's 4, and 8 per point. Fails, naming the face and three of its cells, when more than two cells share
-// a face.
+// a face; the result is still filled then (the first two cells of such a face paired, the others left on the
+// boundary), for a measure of a broken mesh.
 Status faceNeighbours(const MixedCellFaces& cells, int64_t numberOfPoints, std::vector<int32_t>& neighbour);
 
 } // namespace volgrid

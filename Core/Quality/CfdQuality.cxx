@@ -1,7 +1,7 @@
 // CFD face metrics as checkMesh defines them (see CfdQuality.h).
 #include "CfdQuality.h"
 
-#include "TetFaces.h"
+#include "CellFaces.h"
 
 #include <algorithm>
 #include <array>
@@ -155,96 +155,33 @@ double boundaryFaceSkewness(const double* a, const double* b, const double* c, c
 
 CfdSummary cfdMetrics(const std::vector<double>& points, const std::vector<int32_t>& tets, CfdCellMetrics* cells)
 {
-  const size_t numTets = tets.size() / 4;
-  std::vector<double> centre(3 * numTets), volume(numTets);
-  for (size_t t = 0; t < numTets; ++t)
-  {
-    tetCentroid(points, tets.data() + 4 * t, centre.data() + 3 * t);
-    volume[t] = tetVolumeAbs(points, tets.data() + 4 * t);
-  }
-  CfdCellMetrics local;
-  CfdCellMetrics& out = cells ? *cells : local;
-  out.nonOrthogonality.assign(numTets, 0.0);
-  out.skewness.assign(numTets, 0.0);
-  out.volumeRatio.assign(numTets, 1.0);
-  out.volume = volume;
-  CfdSummary sum;
-  FaceSink sink{ sum, out };
-  const std::vector<TetFace> faces = sortedTetFaces(points, tets);
-  auto pt = [&](int32_t i) { return points.data() + 3 * static_cast<size_t>(i); };
-  for (size_t i = 0; i < faces.size();)
-  {
-    const TetFace& f = faces[i];
-    const int32_t o = f.tet;
-    const double* co = centre.data() + 3 * o;
-    const double *a = pt(f.loop[0]), *b = pt(f.loop[1]), *c = pt(f.loop[2]);
-    if (i + 1 < faces.size() && faces[i + 1].key == f.key)
-    {
-      const int32_t n = faces[i + 1].tet;
-      const double* cn = centre.data() + 3 * n;
-      double s[3];
-      areaVector(a, b, c, s); // oriented out of the owner, towards the neighbour
-      sink.internal(o, n, faceNonOrthogonality(co, cn, s), internalFaceSkewness(a, b, c, co, cn),
-                    std::max(volume[o], volume[n]) / std::max(std::min(volume[o], volume[n]), 1e-300));
-      i += 2;
-    }
-    else
-    {
-      ++sum.boundaryFaces;
-      sink.skew(o, boundaryFaceSkewness(a, b, c, co));
-      i += 1;
-    }
-  }
-  sum.averageNonOrthogonality = averageAngle(sink.cosineSum, sum.internalFaces);
-  return sum;
+  MixedCells mesh;
+  mesh.tets = &tets;
+  return cfdMetricsMixed(points, mesh, cells);
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Mixed meshes.
+// Mixed meshes, tets alone included: the faces come from MixedCellFaces (prisms, pyramids, then tets) and
+// the cell across each from faceNeighbours, so no list of faces is held.
 namespace
 {
-// The faces of each shape, corners listed to point out of a cell in SolverMesh's order.
-struct Shape
+// checkMesh's face centre and area vector (see the header) of the face with corners p[0..n).
+void faceGeometry(const double* const* p, int n, double centre[3], double area[3])
 {
-  int corners;
-  int faces;
-  int8_t face[5][5]; // per face: corner count, then the corners
-};
-constexpr Shape kTet{ 4, 4, { { 3, 0, 2, 1 }, { 3, 0, 1, 3 }, { 3, 0, 3, 2 }, { 3, 1, 2, 3 } } };
-constexpr Shape kPrism{ 6,
-                        5,
-                        { { 3, 0, 2, 1 }, { 3, 3, 4, 5 }, { 4, 0, 1, 4, 3 }, { 4, 1, 2, 5, 4 }, { 4, 2, 0, 3, 5 } } };
-constexpr Shape kPyramid{ 5, 5, { { 4, 0, 3, 2, 1 }, { 3, 0, 1, 4 }, { 3, 1, 2, 4 }, { 3, 2, 3, 4 }, { 3, 3, 0, 4 } } };
-
-struct MixedFace
-{
-  std::array<int32_t, 4> key; // sorted corner ids (INT32_MAX after a triangle's three)
-  int32_t cell;
-  int32_t corners[4]; // in the cell's outward order
-  int n;
-  double centre[3], area[3];
-};
-
-// checkMesh's face centre and area vector (see the header).
-void faceGeometry(const std::vector<double>& points, MixedFace& f)
-{
-  const double* p[4];
-  for (int i = 0; i < f.n; ++i)
-    p[i] = points.data() + 3 * static_cast<size_t>(f.corners[i]);
-  if (f.n == 3)
+  if (n == 3)
   {
-    centroid(p[0], p[1], p[2], f.centre);
-    areaVector(p[0], p[1], p[2], f.area);
+    centroid(p[0], p[1], p[2], centre);
+    areaVector(p[0], p[1], p[2], area);
     return;
   }
   double mean[3] = { 0, 0, 0 };
-  for (int i = 0; i < f.n; ++i)
+  for (int i = 0; i < n; ++i)
     for (int k = 0; k < 3; ++k)
-      mean[k] += p[i][k] / f.n;
+      mean[k] += p[i][k] / n;
   double sumN[3] = { 0, 0, 0 }, sumAc[3] = { 0, 0, 0 }, sumA = 0;
-  for (int i = 0; i < f.n; ++i)
+  for (int i = 0; i < n; ++i)
   {
-    const double* next = p[(i + 1) % f.n];
+    const double* next = p[(i + 1) % n];
     double s[3];
     areaVector(p[i], next, mean, s);
     const double a = 2 * std::sqrt(dot(s, s));
@@ -257,104 +194,159 @@ void faceGeometry(const std::vector<double>& points, MixedFace& f)
   }
   for (int k = 0; k < 3; ++k)
   {
-    f.centre[k] = sumA < kRootVSmall ? mean[k] : sumAc[k] / (3 * sumA);
-    f.area[k] = sumA < kRootVSmall ? 0.0 : 0.5 * sumN[k];
+    centre[k] = sumA < kRootVSmall ? mean[k] : sumAc[k] / (3 * sumA);
+    area[k] = sumA < kRootVSmall ? 0.0 : 0.5 * sumN[k];
   }
 }
 
-// The faces of one cell, with their geometry, appended to `faces`; the cell's centre and volume
-// (checkMesh's face pyramids). Faces that point into the cell are turned.
-void addCell(const std::vector<double>& points, const int32_t* ids, const Shape& shape, int32_t cell,
-             std::vector<MixedFace>& faces, double centre[3], double& volume)
+// One face of a cell as the metrics need it: corners, centre and area vector out of the cell.
+struct Face
 {
-  const size_t first = faces.size();
-  double estimate[3] = { 0, 0, 0 };
-  for (int f = 0; f < shape.faces; ++f)
-  {
-    MixedFace face;
-    face.cell = cell;
-    face.n = shape.face[f][0];
-    for (int i = 0; i < face.n; ++i)
-      face.corners[i] = ids[shape.face[f][1 + i]];
-    face.key = { face.corners[0], face.corners[1], face.corners[2], face.n == 4 ? face.corners[3] : INT32_MAX };
-    std::sort(face.key.begin(), face.key.end());
-    faceGeometry(points, face);
-    for (int k = 0; k < 3; ++k)
-      estimate[k] += face.centre[k] / shape.faces;
-    faces.push_back(face);
-  }
-  double weighted[3] = { 0, 0, 0 }, sum = 0;
-  for (size_t f = first; f < faces.size(); ++f)
-  {
-    const MixedFace& face = faces[f];
-    const double r[3] = { face.centre[0] - estimate[0], face.centre[1] - estimate[1], face.centre[2] - estimate[2] };
-    const double v = dot(face.area, r);
-    for (int k = 0; k < 3; ++k)
-      weighted[k] += v * (0.75 * face.centre[k] + 0.25 * estimate[k]);
-    sum += v;
-  }
-  if (sum < 0) // given the other way round
-    for (size_t f = first; f < faces.size(); ++f)
-      for (int k = 0; k < 3; ++k)
-        faces[f].area[k] = -faces[f].area[k];
-  for (int k = 0; k < 3; ++k)
-    centre[k] = std::fabs(sum) > 1e-300 ? weighted[k] / sum : estimate[k];
-  volume = std::fabs(sum) / 3.0;
-}
+  const double* corner[4];
+  int n;
+  double centre[3], area[3];
+};
 
+// The cells and where their geometry lives; cell ids are MixedCellFaces'.
+class MixedGeometry
+{
+public:
+  MixedGeometry(const std::vector<double>& points, const std::vector<int32_t>& tets, const MixedCellFaces& cells)
+    : points_(points), tets_(tets), cells_(cells), numLayer_(cells.numberOfCells() - static_cast<int64_t>(tets.size() / 4))
+  {
+  }
+
+  // Face f of cell c, out of it (a layer cell given the other way round, `turned`, has its loops inward).
+  Face face(int64_t c, int f, bool turned) const
+  {
+    const std::array<int32_t, 4> loop = cells_.loop(c, f);
+    Face face;
+    face.n = loop[3] < 0 ? 3 : 4;
+    for (int i = 0; i < face.n; ++i)
+      face.corner[i] = points_.data() + 3 * static_cast<size_t>(loop[i]);
+    faceGeometry(face.corner, face.n, face.centre, face.area);
+    if (turned)
+      for (double& a : face.area)
+        a = -a;
+    return face;
+  }
+
+  // The centre and volume of cell c: a tet's centroid; other cells checkMesh's face pyramids about the mean
+  // of their face centres. Returns whether the cell's loops point into it.
+  bool centreAndVolume(int64_t c, double centre[3], double& volume) const
+  {
+    if (c >= numLayer_)
+    {
+      const int32_t* v = tets_.data() + 4 * (c - numLayer_);
+      tetCentroid(points_, v, centre);
+      volume = tetVolumeAbs(points_, v);
+      return false;
+    }
+    const int nf = cells_.numberOfFaces(c);
+    Face faces[5];
+    double estimate[3] = { 0, 0, 0 };
+    for (int f = 0; f < nf; ++f)
+    {
+      faces[f] = face(c, f, false);
+      for (int k = 0; k < 3; ++k)
+        estimate[k] += faces[f].centre[k] / nf;
+    }
+    double weighted[3] = { 0, 0, 0 }, sum = 0;
+    for (int f = 0; f < nf; ++f)
+    {
+      const double r[3] = { faces[f].centre[0] - estimate[0], faces[f].centre[1] - estimate[1],
+                            faces[f].centre[2] - estimate[2] };
+      const double v = dot(faces[f].area, r);
+      for (int k = 0; k < 3; ++k)
+        weighted[k] += v * (0.75 * faces[f].centre[k] + 0.25 * estimate[k]);
+      sum += v;
+    }
+    for (int k = 0; k < 3; ++k)
+      centre[k] = std::fabs(sum) > 1e-300 ? weighted[k] / sum : estimate[k];
+    volume = std::fabs(sum) / 3.0;
+    return sum < 0;
+  }
+
+private:
+  const std::vector<double>& points_;
+  const std::vector<int32_t>& tets_;
+  const MixedCellFaces& cells_;
+  const int64_t numLayer_; // prisms and pyramids, numbered before the tets
+};
+} // namespace
+
+namespace
+{
+// MixedCellFaces numbers prisms, pyramids, then tets; the metrics are reported tets, prisms, pyramids.
+struct ReportOrder
+{
+  int64_t numTets, numLayer;
+  int32_t operator()(int64_t c) const { return static_cast<int32_t>(c < numLayer ? numTets + c : c - numLayer); }
+};
+
+// Every face once (an internal one from its smaller cell), into the summary and the per-cell maxima.
+void measureFaces(const MixedCellFaces& faces, const MixedGeometry& geometry, const std::vector<int32_t>& across,
+                  const std::vector<double>& centre, const std::vector<uint8_t>& turned, ReportOrder reported,
+                  FaceSink& sink)
+{
+  for (int64_t c = 0; c < faces.numberOfCells(); ++c)
+    for (int f = 0; f < faces.numberOfFaces(c); ++f)
+    {
+      const int32_t n = across[faces.firstFace(c) + f];
+      if (n >= 0 && n < c)
+        continue; // measured from the other side
+      const Face face = geometry.face(c, f, c < reported.numLayer && turned[c]);
+      const int32_t o = reported(c);
+      const double* co = centre.data() + 3 * o;
+      if (n < 0)
+      {
+        ++sink.sum.boundaryFaces;
+        sink.skew(o, boundarySkewness(face.centre, face.area, face.corner, face.n, co));
+        continue;
+      }
+      const int32_t r = reported(n);
+      const double* cn = centre.data() + 3 * r;
+      const double d[3] = { cn[0] - co[0], cn[1] - co[1], cn[2] - co[2] };
+      const double vo = sink.out.volume[o], vn = sink.out.volume[r];
+      sink.internal(o, r, faceNonOrthogonality(co, cn, face.area),
+                    skewness(face.centre, face.area, face.corner, face.n, co, d, 0.2),
+                    std::max(vo, vn) / std::max(std::min(vo, vn), 1e-300));
+    }
+}
 } // namespace
 
 CfdSummary cfdMetricsMixed(const std::vector<double>& points, const MixedCells& mesh, CfdCellMetrics* cells)
 {
-  const std::pair<const std::vector<int32_t>*, const Shape*> groups[] = { { mesh.tets, &kTet },
-                                                                          { mesh.prisms, &kPrism },
-                                                                          { mesh.pyramids, &kPyramid } };
-  size_t numCells = 0;
-  for (const auto& g : groups)
-    numCells += g.first ? g.first->size() / g.second->corners : 0;
+  static const std::vector<int32_t> kNone;
+  const std::vector<int32_t>& tets = mesh.tets ? *mesh.tets : kNone;
+  const MixedCellFaces faces(points, tets, mesh.prisms ? *mesh.prisms : kNone, mesh.pyramids ? *mesh.pyramids : kNone);
+  const MixedGeometry geometry(points, tets, faces);
+  const ReportOrder reported{ static_cast<int64_t>(tets.size() / 4),
+                              faces.numberOfCells() - static_cast<int64_t>(tets.size() / 4) };
+  const size_t numCells = static_cast<size_t>(faces.numberOfCells());
   CfdCellMetrics local;
   CfdCellMetrics& out = cells ? *cells : local;
   out.nonOrthogonality.assign(numCells, 0.0);
   out.skewness.assign(numCells, 0.0);
   out.volumeRatio.assign(numCells, 1.0);
   out.volume.assign(numCells, 0.0);
-  std::vector<double> centre(3 * numCells);
-  std::vector<MixedFace> faces;
-  faces.reserve(4 * numCells);
-  int32_t cell = 0;
-  for (const auto& g : groups)
-    for (size_t i = 0; g.first && i + g.second->corners <= g.first->size(); i += g.second->corners, ++cell)
-      addCell(points, g.first->data() + i, *g.second, cell, faces, centre.data() + 3 * cell, out.volume[cell]);
-  std::sort(faces.begin(), faces.end(),
-            [](const MixedFace& a, const MixedFace& b) { return a.key != b.key ? a.key < b.key : a.cell < b.cell; });
-
   CfdSummary sum;
-  FaceSink sink{ sum, out };
-  auto pt = [&](int32_t i) { return points.data() + 3 * static_cast<size_t>(i); };
-  for (size_t i = 0; i < faces.size();)
+  // A face of more than two cells fails, but the pairs found are measured all the same; a point id out of
+  // range leaves nothing to measure.
+  std::vector<int32_t> across;
+  (void)faceNeighbours(faces, static_cast<int64_t>(points.size() / 3), across);
+  if (static_cast<int64_t>(across.size()) != faces.numberOfCellFaces())
+    return sum;
+  std::vector<double> centre(3 * numCells);
+  std::vector<uint8_t> turned(static_cast<size_t>(reported.numLayer));
+  for (int64_t c = 0; c < faces.numberOfCells(); ++c)
   {
-    const MixedFace& f = faces[i];
-    const double* co = centre.data() + 3 * f.cell;
-    const double* pts[4];
-    for (int k = 0; k < f.n; ++k)
-      pts[k] = pt(f.corners[k]);
-    if (i + 1 < faces.size() && faces[i + 1].key == f.key)
-    {
-      const int32_t n = faces[i + 1].cell;
-      const double* cn = centre.data() + 3 * n;
-      const double d[3] = { cn[0] - co[0], cn[1] - co[1], cn[2] - co[2] };
-      const double vo = out.volume[f.cell], vn = out.volume[n];
-      sink.internal(f.cell, n, faceNonOrthogonality(co, cn, f.area), skewness(f.centre, f.area, pts, f.n, co, d, 0.2),
-                    std::max(vo, vn) / std::max(std::min(vo, vn), 1e-300));
-      i += 2;
-    }
-    else
-    {
-      ++sum.boundaryFaces;
-      sink.skew(f.cell, boundarySkewness(f.centre, f.area, pts, f.n, co));
-      i += 1;
-    }
+    const bool inward = geometry.centreAndVolume(c, centre.data() + 3 * reported(c), out.volume[reported(c)]);
+    if (c < reported.numLayer)
+      turned[c] = inward;
   }
+  FaceSink sink{ sum, out };
+  measureFaces(faces, geometry, across, centre, turned, reported, sink);
   sum.averageNonOrthogonality = averageAngle(sink.cosineSum, sum.internalFaces);
   return sum;
 }
