@@ -66,9 +66,13 @@ Status buildPolyFaces(const SolverMesh& mesh, const MixedCellFaces& cells, const
   for (int64_t c = 0; c < cells.numberOfCells(); ++c)
     for (int f = 0; f < cells.numberOfFaces(c); ++f)
     {
-      if (poly.neighbour[cells.firstFace(c) + f] >= 0)
+      const int32_t across = poly.neighbour[cells.firstFace(c) + f];
+      if (across == c)
+        return Status::failure(ErrorKind::InvalidOption, "cell " + std::to_string(c) + " has the face " +
+                                                           cellFaceText(cells.key(c, f)) + " twice");
+      if (across >= 0)
       {
-        ++poly.internalFaces;
+        poly.internalFaces += across > c;
         continue;
       }
       const std::array<int32_t, 4> key = cells.key(c, f);
@@ -78,7 +82,6 @@ Status buildPolyFaces(const SolverMesh& mesh, const MixedCellFaces& cells, const
                                "boundary face " + cellFaceText(key) + " of cell " + std::to_string(c) + " is in no patch");
       poly.boundary.push_back({ it->second, key, static_cast<int32_t>(c), f });
     }
-  poly.internalFaces /= 2;
   std::sort(poly.boundary.begin(), poly.boundary.end());
   size_t b = 0;
   for (int32_t p : patches)

@@ -257,8 +257,8 @@ TEST(MeshWriterOpenFOAM, PrismsAreCellsWithQuadSidesInTheirPatch)
 }
 
 // The faces are matched by their point ids: a third tet on the face (1 2 3) makes a mesh no solver can
-// take, so it is refused, naming the face and its cells, before anything is written.
-TEST(MeshWriterOpenFOAM, AFaceOfThreeCellsIsRefused)
+// take, so it is refused, naming the face and its cells, before anything is written; so is a face twice in a cell.
+TEST(MeshWriterOpenFOAM, AFaceOfThreeCellsOrTwiceInACellIsRefused)
 {
   SolverMesh three = twoTets();
   three.points.insert(three.points.end(), { 2, 2, 2 });
@@ -269,6 +269,13 @@ TEST(MeshWriterOpenFOAM, AFaceOfThreeCellsIsRefused)
   const Status s = writeSolverMesh(dir, three, MeshFormat::OpenFOAM);
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message.find("face (1 2 3) is shared by more than two cells (0, 1, 2)"), std::string::npos) << s.message;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  // A tet with a repeated point has a face twice: refused too, not written as a face between a cell and itself.
+  SolverMesh flat = twoTets();
+  flat.tets[3] = flat.tets[2]; // (0 1 2 2)
+  const Status f = writeSolverMesh(dir, flat, MeshFormat::OpenFOAM);
+  EXPECT_FALSE(f.ok());
+  EXPECT_NE(f.message.find("cell 0 has the face (0 1 2) twice"), std::string::npos) << f.message;
   EXPECT_FALSE(std::filesystem::exists(dir));
 }
 
