@@ -88,9 +88,8 @@ Status buildPolyFaces(const SolverMesh& mesh, const MixedCellFaces& cells, const
   {
     poly.patchStart.push_back(static_cast<int32_t>(poly.internalFaces + static_cast<int64_t>(b)));
     const size_t first = b;
-    for (; b < poly.boundary.size() && poly.boundary[b].patch == p; ++b)
-    {
-    }
+    while (b < poly.boundary.size() && poly.boundary[b].patch == p)
+      ++b;
     poly.patchSize.push_back(static_cast<int32_t>(b - first));
   }
   return Status::success();
