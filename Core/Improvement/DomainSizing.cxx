@@ -1,5 +1,7 @@
 #include "DomainSizing.h"
 
+#include "OctreeSizing.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,112 +10,6 @@
 
 namespace volgrid
 {
-
-namespace
-{
-// A sizing field sampled on an adaptive octree over a box, with trilinear interpolation in the leaves.
-// Field points query the size at tet centroids in an order that jumps around the domain, and each query
-// of the background interpolant walks its mesh from the previous one; the octree is built with coherent
-// queries (children next to their parent) and answers in O(depth). A cell is split while it is larger
-// than 1.5 times the smallest size at its corners and centre, so leaves are about the local size and
-// the interpolation follows the field closely.
-class OctreeSizing
-{
-public:
-  void build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells)
-  {
-    std::copy(lo, lo + 3, lo_);
-    size_ = size;
-    cells_.assign(1, Cell());
-    std::vector<std::array<double, 3>> origin = { { lo[0], lo[1], lo[2] } };
-    std::vector<int> depthOf = { 0 };
-    for (int k = 0; k < 8; ++k)
-    {
-      const double p[3] = { lo[0] + ((k & 1) ? size : 0), lo[1] + ((k & 2) ? size : 0), lo[2] + ((k & 4) ? size : 0) };
-      cells_[0].h[k] = static_cast<float>(field.evaluate(p));
-    }
-    float grid[27];
-    // Breadth first: cells are appended in groups of eight siblings, so the queue is the cell array.
-    for (size_t c = 0; c < cells_.size(); ++c)
-    {
-      const int depth = depthOf[c];
-      const double cs = size / static_cast<double>(1u << depth);
-      const std::array<double, 3> o = origin[c];
-      const double centre[3] = { o[0] + cs / 2, o[1] + cs / 2, o[2] + cs / 2 };
-      const double hc = field.evaluate(centre);
-      double hmin = hc;
-      for (int k = 0; k < 8; ++k)
-        hmin = std::min(hmin, static_cast<double>(cells_[c].h[k]));
-      if (!(depth < maxDepth && cs > 1.5 * hmin && cells_.size() + 8 <= maxCells))
-        continue;
-      // The 3x3x3 lattice of the children's corners: the parent's corners and centre are known.
-      for (int l = 0; l < 27; ++l)
-      {
-        const int i = l % 3, j = (l / 3) % 3, m = l / 9;
-        if (i != 1 && j != 1 && m != 1)
-          grid[l] = cells_[c].h[(i / 2) | ((j / 2) << 1) | ((m / 2) << 2)];
-        else if (i == 1 && j == 1 && m == 1)
-          grid[l] = static_cast<float>(hc);
-        else
-        {
-          const double p[3] = { o[0] + i * cs / 2, o[1] + j * cs / 2, o[2] + m * cs / 2 };
-          grid[l] = static_cast<float>(field.evaluate(p));
-        }
-      }
-      const int32_t first = static_cast<int32_t>(cells_.size());
-      cells_[c].child = first;
-      for (int k = 0; k < 8; ++k)
-      {
-        const int bx = k & 1, by = (k >> 1) & 1, bz = (k >> 2) & 1;
-        Cell child;
-        for (int n = 0; n < 8; ++n)
-          child.h[n] = grid[(bx + (n & 1)) + 3 * (by + ((n >> 1) & 1)) + 9 * (bz + ((n >> 2) & 1))];
-        cells_.push_back(child);
-        origin.push_back({ o[0] + bx * cs / 2, o[1] + by * cs / 2, o[2] + bz * cs / 2 });
-        depthOf.push_back(depth + 1);
-      }
-    }
-  }
-  double evaluate(const double* p) const
-  {
-    double u[3];
-    for (int k = 0; k < 3; ++k)
-      u[k] = std::clamp((p[k] - lo_[k]) / size_, 0.0, 1.0);
-    int32_t c = 0;
-    while (cells_[c].child >= 0)
-    {
-      int k = 0;
-      for (int a = 0; a < 3; ++a)
-      {
-        u[a] *= 2;
-        if (u[a] >= 1)
-        {
-          k |= 1 << a;
-          u[a] -= 1;
-        }
-      }
-      c = cells_[c].child + k;
-    }
-    const float* h = cells_[c].h;
-    double r = 0;
-    for (int k = 0; k < 8; ++k)
-      r += h[k] * ((k & 1) ? u[0] : 1 - u[0]) * ((k & 2) ? u[1] : 1 - u[1]) * ((k & 4) ? u[2] : 1 - u[2]);
-    return r;
-  }
-  size_t cells() const { return cells_.size(); }
-
-private:
-  struct Cell
-  {
-    float h[8];
-    int32_t child = -1;
-  };
-  std::vector<Cell> cells_;
-  double lo_[3] = { 0, 0, 0 };
-  double size_ = 1;
-};
-
-} // namespace
 
 Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const ImprovementOptions& options,
                          SizingField& fast, ImprovementStatistics& stats, Progress* progress)
