@@ -10,6 +10,50 @@
 
 namespace volgrid
 {
+namespace
+{
+// The box of a tet.
+void tetBox(const TetMesh& mesh, int32_t t, double lo[3], double hi[3])
+{
+  for (int a = 0; a < 3; ++a)
+    lo[a] = hi[a] = mesh.point(mesh.vertex(t, 0))[a];
+  for (int i = 1; i < 4; ++i)
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = std::min(lo[a], mesh.point(mesh.vertex(t, i))[a]);
+      hi[a] = std::max(hi[a], mesh.point(mesh.vertex(t, i))[a]);
+    }
+}
+
+// Where the domain's tets are: the field points query the sizes only there. The pyramid's cube is the
+// tets' own (the mesh's points may reach further: the corners of the Delaunay's bounding box).
+OccupancyPyramid domainBoxes(const TetMesh& mesh)
+{
+  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      double bl[3], bh[3];
+      tetBox(mesh, t, bl, bh);
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], bl[a]);
+        hi[a] = std::max(hi[a], bh[a]);
+      }
+    });
+  const double size = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] }) * 1.001 + 1e-300;
+  OccupancyPyramid domain;
+  domain.reset(lo, size, 7);
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      double bl[3], bh[3];
+      tetBox(mesh, t, bl, bh);
+      domain.addBox(bl, bh);
+    });
+  return domain;
+}
+} // namespace
 
 Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const ImprovementOptions& options,
                          SizingField& fast, ImprovementStatistics& stats, Progress* progress)
@@ -96,8 +140,10 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
         hi[k] = std::max(hi[k], mesh.points[i + k]);
       }
     const double ext = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] }) * 1.001 + 1e-300;
+    const OccupancyPyramid domain = domainBoxes(mesh);
     octree = std::make_shared<OctreeSizing>();
-    octree->build(sizing, lo, ext, 18, std::max<size_t>(1u << 20, 16 * static_cast<size_t>(mesh.numVertices())));
+    octree->build(sizing, lo, ext, 18, std::max<size_t>(1u << 20, 16 * static_cast<size_t>(mesh.numVertices())),
+                  &domain);
     std::shared_ptr<const OctreeSizing> tree = octree;
     SizingOptions uniformOptions = options.sizing;
     uniformOptions.gradation = 1; // no sized points in the outer field: nothing to grade

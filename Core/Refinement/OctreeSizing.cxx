@@ -22,7 +22,8 @@ struct OctreeSizing::Building
   double cellSize(size_t c) const { return rootSize / static_cast<double>(1u << depth[c]); }
 };
 
-void OctreeSizing::build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells)
+void OctreeSizing::build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells,
+                         const OccupancyPyramid* where)
 {
   std::copy(lo, lo + 3, lo_);
   size_ = size;
@@ -46,7 +47,8 @@ void OctreeSizing::build(const SizingField& field, const double lo[3], double si
     double hmin = b.centreSize[c];
     for (int k = 0; k < 8; ++k)
       hmin = std::min(hmin, static_cast<double>(cells_[c].h[k]));
-    if (b.depth[c] < maxDepth && cs > 1.5 * hmin)
+    const double hi[3] = { b.origin[c][0] + cs, b.origin[c][1] + cs, b.origin[c][2] + cs };
+    if (b.depth[c] < maxDepth && cs > 1.5 * hmin && (!where || where->mayOverlap(b.origin[c].data(), hi)))
       b.queue.push({ cs / hmin, -static_cast<int32_t>(c) });
   };
   queueIfOversized(0);

@@ -9,8 +9,13 @@
 // then the least oversized ones, wherever they are. (Breadth first, a size cap that fills a large far field
 // with cells used up the cap before the boundary's small sizes were reached, and the sizes near a wall
 // were interpolated from far away.) Without the cap, every order splits the same cells.
+//
+// Only cells where the domain is are split (`where`, the boxes of the domain's tets): the cube around a
+// body is mostly outside it, and the surface's small sizes, interpolated there, would otherwise ask for
+// cells that no query reaches (on a dinosaur of 20k tets, more than 100 million).
 #pragma once
 
+#include "OccupancyPyramid.h"
 #include "SizingField.h"
 
 #include <cstddef>
@@ -23,8 +28,10 @@ namespace volgrid
 class OctreeSizing
 {
 public:
-  // Samples `field` over the cube [lo, lo + size]^3, at most maxDepth levels deep and maxCells cells.
-  void build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells);
+  // Samples `field` over the cube [lo, lo + size]^3, at most maxDepth levels deep and maxCells cells,
+  // splitting only cells that `where` may overlap (every cell when null).
+  void build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells,
+             const OccupancyPyramid* where = nullptr);
   // The interpolated size at p (clamped to the cube).
   double evaluate(const double* p) const;
   size_t cells() const { return cells_.size(); }

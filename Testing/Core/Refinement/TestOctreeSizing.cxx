@@ -64,3 +64,31 @@ TEST(OctreeSizing, ACapLeavesTheFarFieldCoarseNotTheSmallSizes)
   const double far[3] = { 0.1, 0.9, 0.2 };
   EXPECT_NEAR(octree.evaluate(far), 0.02, 1e-6);
 }
+
+// Cells outside where the domain is are not split (no query reaches them), and the sizes where it is are
+// the same as without the restriction.
+TEST(OctreeSizing, SplitsOnlyWhereTheDomainIs)
+{
+  const SizingField field = capWithOneFeature();
+  const double lo[3] = { 0, 0, 0 };
+  OctreeSizing everywhere, inDomain;
+  everywhere.build(field, lo, 1.0, 18, size_t(1) << 22);
+  OccupancyPyramid domain; // a slab through the feature, a tenth of the cube, as tiles of a tet's size
+  domain.reset(lo, 1.0, 7);
+  for (double x = 0; x < 1; x += 0.05)
+    for (double y = 0; y < 1; y += 0.05)
+    {
+      const double tileLo[3] = { x, y, 0.45 }, tileHi[3] = { x + 0.05, y + 0.05, 0.55 };
+      domain.addBox(tileLo, tileHi);
+    }
+  inDomain.build(field, lo, 1.0, 18, size_t(1) << 22, &domain);
+  EXPECT_LT(inDomain.cells(), everywhere.cells() * 3 / 4);
+  expectFeatureResolved(inDomain, field);
+  for (double x = 0.01; x < 1; x += 0.0731)
+    for (double y = 0.02; y < 1; y += 0.0617)
+      for (double z = 0.45; z <= 0.55; z += 0.0193)
+      {
+        const double p[3] = { x, y, z };
+        ASSERT_EQ(inDomain.evaluate(p), everywhere.evaluate(p)) << x << " " << y << " " << z;
+      }
+}
