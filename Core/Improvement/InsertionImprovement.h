@@ -10,7 +10,9 @@
 //      (TetEditor::qualityInsertion, cavity holding t) makes the best worst new tet; searched in the local
 //      frame of each face of t (the frame scales with the face: sqrt(area) in-plane and off-plane), from a
 //      grid of starts, then a pattern search from the best two whose steps shrink to 1e-6 of the frame, so
-//      that a point can find room inside a wedge of a degree against a needle triangle.
+//      that a point can find room inside a wedge of a degree against a needle triangle. When steps 2 and 3
+//      fail for a tet with two boundary faces, again from starts a hundred times closer to the faces (two
+//      boundary triangles folded onto each other leave a wedge of a tenth of a degree).
 //   2. Insertion even when w alone does not beat q_t, then local improvement of its neighbourhood: edge
 //      removals and 2-3 flips of the new tets (each a strict local improvement, MeshOptimization.h) and
 //      optimisation-based smoothing (MeshSmoothing.h) of w and of the unlocked vertices of the new tets
