@@ -30,8 +30,8 @@ public:
 private:
   enum : uint8_t
   {
-    kMarked = 1,    // a box was marked on this cell
-    kBelow = 2,     // a box was marked on a descendant
+    kMarked = 1, // a box was marked on this cell
+    kBelow = 2,  // a box was marked on a descendant
   };
   size_t index(int level, int64_t i, int64_t j, int64_t k) const;
   // The finest level where [lo, hi] spans at most two cells per axis, and the range of those cells.
