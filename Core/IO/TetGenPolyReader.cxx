@@ -63,6 +63,11 @@ Status readTetGenNodes(Scanner& sc, const std::vector<std::string_view>& header,
     }
     if (i == 0)
     {
+      // TetGen numbers nodes from 0 or 1 (and base + count must not overflow).
+      if (id != 0 && id != 1)
+      {
+        return sc.error("the first node is numbered " + std::to_string(id) + "; TetGen numbers nodes from 0 or 1");
+      }
       base = id;
     }
     else if (id != base + i)

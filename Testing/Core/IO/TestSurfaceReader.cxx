@@ -267,6 +267,12 @@ TEST(SurfaceReader, TetGenSmeshAndPoly)
   const Status bad = readSurface(writeFile("bad.smesh", nodes + "1 0\n3 1 2 99\n"), m);
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.message.find(":11:"), std::string::npos) << bad.message;
+
+  // Found by fuzz.reader_poly: a node numbered INT64_MAX made the index range overflow (UBSan).
+  const Status huge = readSurface(writeFile("huge.poly", "1\n9223372036854775807 1 2 3\n1 0\n1\n3 1 1 1\n0\n0\n"), m);
+  ASSERT_FALSE(huge.ok());
+  EXPECT_NE(huge.message.find("numbered 9223372036854775807"), std::string::npos) << huge.message;
+  EXPECT_NE(huge.message.find(":2:"), std::string::npos) << huge.message;
 }
 
 TEST(SurfaceReader, GmshV2AndV4)
