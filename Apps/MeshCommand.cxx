@@ -289,9 +289,9 @@ bool writeOutputs(const Arguments& args, volgrid::MeshFormat format, bool vtkOut
   if (!vtkOutput)
     volgrid::cli::moveGeometry(result, solverMesh);
   releaseMeshArrays(result);
-  const bool written =
-    vtkOutput ? write(args.out, volume)
-              : volgrid::cli::writeSolverOutput("mesh", args.out, format, std::move(solverMesh), request, args.json);
+  const bool written = vtkOutput
+    ? write(args.out, volume)
+    : volgrid::cli::writeSolverOutput("mesh", args.out, format, std::move(solverMesh), request, args.json);
   return written && (!boundary || write(args.boundaryOut, boundary));
 }
 
@@ -315,7 +315,8 @@ void printReport(const Arguments& args, const volgrid::MesherStatistics& s, cons
       "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
       "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
       "\"nonortho_severe_faces\": %lld, \"nonortho_severe_before_moves\": %lld, \"nonortho_moves\": %lld, "
-      "\"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": %.6f, "
+      "\"max_edge_floor\": %s, \"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": "
+      "%.6f, "
       "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
       "\"field_points\": %.6f, \"optimization\": %.6f}, "
       "\"seconds\": %.6f, "
@@ -332,7 +333,7 @@ void printReport(const Arguments& args, const volgrid::MesherStatistics& s, cons
       static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
       ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(s.improvement.severeFacesAfter),
       static_cast<long long>(s.improvement.severeFacesBefore), static_cast<long long>(s.improvement.orthogonalityMoves),
-      s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
+      json(s.improvement.coarseBoundaryFloor, "%.6g").c_str(), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
       s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
       s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
   }

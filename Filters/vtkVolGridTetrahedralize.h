@@ -175,7 +175,8 @@ public:
   ///@}
 
   ///@{
-  /** Density: global cap on the target edge length (0 = none). Default: Core's OptionTable.h. */
+  /** Density: cap on the target edge length, graded up to coarser boundary triangles (0 = none). Default: Core's
+   * OptionTable.h. */
   virtual void SetMaxEdgeLength(double value); // clamped to the valid range of Core's OptionTable.h
   vtkGetMacro(MaxEdgeLength, double);
   ///@}

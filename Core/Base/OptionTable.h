@@ -53,7 +53,7 @@ inline constexpr OptionSpec alpha{ "alpha",       "Alpha",             OptionTyp
 inline constexpr OptionSpec beta{ "beta",         "Beta",              OptionType::Real,    0.4,  0,   kInf, true,  false, 0,   1,    "field points, eq. 5: no two points closer than beta*h (0: no minimum spacing)" };
 inline constexpr OptionSpec sizeScale{ "size-scale", "SizeScale",      OptionType::Real,    1,    0,   kInf, false, false, 0.25, 10,  "h at the boundary = size-scale x the boundary's point spacing" };
 inline constexpr OptionSpec gradation{ "gradation", "Gradation",       OptionType::Real,    1.5,  1,   kInf, true,  false, 1,   3,    "size growth between neighbours, h(v) <= h(u) + (gradation-1)|uv| (smaller = finer)" };
-inline constexpr OptionSpec maxEdge{ "max-edge",  "MaxEdgeLength",     OptionType::Real,    0,    0,   kInf, true,  false, 0,   kInf, "global cap on the target edge length (0: no cap)" };
+inline constexpr OptionSpec maxEdge{ "max-edge",  "MaxEdgeLength",     OptionType::Real,    0,    0,   kInf, true,  false, 0,   kInf, "cap on the target edge length; next to boundary triangles coarser than the cap the size grades down from theirs (0: no cap)" };
 inline constexpr OptionSpec maxVolume{ "max-volume", "MaxVolume",      OptionType::Real,    0,    0,   kInf, true,  false, 0,   kInf, "cap on tet volume (0: no cap)" };
 inline constexpr OptionSpec targetAngle{ "target-angle", "TargetMinDihedral", OptionType::Real, 18, 0, 60,  false, true,  1,   60,   "optimisation target for min(dihedral, 180 - max dihedral), degrees" };
 inline constexpr OptionSpec passes{ "passes",     "MaxPasses",         OptionType::Integer, 8,    0,   1000, true,  true,  0,   50,   "optimisation pass limit (0: no optimisation passes)" };

@@ -1,5 +1,7 @@
 #include "DomainSizing.h"
 
+#include "CoarseBoundaryFloor.h"
+#include "DomainThickness.h"
 #include "OctreeSizing.h"
 
 #include <algorithm>
@@ -53,6 +55,36 @@ OccupancyPyramid domainBoxes(const TetMesh& mesh)
     });
   return domain;
 }
+
+// The floor under the size cap (CoarseBoundaryFloor.h), or none when there is no cap, no gradation or no
+// boundary node coarser than the cap (after the depth limit; the depth: DomainThickness.h).
+Status coarseBoundaryFloor(const TetMesh& mesh, const SurfaceMesh& surface, const std::vector<int32_t>& boundaryPoint,
+                           const std::vector<double>& xyz, const std::vector<double>& h, const SizingOptions& sizing,
+                           std::shared_ptr<const CoarseBoundaryFloor>& out)
+{
+  out.reset();
+  const double cap = sizing.maxEdgeLength, slope = sizing.gradation - 1;
+  const size_t nBoundary = boundaryPoint.size();
+  if (!(cap > 0) || !(slope > 0) || nBoundary == 0 ||
+      std::none_of(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(nBoundary), [&](double x) { return x > cap; }))
+    return Status::success();
+  const int32_t nSurface = std::min(surface.numberOfPoints(), mesh.numVertices());
+  const std::vector<double> depth = inwardThickness(mesh, nSurface);
+  std::vector<double> spacing(nBoundary);
+  for (size_t j = 0; j < nBoundary; ++j)
+  {
+    const int32_t i = boundaryPoint[j];
+    const bool same = i < nSurface && std::equal(surface.point(i), surface.point(i) + 3, mesh.point(i));
+    spacing[j] = std::min(h[j], cap + slope * kFloorShareOfDepth * (same ? depth[static_cast<size_t>(i)] : 0.0));
+  }
+  if (std::none_of(spacing.begin(), spacing.end(), [&](double x) { return x > cap; }))
+    return Status::success();
+  auto floor = std::make_shared<CoarseBoundaryFloor>();
+  Status s = floor->build(xyz.data(), spacing.data(), nBoundary, h.size(), slope);
+  if (s.ok())
+    out = floor;
+  return s;
+}
 } // namespace
 
 Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const ImprovementOptions& options,
@@ -77,6 +109,7 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
     const std::vector<double> pdf = pointDistributionFunction(surface.points.data(), surface.numberOfPoints(),
                                                               surface.triangles.data(), surface.numberOfTriangles());
     std::vector<double> xyz, h;
+    std::vector<int32_t> boundaryPoint; // the surface point of each boundary node
     xyz.reserve(surface.points.size());
     h.reserve(pdf.size());
     uint64_t state = 0x9E3779B97F4A7C15ull;
@@ -91,12 +124,14 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
         xyz.push_back(surface.points[3 * static_cast<size_t>(i) + k] + 2e-6 * u * pdf[i]);
       }
       h.push_back(pdf[i] * options.sizing.scale);
+      boundaryPoint.push_back(i);
     }
     // Growth away from the boundary: a jittered lattice of nodes over the bounding box with an
     // unbounded size. The gradation limit (Dijkstra over the background Delaunay edges) then gives each
     // one min over the boundary nodes u of h(u) + (G - 1) * path length, so the size grows away from
     // the boundary at the gradation's rate instead of staying at the boundary spacing inside thick
     // bodies (the plain interpolation of eq. 3's PDF between opposite sides of a body).
+    const size_t nBoundary = h.size();
     if (options.sizing.gradation > 1 && !h.empty())
     {
       double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
@@ -111,7 +146,6 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
       const double cells = std::clamp(std::cbrt(static_cast<double>(h.size()) / 4.0), 2.0, 24.0);
       const double step = ext / cells;
       const double unbounded = 4 * ext + 1;
-      const size_t nBoundary = h.size();
       for (double x = lo[0] + step / 2; x < hi[0]; x += step)
         for (double y = lo[1] + step / 2; y < hi[1]; y += step)
           for (double z = lo[2] + step / 2; z < hi[2]; z += step)
@@ -128,7 +162,27 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
       stats.latticeNodes = static_cast<int64_t>(h.size() - nBoundary);
     }
     sizing.addSizedPoints(xyz.data(), h.data(), h.size());
-    s = sizing.build(nullptr, 0, nullptr, 0, options.sizing, progress);
+    SizingOptions sizingOptions = options.sizing;
+    std::shared_ptr<const CoarseBoundaryFloor> floor;
+    s = coarseBoundaryFloor(mesh, surface, boundaryPoint, xyz, h, options.sizing, floor);
+    if (!s.ok())
+      return s;
+    if (floor)
+    {
+      // The cap holds away from the boundary; next to triangles coarser than it, the size grades down
+      // from their spacing (CoarseBoundaryFloor.h).
+      const double cap = options.sizing.maxEdgeLength;
+      sizing.setUserFunction(
+        [floor, cap, user = options.sizingFunction](const double* p)
+        {
+          const double u = user ? user(p) : std::numeric_limits<double>::infinity();
+          const double capHere = std::max(cap, floor->evaluate(p));
+          return std::isfinite(u) && u > 0 ? std::min(u, capHere) : capHere;
+        });
+      sizingOptions.maxEdgeLength = 0;
+      stats.coarseBoundaryFloor = floor->largestBoundarySize();
+    }
+    s = sizing.build(nullptr, 0, nullptr, 0, sizingOptions, progress);
     if (!s.ok())
       return s;
     // The field points query the octree sampling of this field (see OctreeSizing).
@@ -145,8 +199,8 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
     octree->build(sizing, lo, ext, 18, std::max<size_t>(1u << 20, 16 * static_cast<size_t>(mesh.numVertices())),
                   &domain);
     std::shared_ptr<const OctreeSizing> tree = octree;
-    SizingOptions uniformOptions = options.sizing;
-    uniformOptions.gradation = 1; // no sized points in the outer field: nothing to grade
+    SizingOptions uniformOptions = sizingOptions; // the cap (or none, when the floor took it over)
+    uniformOptions.gradation = 1;                 // no sized points in the outer field: nothing to grade
     fast.setUserFunction([tree](const double* p) { return tree->evaluate(p); });
     s = fast.buildUniform(std::numeric_limits<double>::max(), uniformOptions);
     if (!s.ok())

@@ -6,6 +6,7 @@
 #include "MeshChecker.h"
 #include "MeshImprovement.h"
 #include "Mesher.h"
+#include "SizeRatio.h"
 #include "SurfaceReader.h"
 
 #include <gtest/gtest.h>
@@ -370,6 +371,82 @@ TEST(MeshImprovement, SphereInSphereDefaultsReach15DegreesWithTheExactBoundary)
   TetMesh m0;
   ASSERT_TRUE(tetMeshFromTets(r0.points, r0.tets, m0).ok());
   EXPECT_LT(summarizeDihedrals(m0).minDihedral, d.minDihedral);
+}
+
+// A cap on the size below the spacing of a coarse far field (CoarseBoundaryFloor.h): the cap holds inside,
+// and next to the far field's triangles the size grades down from theirs, so that the tets on them are not
+// flat caps over interior points a cap's length away, and the size grows from the cap to the far field at
+// the gradation's rate instead of jumping there. Far field r = 10 with edges of 2.5, body r = 1, cap 0.8.
+TEST(MeshImprovement, ACapBelowACoarseFarFieldGradesUpToItsTriangles)
+{
+  const SurfaceMesh s =
+    combine(enclosure(EnclosureShape::Sphere, 10.0, 2.5), enclosure(EnclosureShape::Sphere, 1.0, 1.0515 / 7.9));
+  MesherOptions o;
+  o.improvement.sizing.maxEdgeLength = 0.8;
+  const MesherResult r = meshChecked(s, o, "capped sphere in sphere");
+  // The far field's spacing (2.5) counts as far as a quarter of the depth (9 to the body) lets it:
+  // 0.8 + 0.5 * 9 / 4 = 1.9.
+  EXPECT_GT(r.stats.improvement.coarseBoundaryFloor, 1.5);
+  EXPECT_LT(r.stats.improvement.coarseBoundaryFloor, 2.5);
+  // The cap inside: edges between r = 2 and r = 6 are 0.8 long on average, within 25%.
+  auto radius = [](const double* p) { return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]); };
+  const double inside = meanEdge(r, [&](const double* p) { return radius(p) > 2 && radius(p) < 6; });
+  EXPECT_GT(inside, 0.8 * 0.75);
+  EXPECT_LT(inside, 0.8 * 1.25);
+  // At the far field: tets with a face on it (three vertices at r = 10, as the input's are) are not flat.
+  TetMesh m;
+  ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, m).ok());
+  int64_t onFarField = 0, flatOnFarField = 0;
+  double worstOnFarField = 90;
+  m.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = m.vertices(t);
+      int outer = 0;
+      for (int i = 0; i < 4; ++i)
+        outer += v[i] < r.numInputPoints && radius(m.point(v[i])) > 9;
+      if (outer < 3)
+        return;
+      const double q = sineQualityToDegrees(tetSineQuality(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])));
+      ++onFarField;
+      flatOnFarField += q < 18;
+      worstOnFarField = std::min(worstOnFarField, q);
+    });
+  const SizeRatioSummary ratio = summarizeSizeRatios(m, 1.5);
+  std::printf("capped far field: %zu tets, mean edge inside %.3f, %lld tets on the far field, %lld under 18 deg, "
+              "worst %.2f deg; mesh min %.2f; size ratio p99 %.3f max %.3f, above 1.5: %lld\n",
+              r.tets.size() / 4, inside, static_cast<long long>(onFarField), static_cast<long long>(flatOnFarField),
+              worstOnFarField, dihedralsOf(r).minDihedral, ratio.p99, ratio.max, (long long)ratio.aboveThreshold);
+  EXPECT_GT(onFarField, 100);
+  EXPECT_LE(flatOnFarField, onFarField / 50);
+  EXPECT_GE(dihedralsOf(r).minDihedral, 10.0);
+  // The sizes follow the gradation (1.5) from the far field's triangles to the cap: face neighbours' size
+  // ratios above it are rare. Capped right at the far field (before the floor), 1,608 of the faces were
+  // above 1.5 and the 99th percentile was 1.51; now 65 and 1.34.
+  EXPECT_LE(ratio.p99, 1.5);
+  EXPECT_LE(ratio.aboveThreshold, ratio.faces / 200);
+}
+
+// A box of twelve triangles is as deep as its triangles are wide: the floor reaches a quarter of its depth
+// in (at most 0.25 + 0.5 * depth / 4: 0.5 at a face's centre, 0.68 at a corner, whose depth runs along
+// the diagonal), and the cap holds in the middle.
+TEST(MeshImprovement, ACapInsideABoxOfTwelveTrianglesHolds)
+{
+  const SurfaceMesh box = enclosure(EnclosureShape::Box, 2.0, 10.0);
+  ASSERT_EQ(box.numberOfTriangles(), 12);
+  MesherOptions o;
+  o.improvement.sizing.maxEdgeLength = 0.25;
+  const MesherResult r = meshChecked(box, o, "box of twelve triangles, capped");
+  EXPECT_GT(r.stats.improvement.coarseBoundaryFloor, 0.25);
+  EXPECT_LE(r.stats.improvement.coarseBoundaryFloor, 0.25 + 0.5 * 2 * std::sqrt(3.0) / 4 + 1e-9); // a corner
+  int64_t edges = 0;
+  const double middle = meanEdge(
+    r, [](const double* p) { return std::fabs(p[0]) < 0.4 && std::fabs(p[1]) < 0.4 && std::fabs(p[2]) < 0.4; }, &edges);
+  std::printf("box: %zu tets, mean edge in the middle %.3f (%lld edges)\n", r.tets.size() / 4, middle,
+              static_cast<long long>(edges));
+  EXPECT_GT(edges, 100);
+  EXPECT_GT(middle, 0.25 * 0.75);
+  EXPECT_LT(middle, 0.25 * 1.25);
 }
 
 // From OptimizationOptions::largeMeshTets on, the stage works in memory order (spatial renumbering, flips by
