@@ -1,5 +1,7 @@
 #include "SizeEstimate.h"
 
+#include "CoarseBoundaryFloor.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -37,6 +39,19 @@ double inverseCubeIntegral(double h0, double g, double cap, double depth)
   const double graded = std::min(depth, reach);
   const double hEnd = h0 + g * graded;
   double sum = (1.0 / (h0 * h0) - 1.0 / (hEnd * hEnd)) / (2.0 * g);
+  if (depth > reach)
+    sum += (depth - reach) / (cap * cap * cap);
+  return sum;
+}
+
+// Integral over depth 0..D of 1/h(d)^3 with h(d) = max(cap, s0 - g d), s0 > cap: a size cap below the
+// boundary's spacing s0 is met only from (s0 - cap) / g in (CoarseBoundaryFloor.h).
+double flooredInverseCubeIntegral(double s0, double g, double cap, double depth)
+{
+  const double reach = (s0 - cap) / g;
+  const double graded = std::min(depth, reach);
+  const double hEnd = s0 - g * graded;
+  double sum = (1.0 / (hEnd * hEnd) - 1.0 / (s0 * s0)) / (2.0 * g);
   if (depth > reach)
     sum += (depth - reach) / (cap * cap * cap);
   return sum;
@@ -84,7 +99,8 @@ SizeEstimate estimateMeshSize(const SurfaceMesh& surface, const ImprovementOptio
     return finish(4.0 * triangles, SizeDriver::SurfaceSpacing);
   const FieldPointOptions& f = o.fieldPointOptions;
   const double volumeCap = f.maxVolume > 0 ? std::cbrt(f.maxVolume * 6.0 * std::sqrt(2.0)) : kInfinity;
-  const double cap = std::min(o.sizing.maxEdgeLength > 0 ? o.sizing.maxEdgeLength : kInfinity, volumeCap);
+  const double edgeCap = o.sizing.maxEdgeLength > 0 ? o.sizing.maxEdgeLength : kInfinity;
+  const double cap = std::min(edgeCap, volumeCap);
   const double g = o.sizing.gradation > 1 ? o.sizing.gradation - 1 : 0;
   double area = 0;
   for (int32_t t = 0; t < surface.numberOfTriangles(); ++t)
@@ -102,8 +118,12 @@ SizeEstimate estimateMeshSize(const SurfaceMesh& surface, const ImprovementOptio
     const double* b = surface.point(v[1]);
     const double* c = surface.point(v[2]);
     const double spacing = (length(a, b) + length(b, c) + length(c, a)) / 3.0;
-    const double h0 = std::min(spacing * o.sizing.scale, cap);
-    if (h0 > 0 && std::isfinite(h0))
+    // The cap's floor next to coarse triangles, with its depth limit (CoarseBoundaryFloor.h).
+    const double s0 = std::min(spacing * o.sizing.scale, edgeCap + g * kFloorShareOfDepth * depth);
+    const double h0 = std::min(s0, cap);
+    if (g > 0 && s0 > cap && cap == edgeCap && std::isfinite(s0))
+      perVolume += triangleArea(a, b, c) * flooredInverseCubeIntegral(s0, g, cap, depth);
+    else if (h0 > 0 && std::isfinite(h0))
       perVolume += triangleArea(a, b, c) * inverseCubeIntegral(h0, g, cap, depth);
   }
   const double alphaFactor = std::pow(std::max(0.75 / f.alpha, 1.0), 3.0);
