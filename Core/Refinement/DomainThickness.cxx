@@ -46,6 +46,20 @@ void starOf(const TetMesh& mesh, int32_t v, int32_t t0, std::vector<int32_t>& st
   }
 }
 
+// Where the ray s + lambda dir crosses the plane of face `face` of t going out of t: lambda, or NaN when
+// the ray does not go out through that plane.
+double crossing(const TetMesh& mesh, int32_t t, int face, const double* s, const double* dir)
+{
+  double n[3];
+  const double* on;
+  outwardNormal(mesh, t, face, n, &on);
+  const double towards = dot(n, dir);
+  if (!(towards > 0))
+    return NAN;
+  const double d[3] = { on[0] - s[0], on[1] - s[1], on[2] - s[2] };
+  return dot(n, d) / towards;
+}
+
 // The ray from s along dir, through the tets from `t` (entered through its face `entry`) until a face
 // without a neighbour: the distance to it, 0 when the walk gets lost.
 double walk(const TetMesh& mesh, const double* s, const double* dir, int32_t t, int entry)
@@ -56,16 +70,7 @@ double walk(const TetMesh& mesh, const double* s, const double* dir, int32_t t, 
     double best = INFINITY;
     for (int i = 0; i < 4; ++i)
     {
-      if (i == entry)
-        continue;
-      double n[3];
-      const double* on;
-      outwardNormal(mesh, t, i, n, &on);
-      const double towards = dot(n, dir);
-      if (!(towards > 0))
-        continue;
-      const double d[3] = { on[0] - s[0], on[1] - s[1], on[2] - s[2] };
-      const double lambda = dot(n, d) / towards;
+      const double lambda = i == entry ? NAN : crossing(mesh, t, i, s, dir);
       if (lambda < best)
       {
         best = lambda;
@@ -164,12 +169,8 @@ std::vector<double> inwardThickness(const TetMesh& mesh, int32_t count)
       thickness[v] = walk(mesh, s, dir, next, mesh.mirrorFace(first, li));
     else
     {
-      double n[3];
-      const double* on;
-      outwardNormal(mesh, first, li, n, &on);
-      const double d[3] = { on[0] - s[0], on[1] - s[1], on[2] - s[2] };
-      const double towards = dot(n, dir);
-      thickness[v] = towards > 0 ? std::max(0.0, dot(n, d) / towards) : 0.0;
+      const double lambda = crossing(mesh, first, li, s, dir);
+      thickness[v] = lambda > 0 ? lambda : 0.0;
     }
   }
   return thickness;
