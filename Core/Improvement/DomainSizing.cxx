@@ -201,7 +201,7 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
     std::shared_ptr<const OctreeSizing> tree = octree;
     SizingOptions uniformOptions = sizingOptions; // the cap (or none, when the floor took it over)
     uniformOptions.gradation = 1;                 // no sized points in the outer field: nothing to grade
-    fast.setUserFunction([tree](const double* p) { return tree->evaluate(p); });
+    fast.setUserFunction([tree](const double* p) { return tree->evaluate(p); }, /*threadSafe=*/true);
     s = fast.buildUniform(std::numeric_limits<double>::max(), uniformOptions);
     if (!s.ok())
       return s;

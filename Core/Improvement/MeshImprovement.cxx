@@ -159,7 +159,10 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     if (options.fieldPoints)
     {
       const int32_t firstFieldPoint = mesh.numVertices();
-      s = insertFieldPoints(mesh, fast, options.fieldPointOptions, &fc, &tetRegion, nullptr, progress, &fr);
+      FieldPointOptions fieldPointOptions = options.fieldPointOptions;
+      fieldPointOptions.threads = options.threads;
+      fieldPointOptions.largeMeshTets = options.optimization.largeMeshTets;
+      s = insertFieldPoints(mesh, fast, fieldPointOptions, &fc, &tetRegion, nullptr, progress, &fr);
       if (!s.ok())
         return s;
       stats.fieldPoints = fr.inserted;

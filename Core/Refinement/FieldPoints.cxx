@@ -1,6 +1,7 @@
 #include "FieldPoints.h"
 
 #include "LargeMesh.h"
+#include "ParallelFor.h"
 #include "SpatialSort.h"
 
 #include <algorithm>
@@ -50,6 +51,70 @@ void sortAlongHilbertCurve(const TetMesh& mesh, std::vector<int32_t>& tets)
     sorted[i] = tets[static_cast<size_t>(order[i])];
   tets.swap(sorted);
 }
+
+// The size at tet t's centroid when t asks for a point there (eq. 4, or t is larger than the volume cap),
+// else 0.
+double sizeWhereAPointIsWanted(const TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options,
+                               double hVol, int32_t t)
+{
+  const int32_t* v = mesh.vertices(t);
+  const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]), *d = mesh.point(v[3]);
+  const double cen[3] = { (a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
+                          (a[2] + b[2] + c[2] + d[2]) / 4 };
+  double h = sizing.evaluate(cen);
+  if (hVol > 0)
+    h = std::min(h, hVol);
+  if (!(h > 0) || !std::isfinite(h))
+    return 0;
+  const double dm = std::min(std::min(dist(cen, a), dist(cen, b)), std::min(dist(cen, c), dist(cen, d)));
+  const bool big = options.maxVolume > 0 && volume(a, b, c, d) > options.maxVolume;
+  return dm > options.alpha * h || big ? h : 0;
+}
+
+// sizeWhereAPointIsWanted for every tet of a pass, before its first insertion. A tet the pass reaches
+// still alive and not born in the pass is unchanged since, so the answers are those the pass would get;
+// they depend on nothing else, so the tets are split across threads when the field allows.
+void testTets(const TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options, double hVol,
+              const std::vector<int32_t>& todo, std::vector<double>& wanted)
+{
+  wanted.assign(todo.size(), 0.0);
+  const int threads = sizing.evaluatesConcurrently() ? options.threads : 1;
+  parallelFor(threads, static_cast<int64_t>(todo.size()), 8192,
+              [&](int, int64_t begin, int64_t end)
+              {
+                for (int64_t k = begin; k < end; ++k)
+                  wanted[static_cast<size_t>(k)] = sizeWhereAPointIsWanted(mesh, sizing, options, hVol, todo[k]);
+              });
+}
+
+// The next pass's tets: those born in `pass` and still alive, each once (a slot created, destroyed and
+// reused in the pass is listed twice). Few: in slot order, as a sweep of the mesh would list them. From
+// largeMeshTets: in the order the insertions created them, which follows the insertions through space
+// (along the Hilbert curve from the first pass on), so that consecutive insertions work in the same part
+// of the mesh without sorting the tets again.
+void tetsBornIn(const TetMesh& mesh, std::vector<int32_t>& birth, int pass, int64_t largeMeshTets,
+                std::vector<int32_t>& created, std::vector<int32_t>& todo)
+{
+  todo.clear();
+  if (static_cast<int64_t>(created.size()) < largeMeshTets)
+  {
+    std::sort(created.begin(), created.end());
+    created.erase(std::unique(created.begin(), created.end()), created.end());
+    for (int32_t t : created)
+      if (!mesh.isFree(t) && birth[t] == pass)
+        todo.push_back(t);
+    return;
+  }
+  constexpr int32_t kListed = -2; // a birth no pass has: the tet is in todo already
+  for (int32_t t : created)
+    if (!mesh.isFree(t) && birth[t] == pass)
+    {
+      todo.push_back(t);
+      birth[t] = kListed;
+    }
+  for (int32_t t : todo)
+    birth[t] = pass;
+}
 } // namespace
 
 Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options,
@@ -68,47 +133,36 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
   TetEditor editor(mesh, constraints, labels);
   // h cap from maxVolume: edge of the regular tet of that volume, V = L^3 / (6 sqrt 2).
   const double hVol = options.maxVolume > 0 ? std::cbrt(options.maxVolume * 6.0 * std::sqrt(2.0)) : 0;
-  std::vector<int32_t> birth(static_cast<size_t>(mesh.tetCapacity()), 0), created, todo;
+  std::vector<int32_t> birth(static_cast<size_t>(mesh.tetCapacity()), 0), created, todo, bornThisPass;
+  std::vector<double> wanted;
+  mesh.forEachTet([&](int32_t t) { todo.push_back(t); }); // the first pass examines every tet
   int64_t total = 0;
   for (int pass = 1; pass <= options.maxPasses; ++pass)
   {
-    // Tets to examine: those created by the previous pass (all tets in the first).
-    todo.clear();
-    mesh.forEachTet(
-      [&](int32_t t)
-      {
-        if (birth[t] == pass - 1)
-          todo.push_back(t);
-      });
-    // Many tets to examine (LargeMesh.h): along the Hilbert curve, so that consecutive insertions work in the
-    // same part of the mesh, whose tets are still in the caches (slot order jumps across the domain).
-    if (static_cast<int64_t>(todo.size()) >= kLargeMeshTets)
+    // Many tets in the first pass (largeMeshTets): along the Hilbert curve, so that consecutive insertions work
+    // in the same part of the mesh, whose tets are still in the caches (slot order jumps across the domain).
+    // The later passes keep that order (tetsBornIn).
+    if (pass == 1 && static_cast<int64_t>(todo.size()) >= options.largeMeshTets)
       sortAlongHilbertCurve(mesh, todo);
+    testTets(mesh, sizing, options, hVol, todo, wanted);
+    bornThisPass.clear();
     int64_t insertedThisPass = 0;
-    size_t k = 0;
-    for (int32_t t : todo)
+    for (size_t k = 0; k < todo.size(); ++k)
     {
-      if ((++k & 4095) == 0 && progress)
+      if (((k + 1) & 4095) == 0 && progress)
       {
         if (progress->cancelled())
           return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
-        progress->report(std::min(1.0, (pass - 1 + double(k) / todo.size()) / 8.0), "Creating field points");
+        progress->report(std::min(1.0, (pass - 1 + double(k + 1) / todo.size()) / 8.0), "Creating field points");
       }
-      if (mesh.isFree(t) || birth[t] != pass - 1)
-        continue; // destroyed (or its slot reused) by an insertion of this pass
+      const int32_t t = todo[k];
+      const double h = wanted[k];
+      if (!(h > 0) || mesh.isFree(t) || birth[t] != pass - 1)
+        continue; // no point wanted, or destroyed (or its slot reused) by an insertion of this pass
       const int32_t* v = mesh.vertices(t);
       const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]), *d = mesh.point(v[3]);
       const double cen[3] = { (a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
                               (a[2] + b[2] + c[2] + d[2]) / 4 };
-      double h = sizing.evaluate(cen);
-      if (hVol > 0)
-        h = std::min(h, hVol);
-      if (!(h > 0) || !std::isfinite(h))
-        continue;
-      const double dm = std::min(std::min(dist(cen, a), dist(cen, b)), std::min(dist(cen, c), dist(cen, d)));
-      const bool big = options.maxVolume > 0 && volume(a, b, c, d) > options.maxVolume;
-      if (!(dm > options.alpha * h) && !big)
-        continue;
       ++report.candidates;
       if (inside && !inside(cen))
       {
@@ -127,6 +181,7 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
         birth.resize(static_cast<size_t>(mesh.tetCapacity()) + 1024, -1);
       for (int32_t u : created)
         birth[u] = pass;
+      bornThisPass.insert(bornThisPass.end(), created.begin(), created.end());
       ++insertedThisPass;
       ++total;
       if (options.maxPoints >= 0 && total >= options.maxPoints)
@@ -137,6 +192,7 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
     report.inserted += insertedThisPass;
     if (insertedThisPass == 0 || (options.maxPoints >= 0 && total >= options.maxPoints))
       break;
+    tetsBornIn(mesh, birth, pass, options.largeMeshTets, bornThisPass, todo);
   }
   if (progress)
     progress->report(1.0, "Creating field points");

@@ -9,9 +9,11 @@
 //          and the test is exact without a separate search structure: the nearest vertex to c is a vertex
 //          of c's Bowyer-Watson cavity (in a Delaunay mesh, c's nearest neighbour becomes connected to c),
 //          and the cavity is computed anyway to insert c.
-// Repeated until a pass inserts nothing (or maxPasses / maxPoints). alpha controls the density (smaller:
-// more points); beta the regularity (no two points closer than beta * h). The defaults (OptionTable.h, the
-// same for meshing and refinement) give mean volume edge lengths close to h for well-shaped boundary triangles.
+// Repeated until a pass inserts nothing (or maxPasses / maxPoints). A pass's tets are those the previous
+// pass's insertions created, not a sweep of the mesh: the work is proportional to the points inserted.
+// alpha controls the density (smaller: more points); beta the regularity (no two points closer than
+// beta * h). The defaults (OptionTable.h, the same for meshing and refinement) give mean volume edge
+// lengths close to h for well-shaped boundary triangles.
 //
 // WHEN (documented choice): after boundary recovery and exterior removal (and Steiner removal), on the
 // ghost-free mesh of the domain. The domain is then known exactly: every tet is inside, and insertion
@@ -24,6 +26,7 @@
 // recovery extra Steiner points, which is why the mesher should prefer the order above.
 #pragma once
 
+#include "LargeMesh.h"
 #include "OptionTable.h"
 #include "Progress.h"
 #include "SizingField.h"
@@ -47,6 +50,13 @@ struct FieldPointOptions
   // Global cap on tet volume (0 = none): h is capped at the edge of the regular tet of that volume, and
   // tets larger than maxVolume skip the eq. 4 test (eq. 5 still applies).
   double maxVolume = 0;
+  // The tets of a pass are tested against eq. 4 on this many threads (ParallelFor.h's rule) when the
+  // sizing field can be evaluated concurrently (SizingField::evaluatesConcurrently), else on one. The
+  // points are inserted one after the other, in the same order for any count: the mesh is the same.
+  int threads = 1;
+  // From this many tets in a pass (LargeMesh.h), the order of the tets follows space instead of the slots
+  // (FieldPoints.cxx, tetsBornIn). Tests set it low to reach that order on small meshes.
+  int64_t largeMeshTets = kLargeMeshTets;
 };
 
 struct FieldPointReport

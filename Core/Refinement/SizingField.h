@@ -18,7 +18,9 @@
 // The user sizes are not graded between nodes (only at the nodes): a user field is taken as given.
 //
 // evaluate() walks the background mesh from the last query (spatially coherent queries are cheap); it is
-// therefore not thread-safe: use one SizingField (or copy) per thread.
+// therefore not thread-safe: use one SizingField (or copy) per thread. The exception, which
+// evaluatesConcurrently() tells: a uniform field whose only user input is a function declared thread-safe
+// (e.g. an OctreeSizing lookup, DomainSizing.h).
 #pragma once
 
 #include "OptionTable.h"
@@ -86,7 +88,12 @@ public:
   using Function = std::function<double(const double* xyz)>;
 
   // Optional user inputs; set them before build().
-  void setUserFunction(Function f) { user_ = std::move(f); }
+  // threadSafe: f may be called from several threads at once (see evaluatesConcurrently()).
+  void setUserFunction(Function f, bool threadSafe = false)
+  {
+    user_ = std::move(f);
+    userThreadSafe_ = threadSafe;
+  }
   // Background cloud of sizes (copied). Non-finite or non-positive sizes are ignored.
   void setBackgroundCloud(const double* xyz, const double* sizes, size_t n);
   // Extra sized nodes (clustering points with a target size). Non-finite or non-positive sizes ignored.
@@ -102,6 +109,12 @@ public:
 
   double evaluate(const double* p) const;
   double operator()(const double* p) const { return evaluate(p); }
+  // Whether evaluate() may be called from several threads at once: no interpolant walks (no graded
+  // nodes, no background cloud) and no user function other than a thread-safe one.
+  bool evaluatesConcurrently() const
+  {
+    return graded_.empty() && cloud_.empty() && (!user_ || userThreadSafe_);
+  }
 
   // The graded interpolant (nodes = boundary points + sized points) and the options used.
   const LinearInterpolant& nodes() const { return graded_; }
@@ -114,6 +127,7 @@ private:
   double userSize(const double* p) const;
   SizingOptions options_;
   Function user_;
+  bool userThreadSafe_ = false;
   std::vector<double> cloudXYZ_, cloudSize_;
   std::vector<double> extraXYZ_, extraSize_;
   LinearInterpolant cloud_;

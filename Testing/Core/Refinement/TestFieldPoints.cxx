@@ -340,3 +340,56 @@ TEST(FieldPoints, AdaptivityRefinesWhereTheTargetIsSmaller)
   const MeshCheckReport check = checkMesh(d.mesh);
   EXPECT_TRUE(check.valid) << check.summary();
 }
+
+// Whether a field may be evaluated from several threads: only a uniform one whose user function is
+// declared thread-safe (the octree lookup the mesher uses), never one that walks an interpolant.
+TEST(FieldPoints, OnlyAThreadSafeFieldIsEvaluatedConcurrently)
+{
+  Domain d;
+  makeDomain(d, EnclosureShape::Box, 0.1);
+  EXPECT_FALSE(d.sizing.evaluatesConcurrently()); // graded boundary nodes
+  SizingField uniform;
+  uniform.setUserFunction([](const double* p) { return 0.05 + 0.01 * p[0]; });
+  ASSERT_TRUE(uniform.buildUniform(1e300, SizingOptions()).ok());
+  EXPECT_FALSE(uniform.evaluatesConcurrently()); // a function not declared thread-safe
+  uniform.setUserFunction([](const double* p) { return 0.05 + 0.01 * p[0]; }, /*threadSafe=*/true);
+  EXPECT_TRUE(uniform.evaluatesConcurrently());
+}
+
+// The tets of a pass are tested on several threads, and from largeMeshTets (lowered here, so that this
+// small mesh reaches it) the passes take their tets in the order the insertions created them: the points
+// and tets are the same, bit for bit, on any thread count, and the mesh is a valid Delaunay mesh.
+TEST(FieldPoints, SameMeshOnAnyThreadCount)
+{
+  Domain base;
+  makeDomain(base, EnclosureShape::Box, 0.1);
+  SizingField sizing;
+  sizing.setUserFunction([](const double* p) { return 0.032 + 0.02 * (p[0] + 0.5); }, /*threadSafe=*/true);
+  ASSERT_TRUE(sizing.buildUniform(1e300, SizingOptions()).ok());
+  const auto boundary = hullFaces(base.mesh);
+  TetMesh reference;
+  for (const int threads : { 1, 2, 8 })
+  {
+    TetMesh mesh = base.mesh;
+    FieldPointOptions o;
+    o.threads = threads;
+    o.largeMeshTets = 20000;
+    FieldPointReport report;
+    ASSERT_TRUE(insertFieldPoints(mesh, sizing, o, nullptr, nullptr, nullptr, nullptr, &report).ok());
+    const MeshCheckReport check = checkMesh(mesh); // still Delaunay: insertion is Bowyer-Watson
+    EXPECT_TRUE(check.valid) << threads << ": " << check.summary();
+    EXPECT_EQ(hullFaces(mesh), boundary) << threads;
+    if (threads == 1)
+    {
+      // A pass that creates more than largeMeshTets tets (at least 20 a point), so that the next one
+      // takes them in creation order and splits them across threads (from 2 x 8192 tets).
+      const int64_t most = *std::max_element(report.insertedPerPass.begin(), report.insertedPerPass.end());
+      ASSERT_GT(most * 20, 20000);
+      reference = mesh;
+      continue;
+    }
+    EXPECT_EQ(mesh.points, reference.points) << threads;
+    EXPECT_EQ(mesh.tetVertices, reference.tetVertices) << threads;
+    EXPECT_EQ(mesh.tetNeighbors, reference.tetNeighbors) << threads;
+  }
+}
