@@ -14,6 +14,8 @@ namespace volgrid
 
 namespace
 {
+constexpr size_t kTestBlock = 32768; // tets tested ahead of the insertions (testTets)
+
 inline double dist(const double* a, const double* b)
 {
   const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
@@ -71,19 +73,20 @@ double sizeWhereAPointIsWanted(const TetMesh& mesh, const SizingField& sizing, c
   return dm > options.alpha * h || big ? h : 0;
 }
 
-// sizeWhereAPointIsWanted for every tet of a pass, before its first insertion. A tet the pass reaches
-// still alive and not born in the pass is unchanged since, so the answers are those the pass would get;
-// they depend on nothing else, so the tets are split across threads when the field allows.
+// sizeWhereAPointIsWanted for the tets todo[begin, end) of a pass, ahead of the insertions among them. A
+// tet the pass reaches alive and not born in the pass is unchanged since the pass began, so the answers are
+// those the pass would get; they depend on nothing else, so the tets are split across threads when the
+// field allows. (A block at a time: the insertions that follow find its tets still in the caches.)
 void testTets(const TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options, double hVol,
-              const std::vector<int32_t>& todo, std::vector<double>& wanted)
+              const std::vector<int32_t>& todo, size_t begin, size_t end, std::vector<double>& wanted)
 {
-  wanted.assign(todo.size(), 0.0);
+  wanted.resize(todo.size());
   const int threads = sizing.evaluatesConcurrently() ? options.threads : 1;
-  parallelFor(threads, static_cast<int64_t>(todo.size()), 8192,
-              [&](int, int64_t begin, int64_t end)
+  parallelFor(threads, static_cast<int64_t>(end - begin), 8192,
+              [&](int, int64_t from, int64_t to)
               {
-                for (int64_t k = begin; k < end; ++k)
-                  wanted[static_cast<size_t>(k)] = sizeWhereAPointIsWanted(mesh, sizing, options, hVol, todo[k]);
+                for (size_t k = begin + static_cast<size_t>(from); k < begin + static_cast<size_t>(to); ++k)
+                  wanted[k] = sizeWhereAPointIsWanted(mesh, sizing, options, hVol, todo[k]);
               });
 }
 
@@ -144,11 +147,17 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
     // The later passes keep that order (tetsBornIn).
     if (pass == 1 && static_cast<int64_t>(todo.size()) >= options.largeMeshTets)
       sortAlongHilbertCurve(mesh, todo);
-    testTets(mesh, sizing, options, hVol, todo, wanted);
     bornThisPass.clear();
     int64_t insertedThisPass = 0;
-    for (size_t k = 0; k < todo.size(); ++k)
+    for (size_t k = 0, tested = 0; k < todo.size(); ++k)
     {
+      if (k == tested)
+      {
+        if (progress && progress->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
+        tested = std::min(todo.size(), k + kTestBlock);
+        testTets(mesh, sizing, options, hVol, todo, k, tested, wanted);
+      }
       if (((k + 1) & 4095) == 0 && progress)
       {
         if (progress->cancelled())
