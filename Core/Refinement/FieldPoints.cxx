@@ -54,6 +54,13 @@ void sortAlongHilbertCurve(const TetMesh& mesh, std::vector<int32_t>& tets)
   tets.swap(sorted);
 }
 
+// Whether tet t is alive and was born before `pass` (in the previous pass, or listed in the first): a tet the
+// pass destroyed, or whose slot it reused, is not.
+bool unchangedSincePassBegan(const TetMesh& mesh, const std::vector<int32_t>& birth, int pass, int32_t t)
+{
+  return !mesh.isFree(t) && birth[static_cast<size_t>(t)] == pass - 1;
+}
+
 // The size at tet t's centroid when t asks for a point there (eq. 4, or t is larger than the volume cap),
 // else 0.
 double sizeWhereAPointIsWanted(const TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options,
@@ -73,12 +80,14 @@ double sizeWhereAPointIsWanted(const TetMesh& mesh, const SizingField& sizing, c
   return dm > options.alpha * h || big ? h : 0;
 }
 
-// sizeWhereAPointIsWanted for the tets todo[begin, end) of a pass, ahead of the insertions among them. A
+// sizeWhereAPointIsWanted for the tets todo[begin, end) of pass `pass`, ahead of the insertions among them. A
 // tet the pass reaches alive and not born in the pass is unchanged since the pass began, so the answers are
 // those the pass would get; they depend on nothing else, so the tets are split across threads when the
-// field allows. (A block at a time: the insertions that follow find its tets still in the caches.)
+// field allows. (A block at a time: the insertions that follow find its tets still in the caches.) Tets
+// that earlier insertions of the pass already destroyed are skipped: the pass skips them too.
 void testTets(const TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options, double hVol,
-              const std::vector<int32_t>& todo, size_t begin, size_t end, std::vector<double>& wanted)
+              const std::vector<int32_t>& birth, int pass, const std::vector<int32_t>& todo, size_t begin,
+              size_t end, std::vector<double>& wanted)
 {
   wanted.resize(todo.size());
   const int threads = sizing.evaluatesConcurrently() ? options.threads : 1;
@@ -86,7 +95,12 @@ void testTets(const TetMesh& mesh, const SizingField& sizing, const FieldPointOp
               [&](int, int64_t from, int64_t to)
               {
                 for (size_t k = begin + static_cast<size_t>(from); k < begin + static_cast<size_t>(to); ++k)
-                  wanted[k] = sizeWhereAPointIsWanted(mesh, sizing, options, hVol, todo[k]);
+                {
+                  const int32_t t = todo[k];
+                  wanted[k] = unchangedSincePassBegan(mesh, birth, pass, t)
+                                ? sizeWhereAPointIsWanted(mesh, sizing, options, hVol, t)
+                                : 0;
+                }
               });
 }
 
@@ -156,7 +170,7 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
         if (progress && progress->cancelled())
           return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
         tested = std::min(todo.size(), k + kTestBlock);
-        testTets(mesh, sizing, options, hVol, todo, k, tested, wanted);
+        testTets(mesh, sizing, options, hVol, birth, pass, todo, k, tested, wanted);
       }
       if (((k + 1) & 4095) == 0 && progress)
       {
@@ -166,7 +180,7 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
       }
       const int32_t t = todo[k];
       const double h = wanted[k];
-      if (!(h > 0) || mesh.isFree(t) || birth[t] != pass - 1)
+      if (!(h > 0) || !unchangedSincePassBegan(mesh, birth, pass, t))
         continue; // no point wanted, or destroyed (or its slot reused) by an insertion of this pass
       const int32_t* v = mesh.vertices(t);
       const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]), *d = mesh.point(v[3]);
