@@ -283,6 +283,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
   auto isLocked = [&](int32_t x) { return static_cast<size_t>(x) < locked.size() && locked[x] != 0; };
   int64_t inserted = 0;
   std::vector<Point> cand;
+  std::vector<int32_t> created;
   size_t tried = 0;
   for (const auto& b : collectBadTets(mesh, qT, request.below, request.skip))
   {
@@ -312,9 +313,11 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     {
       std::copy(search.at.begin(), search.at.end(), search.x);
       const int32_t start = editor.locate(search.x, t);
-      if (start >= 0 && editor.qualityInsertion(nv, start, t, nullptr, true) > -3) // inserted
+      if (start >= 0 && editor.qualityInsertion(nv, start, t, nullptr, true, &created) > -3) // inserted
       {
         ++inserted;
+        if (request.created)
+          request.created->insert(request.created->end(), created.begin(), created.end());
         continue;
       }
     }

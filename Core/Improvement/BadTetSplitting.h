@@ -41,7 +41,10 @@ struct SplitRequest
   int threads = 1;
   // Optional: asked every 64 bad tets whether to stop (the points inserted so far stay; the caller reports
   // the cancellation).
-  Progress* progress = nullptr;
+  Progress* progress = nullptr;  // Optional: receives (appended) the slots of the tets the insertions created, some of them destroyed again
+  // by later insertions of the call, so that the caller can find the tets under a target without a sweep
+  // (MeshScan.h, collectSineBelowAmong).
+  std::vector<int32_t>* created = nullptr;
 };
 
 // Splits the bad tets of `request`; labels (per tet slot, optional) follow the new tets. Returns the number

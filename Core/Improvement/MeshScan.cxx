@@ -91,4 +91,20 @@ void collectSineBelow(const TetMesh& mesh, double q, int threads, std::vector<st
     out.insert(out.end(), p.begin(), p.end());
 }
 
+void collectSineBelowAmong(const TetMesh& mesh, double q, std::vector<int32_t>& candidates,
+                           std::vector<std::pair<double, int32_t>>& out)
+{
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  out.clear();
+  for (int32_t t : candidates)
+    if (t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t))
+    {
+      const double qt = quality(mesh, t);
+      if (qt < q)
+        out.emplace_back(qt, t);
+    }
+  std::sort(out.begin(), out.end());
+}
+
 } // namespace volgrid

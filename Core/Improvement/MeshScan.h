@@ -22,4 +22,10 @@ int64_t countSineBelow(const TetMesh& mesh, double q, int threads);
 // Every live tet with a sine quality under q as (quality, tet), in slot order (out is cleared first).
 void collectSineBelow(const TetMesh& mesh, double q, int threads, std::vector<std::pair<double, int32_t>>& out);
 
+// The same among the slots `candidates` (sorted and deduplicated here), as (quality, tet) in that order:
+// after an edit, the tets under q before it (those it left keep their quality) and the tets it created
+// are all the mesh has under q, so this gives what collectSineBelow, sorted, would give, without a sweep.
+void collectSineBelowAmong(const TetMesh& mesh, double q, std::vector<int32_t>& candidates,
+                           std::vector<std::pair<double, int32_t>>& out);
+
 } // namespace volgrid

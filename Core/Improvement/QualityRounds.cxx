@@ -138,6 +138,18 @@ SplitRequest QualityRounds::splitRequest(double degrees, int64_t maxPoints,
   return request;
 }
 
+int64_t QualityRounds::splitBelow(double degrees, int64_t maxPoints, std::vector<std::pair<double, int32_t>>& below)
+{
+  std::vector<int32_t> candidates;
+  SplitRequest request = splitRequest(degrees, maxPoints, &below);
+  request.created = &candidates;
+  const int64_t inserted = splitBadTets(mesh, &fc_, &tetRegion, request);
+  for (const auto& b : below)
+    candidates.push_back(b.second);
+  collectSineBelowAmong(mesh, std::sin(degrees * 3.14159265358979323846 / 180.0), candidates, below);
+  return inserted;
+}
+
 Status QualityRounds::floorRounds()
 {
   std::vector<std::pair<double, int32_t>> low, below;
@@ -170,8 +182,7 @@ Status QualityRounds::floorRounds()
     Status fs = optimise(2, &below);
     if (!fs.ok())
       return fs;
-    stats.splitPoints += splitBadTets(mesh, &fc_, &tetRegion, splitRequest(one_.targetDegrees, 64, &below));
-    below.clear();
+    stats.splitPoints += splitBelow(one_.targetDegrees, 64, below);
     fs = optimise(1, &below);
     if (!fs.ok())
       return fs;
@@ -199,14 +210,12 @@ Status QualityRounds::optimiseSplitFloor()
   {
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-    const int64_t n = splitBadTets(
-      mesh, &fc_, &tetRegion,
-      splitRequest(options.optimization.targetDegrees, std::max<int64_t>(200, mesh.numTets() / 20), &below));
+    const int64_t n =
+      splitBelow(options.optimization.targetDegrees, std::max<int64_t>(200, mesh.numTets() / 20), below);
     stats.splitPoints += n;
     if (n == 0)
       break;
     const double minBefore = stats.after.minDihedral;
-    below.clear();
     Status ps = optimise(std::min(3, options.optimization.maxPasses), &below);
     if (!ps.ok())
       return ps;

@@ -54,6 +54,10 @@ private:
   // A split of the tets below `degrees` with this stage's threads and progress.
   SplitRequest splitRequest(double degrees, int64_t maxPoints,
                             const std::vector<std::pair<double, int32_t>>* below) const;
+  // Splits up to maxPoints of the tets under `degrees`, given exactly in `below` as optimise() leaves them;
+  // afterwards `below` holds the tets under `degrees` again (no sweep: those left alone and those created).
+  // Returns the number of points inserted.
+  int64_t splitBelow(double degrees, int64_t maxPoints, std::vector<std::pair<double, int32_t>>& below);
 
   TetMesh& mesh;
   const FaceConstraints& fc_;
