@@ -255,7 +255,7 @@ OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult
   summary.dihedral = volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
                                                  static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
   summary.ratio = volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4,
-                                               args.options.improvement.sizing.gradation);
+                                               args.options.improvement.sizing.gradation, args.options.threads);
   return summary;
 }
 

@@ -1,5 +1,6 @@
 #include "SizeRatio.h"
 
+#include "ParallelFor.h"
 #include "TetMesh.h"
 
 #include <algorithm>
@@ -12,6 +13,10 @@ namespace volgrid
 
 namespace
 {
+// Below these a range is not worth a thread.
+constexpr int64_t kMinTetsPerThread = 50000;
+constexpr int64_t kMinVerticesPerThread = 8192; // about 25 tets around each
+
 double meanEdge(const double* points, const int32_t* t)
 {
   double sum = 0;
@@ -55,36 +60,14 @@ void summarize(std::vector<float>& ratios, SizeRatioSummary& s)
   s.p99 = percentile(ratios, 0.99);
   s.median = percentile(ratios, 0.5);
 }
-} // namespace
-
-SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets, double threshold)
+// The ratios of the faces whose smallest vertex is in [first, last), appended to `ratios`; `above` counts
+// those above threshold (when > 0).
+void matchFacesAround(const int32_t* tets, const std::vector<int64_t>& start, const std::vector<int32_t>& around,
+                      const std::vector<double>& size, int32_t first, int32_t last, double threshold,
+                      std::vector<float>& ratios, int64_t& above)
 {
-  SizeRatioSummary s;
-  std::vector<double> size(numTets);
-  int32_t numPoints = 0;
-  for (size_t t = 0; t < numTets; ++t)
-  {
-    size[t] = meanEdge(points, tets + 4 * t);
-    for (int i = 0; i < 4; ++i)
-      numPoints = std::max(numPoints, tets[4 * t + i] + 1);
-  }
-  // The tets around each vertex (compressed rows): 16 bytes per tet, where a list of all 4 n faces took 64.
-  std::vector<int64_t> start(static_cast<size_t>(numPoints) + 1, 0);
-  for (size_t k = 0; k < 4 * numTets; ++k)
-    ++start[static_cast<size_t>(tets[k]) + 1];
-  for (size_t v = 0; v < static_cast<size_t>(numPoints); ++v)
-    start[v + 1] += start[v];
-  std::vector<int32_t> around(4 * numTets);
-  {
-    std::vector<int64_t> next(start.begin(), start.end() - 1);
-    for (size_t k = 0; k < 4 * numTets; ++k)
-      around[static_cast<size_t>(next[static_cast<size_t>(tets[k])]++)] = static_cast<int32_t>(k / 4);
-  }
-  // Each face is matched around its smallest vertex: the faces there, sorted, give the equal pairs.
-  std::vector<float> ratios;
-  ratios.reserve(2 * numTets);
   std::vector<Face> local;
-  for (int32_t v = 0; v < numPoints; ++v)
+  for (int32_t v = first; v < last; ++v)
   {
     local.clear();
     for (int64_t k = start[static_cast<size_t>(v)]; k < start[static_cast<size_t>(v) + 1]; ++k)
@@ -104,11 +87,63 @@ SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, 
     {
       if (local[k].v != local[k + 1].v)
         continue;
-      const double r = ratioOf(size[local[k].tet], size[local[k + 1].tet]);
+      const double r = ratioOf(size[static_cast<size_t>(local[k].tet)], size[static_cast<size_t>(local[k + 1].tet)]);
       ratios.push_back(static_cast<float>(r));
-      s.aboveThreshold += threshold > 0 && r > threshold;
+      above += threshold > 0 && r > threshold;
       ++k; // a face is shared by at most two tets in a valid mesh
     }
+  }
+}
+} // namespace
+
+SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets, double threshold,
+                                     int threads)
+{
+  SizeRatioSummary s;
+  const int64_t nt = static_cast<int64_t>(numTets);
+  std::vector<double> size(numTets);
+  std::vector<int32_t> largestId(static_cast<size_t>(parallelRanges(threads, nt, kMinTetsPerThread)), -1);
+  parallelFor(threads, nt, kMinTetsPerThread,
+              [&](int r, int64_t begin, int64_t end)
+              {
+                for (int64_t t = begin; t < end; ++t)
+                {
+                  size[static_cast<size_t>(t)] = meanEdge(points, tets + 4 * t);
+                  for (int i = 0; i < 4; ++i)
+                    largestId[static_cast<size_t>(r)] = std::max(largestId[static_cast<size_t>(r)], tets[4 * t + i]);
+                }
+              });
+  const int32_t numPoints = 1 + *std::max_element(largestId.begin(), largestId.end());
+  // The tets around each vertex (compressed rows): 16 bytes per tet, where a list of all 4 n faces took 64.
+  std::vector<int64_t> start(static_cast<size_t>(numPoints) + 1, 0);
+  for (size_t k = 0; k < 4 * numTets; ++k)
+    ++start[static_cast<size_t>(tets[k]) + 1];
+  for (size_t v = 0; v < static_cast<size_t>(numPoints); ++v)
+    start[v + 1] += start[v];
+  std::vector<int32_t> around(4 * numTets);
+  {
+    std::vector<int64_t> next(start.begin(), start.end() - 1);
+    for (size_t k = 0; k < 4 * numTets; ++k)
+      around[static_cast<size_t>(next[static_cast<size_t>(tets[k])]++)] = static_cast<int32_t>(k / 4);
+  }
+  // Each face is matched around its smallest vertex, a range of vertices per thread; the ratios of the
+  // ranges, joined in order, are the same for any thread count.
+  const int ranges = parallelRanges(threads, numPoints, kMinVerticesPerThread);
+  std::vector<std::vector<float>> part(static_cast<size_t>(ranges));
+  std::vector<int64_t> above(static_cast<size_t>(ranges), 0);
+  parallelFor(threads, numPoints, kMinVerticesPerThread,
+              [&](int r, int64_t begin, int64_t end)
+              {
+                matchFacesAround(tets, start, around, size, static_cast<int32_t>(begin), static_cast<int32_t>(end),
+                                 threshold, part[static_cast<size_t>(r)], above[static_cast<size_t>(r)]);
+              });
+  std::vector<float> ratios;
+  ratios.reserve(2 * numTets);
+  for (int r = 0; r < ranges; ++r)
+  {
+    ratios.insert(ratios.end(), part[static_cast<size_t>(r)].begin(), part[static_cast<size_t>(r)].end());
+    std::vector<float>().swap(part[static_cast<size_t>(r)]);
+    s.aboveThreshold += above[static_cast<size_t>(r)];
   }
   summarize(ratios, s);
   return s;

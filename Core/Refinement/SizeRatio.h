@@ -22,8 +22,10 @@ struct SizeRatioSummary
   int64_t aboveThreshold = 0; // faces whose ratio is strictly above `threshold`
 };
 
-// points: xyz per point; tets: 4 point ids per tet. Threshold <= 0: aboveThreshold stays 0.
-SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets, double threshold = 0);
+// points: xyz per point; tets: 4 point ids per tet. Threshold <= 0: aboveThreshold stays 0. threads: the
+// rule of ParallelFor.h (0 = all cores); the summary is the same for any value.
+SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets, double threshold = 0,
+                                     int threads = 1);
 // The same over a mesh with adjacency (faces with a neighbour; ghost tets, if any, are skipped).
 SizeRatioSummary summarizeSizeRatios(const TetMesh& mesh, double threshold = 0);
 

@@ -1,6 +1,7 @@
 // SizeRatio.h: the size ratio between face-neighbouring tets (size = mean edge length).
 #include "SizeRatio.h"
 
+#include "Mesh/RandomDelaunay.h"
 #include "MeshImprovement.h"
 #include "TetMesh.h"
 
@@ -73,4 +74,30 @@ TEST(SizeRatio, MeshWithAdjacencyGivesTheSameFigures)
   EXPECT_EQ(adj.max, flat.max);
   EXPECT_EQ(adj.median, flat.median);
   EXPECT_EQ(adj.aboveThreshold, flat.aboveThreshold);
+}
+
+TEST(SizeRatio, SameFiguresOnAnyThreadCountAndAsTheMeshWithAdjacency)
+{
+  // 20,000 random points: about 130,000 tets, so that 2 and 8 threads cut both loops into ranges.
+  TetMesh mesh;
+  randomDelaunay(mesh, 20000, 5);
+  std::vector<int32_t> t;
+  mesh.forEachTet(
+    [&](int32_t u)
+    {
+      for (int i = 0; i < 4; ++i)
+        t.push_back(mesh.vertex(u, i));
+    });
+  ASSERT_GT(t.size() / 4, 100000u);
+  const SizeRatioSummary adj = summarizeSizeRatios(mesh, 1.5);
+  ASSERT_GT(adj.aboveThreshold, 0);
+  for (int threads : { 1, 2, 8 })
+  {
+    const SizeRatioSummary s = summarizeSizeRatios(mesh.points.data(), t.data(), t.size() / 4, 1.5, threads);
+    EXPECT_EQ(s.faces, adj.faces) << threads;
+    EXPECT_EQ(s.median, adj.median) << threads;
+    EXPECT_EQ(s.p99, adj.p99) << threads;
+    EXPECT_EQ(s.max, adj.max) << threads;
+    EXPECT_EQ(s.aboveThreshold, adj.aboveThreshold) << threads;
+  }
 }
