@@ -198,6 +198,35 @@ Status buildWalls(const SurfaceMesh& s, const SurfaceCheckReport& report, const 
   return slipPlanes(s, report, walls, otherIds);
 }
 
+// Checks `s`, chooses its layered patches and builds their walls; unless the options keep the wall's
+// triangles, first splits them around the edges checkMesh would find skewed (WallRefinement.h).
+Status layeredWalls(SurfaceMesh& s, const LayerOptions& options, SurfaceCheckReport& checks,
+                    layers_detail::Walls& walls, std::vector<int32_t>& wallIds, std::vector<int32_t>& otherIds,
+                    WallRefinement& refinement)
+{
+  for (bool refine = !options.keepWallTriangles;; refine = false)
+  {
+    checks = checkSurface(s);
+    Status status = surfaceStatus(checks);
+    if (!status.ok())
+      return status;
+    std::set<int32_t> chosen;
+    status = choosePatches(s, checks, options, chosen);
+    if (!status.ok())
+      return status;
+    walls = layers_detail::Walls();
+    wallIds.clear();
+    otherIds.clear();
+    status = buildWalls(s, checks, chosen, walls, wallIds, otherIds);
+    if (!status.ok() || !refine || skewedWallEdges(s.points, walls.triangles).empty())
+      return status;
+    std::vector<uint8_t> isWall(s.numberOfTriangles(), 0);
+    for (const int32_t t : wallIds)
+      isWall[t] = 1;
+    refinement = refineSkewedWall(s, isWall);
+  }
+}
+
 // Halves the failing columns, then limits every column to 1.5 times its thinnest neighbour.
 // A column thinned below this fraction of its height collapses instead (ThinnedReason::Collapsed).
 constexpr double kCollapseBelow = 1.0 / 8;
@@ -536,17 +565,10 @@ Status growLayers(const SurfaceMesh& input, const LayerOptions& given, LayerResu
                              " is more than the domain allows (half its bounding-box diagonal, " +
                              std::to_string(0.5 * box.diagonal()) + ")");
   report.report(0, "Boundary layers: checking the surface");
-  const SurfaceCheckReport checks = checkSurface(s);
-  status = surfaceStatus(checks);
-  if (!status.ok())
-    return status;
-  std::set<int32_t> chosen;
-  status = choosePatches(s, checks, options, chosen);
-  if (!status.ok())
-    return status;
+  SurfaceCheckReport checks;
   layers_detail::Walls walls;
   std::vector<int32_t> wallIds, otherIds;
-  status = buildWalls(s, checks, chosen, walls, wallIds, otherIds);
+  status = layeredWalls(s, options, checks, walls, wallIds, otherIds, result.stats.wallRefinement);
   if (!status.ok())
     return status;
   const WallFaceQuality wallQuality = wallFaceQuality(s.points, walls.triangles);

@@ -14,6 +14,8 @@
 // 1/8 of its height (a knife edge, a needle tip: no direction sees all its faces well) collapses instead:
 // its layers shrink onto the wall point, so the cells over its triangles become pyramids (one collapsed
 // corner) or tets (two), conformal with the prisms around, and its neighbours keep their height.
+// Unless keepWallTriangles, the wall's triangles beside an edge whose prism side faces checkMesh would find
+// highly skewed are split first (WallRefinement.h); the wall keeps its shape.
 // Limits: any other non-layered patch a wall touches gets a Status naming it and the point; one marching
 // direction per vertex (no fans at sharp convex edges); points on a symmetry plane never collapse.
 #pragma once
@@ -23,6 +25,7 @@
 #include "Status.h"
 #include "SurfaceMesh.h"
 #include "WallFaceQuality.h"
+#include "WallRefinement.h"
 
 #include <cstdint>
 #include <string>
@@ -47,6 +50,9 @@ struct LayerOptions
   double yPlus = 0, reynolds = 0, referenceLength = 0;
   int normalSmoothing = 5;  // Laplacian passes over the vertex normals
   bool splitPrisms = false; // output each prism as 3 tets (min-vertex-index rule)
+  // Keep the wall's triangles as they are, even around edges whose prism side faces checkMesh would find
+  // highly skewed (by default those are split first: WallRefinement.h).
+  bool keepWallTriangles = false;
   bool enabled() const { return layers > 0; }
   double totalThickness() const; // first * (1 + r + ... + r^(layers-1))
   // firstHeight from yPlus when that is given; with a thickness, the growth (or the first height) that
@@ -79,6 +85,7 @@ struct LayerStatistics
   double minScale = 1; // smallest column factor
   double seconds = 0;
   WallFaceQuality wallFaceQuality; // what the wall triangulation alone implies for checkMesh (WallFaceQuality.h)
+  WallRefinement wallRefinement;   // the wall triangles split first around skewed edges (WallRefinement.h)
   int64_t collapsedTriangles = 0; // layered triangles with a collapsed corner: fewer than all the layers
   // Share of layered triangles with their full height (strict; thinned columns count against it).
   double coverage() const { return layeredTriangles ? double(fullTriangles) / double(layeredTriangles) : 0.0; }
@@ -91,7 +98,8 @@ struct LayerStatistics
 
 struct LayerResult
 {
-  // The input surface's points (after exact merging: point i of the merged surface) first, then per
+  // The input surface's points (after exact merging: point i of the merged surface) first, then the
+  // points the wall refinement added (stats.wallRefinement.splitEdges of them), then per
   // layered point that did not collapse its `layers` offset points (layer 0 nearest the wall).
   std::vector<double> points;
   int32_t numSurfacePoints = 0;

@@ -109,12 +109,11 @@ void account(WallEdgeExtreme& e, double value, double limit, Vec a, Vec b)
     e.worstPoint[2] = 0.5 * (a.z + b.z);
   }
 }
-} // namespace
 
-WallFaceQuality wallFaceQuality(const std::vector<double>& points, const std::vector<int32_t>& triangles,
-                                double skewnessLimit, double nonOrthogonalityLimitDegrees)
+// Calls visit(a, b, p, q) once per edge ab shared by exactly two of `triangles`, p and q its triangles.
+template <typename Visit>
+void forEachInteriorEdge(const std::vector<double>& points, const std::vector<int32_t>& triangles, Visit visit)
 {
-  WallFaceQuality result;
   // Sorted edge -> (first triangle, count).
   std::unordered_map<uint64_t, std::pair<int32_t, int>> edges;
   const size_t n = triangles.size() / 3;
@@ -123,18 +122,44 @@ WallFaceQuality wallFaceQuality(const std::vector<double>& points, const std::ve
   { return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b)); };
   for (size_t t = 0; t < n; ++t)
     for (int i = 0; i < 3; ++i)
+      ++edges.try_emplace(key(triangles[3 * t + i], triangles[3 * t + (i + 1) % 3]), int32_t(t), 0).first->second.second;
+  for (size_t t = 0; t < n; ++t)
+    for (int i = 0; i < 3; ++i)
     {
-      auto& entry =
-        edges.try_emplace(key(triangles[3 * t + i], triangles[3 * t + (i + 1) % 3]), int32_t(t), 0).first->second;
-      if (++entry.second != 2 || entry.first == int32_t(t))
-        continue;
-      const Vec a = pointAt(points, triangles[3 * t + i]), b = pointAt(points, triangles[3 * t + (i + 1) % 3]);
-      const Triangle p = triangleAt(points, &triangles[3 * size_t(entry.first)]);
-      const Triangle q = triangleAt(points, &triangles[3 * t]);
-      account(result.skewness, edgeSkewness(a, b, p.centroid, q.centroid), skewnessLimit, a, b);
-      account(result.nonOrthogonality, edgeNonOrthogonality(a, b, p, q), nonOrthogonalityLimitDegrees, a, b);
+      const int32_t a = triangles[3 * t + i], b = triangles[3 * t + (i + 1) % 3];
+      const auto& entry = edges.find(key(a, b))->second;
+      if (entry.second == 2 && entry.first != int32_t(t))
+        visit(a, b, triangleAt(points, &triangles[3 * size_t(entry.first)]), triangleAt(points, &triangles[3 * t]));
     }
+}
+} // namespace
+
+WallFaceQuality wallFaceQuality(const std::vector<double>& points, const std::vector<int32_t>& triangles,
+                                double skewnessLimit, double nonOrthogonalityLimitDegrees)
+{
+  WallFaceQuality result;
+  forEachInteriorEdge(points, triangles,
+                      [&](int32_t ia, int32_t ib, const Triangle& p, const Triangle& q)
+                      {
+                        const Vec a = pointAt(points, ia), b = pointAt(points, ib);
+                        account(result.skewness, edgeSkewness(a, b, p.centroid, q.centroid), skewnessLimit, a, b);
+                        account(result.nonOrthogonality, edgeNonOrthogonality(a, b, p, q),
+                                nonOrthogonalityLimitDegrees, a, b);
+                      });
   return result;
+}
+
+std::vector<int32_t> skewedWallEdges(const std::vector<double>& points, const std::vector<int32_t>& triangles,
+                                     double skewnessLimit)
+{
+  std::vector<int32_t> edges;
+  forEachInteriorEdge(points, triangles,
+                      [&](int32_t a, int32_t b, const Triangle& p, const Triangle& q)
+                      {
+                        if (edgeSkewness(pointAt(points, a), pointAt(points, b), p.centroid, q.centroid) > skewnessLimit)
+                          edges.insert(edges.end(), { a, b });
+                      });
+  return edges;
 }
 
 std::vector<std::string> wallFaceWarnings(const WallFaceQuality& quality)

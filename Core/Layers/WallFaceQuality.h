@@ -39,6 +39,10 @@ struct WallFaceQuality
 WallFaceQuality wallFaceQuality(const std::vector<double>& points, const std::vector<int32_t>& triangles,
                                 double skewnessLimit = 4.0, double nonOrthogonalityLimitDegrees = 70.0);
 
+// The interior edges of `triangles` whose skewness is above the limit: 2 point ids each, in triangle order.
+std::vector<int32_t> skewedWallEdges(const std::vector<double>& points, const std::vector<int32_t>& triangles,
+                                     double skewnessLimit = 4.0);
+
 // The warnings for a user (none when no edge is over a limit): how many edges, the worst and where, what
 // checkMesh will then report, and what to do.
 std::vector<std::string> wallFaceWarnings(const WallFaceQuality& quality);

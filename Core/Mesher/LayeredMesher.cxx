@@ -144,6 +144,8 @@ Status meshSurfaceWithLayers(const SurfaceMesh& surface, const MesherOptions& me
   result.layerStats = layers.stats;
   result.mesherStats = tets.stats;
   result.warnings = tets.warnings;
+  if (!wallRefinementNote(layers.stats.wallRefinement).empty())
+    result.warnings.push_back(wallRefinementNote(layers.stats.wallRefinement));
   for (std::string& text : wallFaceWarnings(layers.stats.wallFaceQuality))
     result.warnings.push_back(std::move(text));
   if (result.interfaceOnTets != static_cast<int64_t>(result.interfaceTriangles.size() / 3) ||
