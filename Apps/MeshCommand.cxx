@@ -140,9 +140,11 @@ int parseArguments(int argc, char** argv, Arguments& args)
   args.given = p.given();
   if (!args.layers.enabled() &&
       (args.layers.firstHeight != 0 || args.layers.yPlus != 0 || args.layers.thickness != 0 ||
-       !args.layers.patchNames.empty() || !args.layers.patchIds.empty() || args.layers.splitPrisms))
+       !args.layers.patchNames.empty() || !args.layers.patchIds.empty() || args.layers.splitPrisms ||
+       args.layers.keepWallTriangles))
   {
-    p.fail("--first-height, --y-plus, --layer-thickness, --layer-patches and --split-prisms need --layers N");
+    p.fail("--first-height, --y-plus, --layer-thickness, --layer-patches, --split-prisms and --keep-wall-triangles "
+           "need --layers N");
     return 2;
   }
   if (positional.size() != 2)

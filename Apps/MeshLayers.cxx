@@ -31,7 +31,9 @@ const std::string kLayerUsage =
   "  --layer-patches A,B  layered patches by name or id (default: named patches whose OpenFOAM type is wall,\n"
   "                       unnamed ones that neither span the domain's box nor enclose another surface)\n"
   "  --split-prisms       each prism as 3 tets, each pyramid as 2 (for tet-only solvers; needed for TetGen,\n"
-  "                       the one format without prisms and pyramids)\n";
+  "                       the one format without prisms and pyramids)\n"
+  "  --keep-wall-triangles  keep the wall's triangles even around edges whose prism side faces checkMesh\n"
+  "                       would find highly skewed (by default those triangles are split first)\n";
 
 int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
 {
@@ -39,6 +41,11 @@ int parseLayerOption(int argc, char** argv, int& i, LayerOptions& options)
   if (a == "--split-prisms")
   {
     options.splitPrisms = true;
+    return 1;
+  }
+  if (a == "--keep-wall-triangles")
+  {
+    options.keepWallTriangles = true;
     return 1;
   }
   if (a != "--layers" && a != "--first-height" && a != "--growth" && a != "--layer-patches" && a != "--y-plus" &&
@@ -202,6 +209,7 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
       "\"thinned_inversion\": %lld, \"thinned_collision\": %lld, \"thinned_neighbour\": %lld, \"collapsed_columns\": "
       "%lld, "
       "\"min_column_scale\": %.6g, \"inverted_cells\": %lld, \"interface_faces_shared\": %lld, "
+      "\"wall_skew_edges_input\": %lld, \"wall_split_edges\": %lld, "
       "\"wall_skew_edges\": %lld, \"wall_skewness_max\": %.6g, \"wall_nonortho_edges\": %lld, "
       "\"wall_nonortho_max\": %.6g, \"transition_faces\": %lld, \"transition_ratio_median\": %.6g, "
       "\"transition_ratio_p90\": %.6g, \"transition_ratio_max\": %.6g, \"seconds_layers\": %.6f, \"seconds\": %.6f}\n",
@@ -210,6 +218,7 @@ int runLayeredMesh(const SurfaceMesh& surface, const std::string& surfaceName, c
       (long long)l.layeredTriangles, (long long)l.fullTriangles, l.coverage(), l.allLayersShare(),
       (long long)l.thinnedColumns, (long long)l.thinnedBy[1], (long long)l.thinnedBy[2], (long long)l.thinnedBy[3],
       (long long)l.thinnedBy[4], l.minScale, (long long)inverted, (long long)r.interfaceOnTets,
+      (long long)l.wallRefinement.skewedEdgesBefore, (long long)l.wallRefinement.splitEdges,
       (long long)l.wallFaceQuality.skewness.edgesOverLimit, l.wallFaceQuality.skewness.worst,
       (long long)l.wallFaceQuality.nonOrthogonality.edgesOverLimit, l.wallFaceQuality.nonOrthogonality.worst,
       (long long)r.transition.faces, r.transition.medianRatio, r.transition.p90Ratio, r.transition.maxRatio, l.seconds,

@@ -62,6 +62,7 @@ vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
   this->LayerGrowthRatio = layerDefaults.growth;
   this->TotalLayerThickness = layerDefaults.thickness;
   this->SplitPrisms = layerDefaults.splitPrisms;
+  this->KeepWallTriangles = layerDefaults.keepWallTriangles;
 }
 
 namespace
@@ -461,6 +462,7 @@ int vtkVolGridTetrahedralize::MeshWithLayers(const volgrid::SurfaceMesh& surface
   layers.growth = this->LayerGrowthRatio;
   layers.thickness = this->TotalLayerThickness;
   layers.splitPrisms = this->SplitPrisms;
+  layers.keepWallTriangles = this->KeepWallTriangles;
   if (this->LayerPatches)
     volgrid::addLayerPatches(this->LayerPatches, layers);
   volgrid::LayeredMeshResult result;
@@ -599,4 +601,5 @@ void vtkVolGridTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TotalLayerThickness: " << this->TotalLayerThickness << "\n";
   os << indent << "LayerPatches: " << (this->LayerPatches ? this->LayerPatches : "(none)") << "\n";
   os << indent << "SplitPrisms: " << this->SplitPrisms << "\n";
+  os << indent << "KeepWallTriangles: " << this->KeepWallTriangles << "\n";
 }

@@ -289,6 +289,14 @@ public:
   vtkBooleanMacro(SplitPrisms, bool);
   ///@}
 
+  ///@{
+  /** Boundary layers: keep the wall's triangles even around edges whose prism side faces checkMesh would
+   * find highly skewed (by default the triangles there are split at edge midpoints first). Default off. */
+  vtkSetMacro(KeepWallTriangles, bool);
+  vtkGetMacro(KeepWallTriangles, bool);
+  vtkBooleanMacro(KeepWallTriangles, bool);
+  ///@}
+
   /** Convenience: the second input (Sources) connection. */
   void SetSourceConnection(vtkAlgorithmOutput* output);
 
@@ -341,6 +349,7 @@ protected:
   double TotalLayerThickness = 0; // the default: the constructor, from Core
   char* LayerPatches = nullptr;
   bool SplitPrisms = false;
+  bool KeepWallTriangles = false;
 
 private:
   vtkVolGridTetrahedralize(const vtkVolGridTetrahedralize&) = delete;

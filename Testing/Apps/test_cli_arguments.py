@@ -38,7 +38,9 @@ CASES = [
     ("mesh", ["--layers"], 2, "volgrid mesh: --layers needs a value (see volgrid mesh --help)", False),
     ("mesh", ["--patch"], 2, "volgrid mesh: --patch needs a value (see volgrid mesh --help)", False),
     ("mesh", ["--first-height", "1e-3"], 2, "volgrid mesh: --first-height, --y-plus, --layer-thickness, "
-     "--layer-patches and --split-prisms need --layers N", False),
+     "--layer-patches, --split-prisms and --keep-wall-triangles need --layers N", False),
+    ("mesh", ["--keep-wall-triangles"], 2, "volgrid mesh: --first-height, --y-plus, --layer-thickness, "
+     "--layer-patches, --split-prisms and --keep-wall-triangles need --layers N", False),
     ("refine", ["--alpha"], 2, "volgrid refine: --alpha needs a value (see volgrid refine --help)", False),
     ("refine", ["--alpha", "0"], 2, "volgrid refine: --alpha is out of range: 0 (in (0, inf); see --help)", False),
     ("refine", ["--size-scale", "2"], 2, "volgrid refine: unknown option '--size-scale' (see volgrid refine --help)", False),

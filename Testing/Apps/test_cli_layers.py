@@ -486,19 +486,34 @@ if shared and os.path.exists(m6):
             expect(j["layered_faces"] == wing["layered_faces"] and j["wedges"] == wing["wedges"],
                    "M6: by default the wing patches only: %s" % j)
             # One input wing edge (the root of the leading edge, between two long fan triangles) has an
-            # OpenFOAM skewness of 8.19 in the surface itself: the mesher says so, and checkMesh finds exactly
-            # that: one skew face per layer there, nothing else failing.
-            expect(j["wall_skew_edges"] == 1 and "skewness above 4" in r.stderr, "M6: the skewed wall edge is reported", r)
+            # OpenFOAM skewness of 8.19 in the surface itself. By default the triangles beside it are split
+            # first, and checkMesh says "Mesh OK" (issue 19, acceptance 1).
+            expect(j["wall_skew_edges_input"] == 1 and j["wall_split_edges"] > 0 and j["wall_skew_edges"] == 0
+                   and j["coverage"] >= 0.98 and "were split" in r.stderr,
+                   "M6: the skewed wall edge is found and the triangles beside it split: %s" % j, r)
             os.makedirs(w("m6_default"), exist_ok=True)
-            c = check_mesh(w("m6_default"), "gmshToFoam ../m6default.msh >/dev/null &&") if j["wall_skew_edges"] == 1 else None
+            c = check_mesh(w("m6_default"), "gmshToFoam ../m6default.msh >/dev/null &&")
             if c is not None:
-                m = re.search(r"Max skewness = ([0-9.e+-]+), (\d+) highly skew faces", c.stdout)
-                expect(m is not None and int(m.group(2)) == 15 and abs(float(m.group(1)) / j["wall_skewness_max"] - 1) < 0.01
-                       and "Failed 1 mesh checks" in c.stdout,
-                       "M6: checkMesh fails on the 15 faces over the reported edge only (predicted %.4g)"
-                       % j["wall_skewness_max"], c)
-    # checkMesh on the direct OpenFOAM output agrees with gmsh 2.2 -> gmshToFoam: the same counts, cell shapes,
-    # failed checks and skew faces (one input edge of the wing gives 15 faces of skewness 8.19 either way).
+                expect("Mesh OK." in c.stdout and "highly skew" not in c.stdout,
+                       "M6, 15 layers, default options: checkMesh says Mesh OK", c)
+        # Kept as it is (--keep-wall-triangles), the edge is reported before meshing, and checkMesh finds
+        # exactly that: one skew face per layer there, nothing else failing.
+        r = run([volgrid, "mesh", m6, w("m6keep.msh"), "--format", "gmsh22", "--json", "--layers", "15",
+                 "--first-height", "1e-4", "--growth", "1.2", "--keep-wall-triangles"], timeout=600)
+        j = json.loads(r.stdout.strip().splitlines()[-1]) if r.returncode == 0 else {}
+        expect(j.get("wall_skew_edges") == 1 and j.get("wall_split_edges") == 0 and "skewness above 4" in r.stderr
+               and 0 < j.get("layered_faces", 0) < wing["layered_faces"],
+               "M6 with --keep-wall-triangles: the input's wall, its skewed edge reported: %s" % j, r)
+        os.makedirs(w("m6_keep"), exist_ok=True)
+        c = check_mesh(w("m6_keep"), "gmshToFoam ../m6keep.msh >/dev/null &&") if j.get("wall_skew_edges") == 1 else None
+        if c is not None:
+            m = re.search(r"Max skewness = ([0-9.e+-]+), (\d+) highly skew faces", c.stdout)
+            expect(m is not None and int(m.group(2)) == 15 and abs(float(m.group(1)) / j["wall_skewness_max"] - 1) < 0.01
+                   and "Failed 1 mesh checks" in c.stdout,
+                   "M6 with --keep-wall-triangles: checkMesh fails on the 15 faces over the reported edge only "
+                   "(predicted %.4g)" % j["wall_skewness_max"], c)
+    # checkMesh on the direct OpenFOAM output agrees with gmsh 2.2 -> gmshToFoam: the same counts, cell shapes
+    # and checks.
     m6_layers = ["--layers", "15", "--first-height", "1e-4", "--growth", "1.2", "--layer-patches",
                  "3,4,5,6,7,8,9,10,11,12"]
     rf = run([volgrid, "mesh", m6, w("m6_foam"), "--format", "openfoam"] + m6_layers, timeout=600)
