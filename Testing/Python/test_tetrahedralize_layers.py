@@ -108,6 +108,60 @@ mesher.FirstLayerHeight = -1.0  # clamped to 0: no first height, refused
 mesher.UpdatePipeline()
 check(servermanager.Fetch(mesher, idx=0).GetNumberOfCells() == 0, "layers without a first height were meshed")
 
+
+
+def fanned_box_off(path):
+    """A box whose top is a fan from one corner (its long triangles meet the side fans at wall edges that
+    checkMesh would find skewed, as a wing's root fan meets its leading edge), outward, as OFF."""
+    pts, tris = [], []
+    add = lambda x, y, z: pts.append((x, y, z)) or len(pts) - 1
+    x1 = [add(1, k / 8, 1) for k in range(17)]
+    y2 = [add(k / 8, 2, 1) for k in range(7, -1, -1)]
+    o, x, xy, y, top = add(0, 0, 0), add(1, 0, 0), add(1, 2, 0), add(0, 2, 0), add(0, 0, 1)
+    fan = lambda hub, rim: tris.extend((hub, rim[k], rim[k + 1]) for k in range(len(rim) - 1))
+    fan(top, x1 + y2)
+    fan(x, x1 + [xy])
+    fan(y, [xy, x1[-1]] + y2)
+    fan(o, [x, xy, y])
+    fan(o, [x, x1[0], top])
+    fan(o, [top, y2[-1], y])
+    out = []
+    for a, b, c in tris:
+        u = [pts[b][k] - pts[a][k] for k in range(3)]
+        w = [pts[c][k] - pts[a][k] for k in range(3)]
+        n = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+        d = (pts[a][0] - 0.5, pts[a][1] - 1.0, pts[a][2] - 0.5)
+        out.append((a, b, c) if sum(n[k] * d[k] for k in range(3)) > 0 else (a, c, b))
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(pts), len(out)))
+        f.writelines("%r %r %r\n" % p for p in pts)
+        f.writelines("3 %d %d %d\n" % t for t in out)
+    return len(out)
+
+
+# KeepWallTriangles: by default the wall triangles beside skewed edges are split first (as the CLI does);
+# kept, the wall is the input's.
+box, box_domain = os.path.join(work, "box.off"), os.path.join(work, "box_domain.vtp")
+box_triangles = fanned_box_off(box)
+subprocess.run([CLI, "prep", box, box_domain, "--enclosure", "sphere", "--enclosure-scale", "10"], check=True,
+               capture_output=True)
+box_cli = subprocess.run([CLI, "mesh", box_domain, os.path.join(work, "box.vtu"), "--json", "--layers", "3",
+                          "--first-height", "1e-3"], capture_output=True, text=True)
+box_json = json.loads(box_cli.stdout) if box_cli.returncode == 0 else {}
+check(box_json.get("wall_split_edges", 0) > 0 and box_json.get("wall_skew_edges") == 0,
+      f"the fanned box's skewed wall edges are not split by the CLI: {box_json} {box_cli.stderr}")
+box_mesher = VolGridTetrahedralize(Input=XMLPolyDataReader(FileName=[box_domain]), NumberOfLayers=3,
+                                   FirstLayerHeight=1e-3)
+wedge_counts = []
+for keep in (0, 1):
+    box_mesher.KeepWallTriangles = keep
+    box_mesher.UpdatePipeline()
+    out = servermanager.Fetch(box_mesher, idx=0)
+    wedge_counts.append(sum(out.GetCellType(c) == 13 for c in range(out.GetNumberOfCells())))
+check(wedge_counts[0] == box_json.get("wedges") and wedge_counts[1] == 3 * box_triangles,
+      f"KeepWallTriangles 0 and 1: {wedge_counts} wedges, expected the CLI's {box_json.get('wedges')} and "
+      f"3 * {box_triangles}")
+
 if failures:
     print(f"{len(failures)} check(s) failed")
     sys.exit(1)
