@@ -137,9 +137,17 @@ SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, 
                 matchFacesAround(tets, start, around, size, static_cast<int32_t>(begin), static_cast<int32_t>(end),
                                  threshold, part[static_cast<size_t>(r)], above[static_cast<size_t>(r)]);
               });
-  std::vector<float> ratios;
-  ratios.reserve(2 * numTets);
-  for (int r = 0; r < ranges; ++r)
+  // The join needs no more memory than the matching did: its arrays go first, the first range is kept.
+  std::vector<int32_t>().swap(around);
+  std::vector<int64_t>().swap(start);
+  std::vector<double>().swap(size);
+  size_t total = 0;
+  for (const std::vector<float>& ratiosOfRange : part)
+    total += ratiosOfRange.size();
+  std::vector<float> ratios = std::move(part[0]);
+  ratios.reserve(total);
+  s.aboveThreshold += above[0];
+  for (int r = 1; r < ranges; ++r)
   {
     ratios.insert(ratios.end(), part[static_cast<size_t>(r)].begin(), part[static_cast<size_t>(r)].end());
     std::vector<float>().swap(part[static_cast<size_t>(r)]);
