@@ -9,7 +9,9 @@
 #   5. Scale: ONERA M6 (default, ~1M, ~5M tets), sphere-in-sphere, a wing at ~10M tets; VolGrid (1 and all
 #      threads), TetGen -pYq1.414a, Gmsh HXT                Testing/Benchmarks/bench_scale.sh BUILD_DIR
 #      (--quick: the two default cases only)
-# Results go to BUILD_DIR/bench/. Timings are wall-clock on this machine: run on an idle machine.
+#   6. Boundary layers on the ONERA M6 wing vs Gmsh 4.8's extrudeBoundaryLayer
+#                                                          Testing/Benchmarks/bench_layers_gmsh.py VOLGRID OUT_DIR
+# Results go to BUILD_DIR/bench/ (section 6: layers.md). Timings are wall-clock on this machine: run on an idle machine.
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="build"
@@ -62,4 +64,7 @@ if [ "$quick" -eq 1 ]; then
 else
   bash "$root/Testing/Benchmarks/bench_scale.sh" "$build" || status=1
 fi
+echo
+echo "=== 6. Boundary layers: VolGrid vs Gmsh 4.8 extrudeBoundaryLayer on the ONERA M6 wing (15 layers) ==="
+/usr/bin/python3 "$root/Testing/Benchmarks/bench_layers_gmsh.py" "$build/bin/volgrid" "$build/bench" || status=1
 exit $status

@@ -23,7 +23,7 @@ case "$level" in
   # clang, libclang-rt-14-dev: the libFuzzer reader targets (Testing/Fuzz, -fsanitize=fuzzer,address,undefined).
   test) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev openmpi-bin xvfb xauth
     gmsh python3-gmsh python3-meshio python3-netcdf4 openfoam cgns-convert clang libclang-rt-14-dev) ;;
-  bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh) ;;
+  bench) packages+=(libtet1.5-dev tetgen libcgal-dev libgmp-dev time gmsh python3-gmsh openfoam) ;;
   *) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac
 
