@@ -204,25 +204,33 @@ Status layeredWalls(SurfaceMesh& s, const LayerOptions& options, SurfaceCheckRep
                     layers_detail::Walls& walls, std::vector<int32_t>& wallIds, std::vector<int32_t>& otherIds,
                     WallRefinement& refinement)
 {
+  SurfaceMesh input;
   for (bool refine = !options.keepWallTriangles;; refine = false)
   {
     checks = checkSurface(s);
     Status status = surfaceStatus(checks);
-    if (!status.ok())
-      return status;
     std::set<int32_t> chosen;
-    status = choosePatches(s, checks, options, chosen);
-    if (!status.ok())
-      return status;
+    if (status.ok())
+      status = choosePatches(s, checks, options, chosen);
     walls = layers_detail::Walls();
     wallIds.clear();
     otherIds.clear();
-    status = buildWalls(s, checks, chosen, walls, wallIds, otherIds);
+    if (status.ok())
+      status = buildWalls(s, checks, chosen, walls, wallIds, otherIds);
+    if (!status.ok() && refinement.splitEdges > 0)
+    {
+      // The split surface fails where the input passed (a new point within rounding of another part):
+      // the input's triangles then, with the warning about their skewed edges.
+      s = std::move(input);
+      refinement = WallRefinement();
+      continue;
+    }
     if (!status.ok() || !refine || skewedWallEdges(s.points, walls.triangles).empty())
       return status;
     std::vector<uint8_t> isWall(s.numberOfTriangles(), 0);
     for (const int32_t t : wallIds)
       isWall[t] = 1;
+    input = s;
     refinement = refineSkewedWall(s, isWall);
   }
 }
