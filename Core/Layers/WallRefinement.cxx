@@ -25,15 +25,6 @@ double squaredLength(const SurfaceMesh& s, int32_t a, int32_t b)
   return sum;
 }
 
-std::vector<int32_t> wallTriangles(const SurfaceMesh& s, const std::vector<uint8_t>& isWall)
-{
-  std::vector<int32_t> wall;
-  for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
-    if (isWall[t])
-      wall.insert(wall.end(), s.triangle(t), s.triangle(t) + 3);
-  return wall;
-}
-
 // The longest edge of both wall triangles of every skewed edge (ties: the smaller key, so the same
 // surface always gives the same edges).
 std::unordered_set<uint64_t> edgesToBisect(const SurfaceMesh& s, const std::vector<uint8_t>& isWall,
@@ -131,6 +122,15 @@ void bisect(SurfaceMesh& s, std::vector<uint8_t>& isWall, const std::unordered_s
   }
 }
 } // namespace
+
+std::vector<int32_t> wallTriangles(const SurfaceMesh& s, const std::vector<uint8_t>& isWall)
+{
+  std::vector<int32_t> wall;
+  for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
+    if (isWall[t])
+      wall.insert(wall.end(), s.triangle(t), s.triangle(t) + 3);
+  return wall;
+}
 
 WallRefinement refineSkewedWall(SurfaceMesh& surface, std::vector<uint8_t>& isWall, double skewnessLimit,
                                 int maxRounds)

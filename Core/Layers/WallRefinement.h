@@ -34,6 +34,9 @@ struct WallRefinement
 WallRefinement refineSkewedWall(SurfaceMesh& surface, std::vector<uint8_t>& isWall, double skewnessLimit = 4.0,
                                 int maxRounds = 8);
 
+// The triangles of `surface` that isWall marks, 3 point ids each.
+std::vector<int32_t> wallTriangles(const SurfaceMesh& surface, const std::vector<uint8_t>& isWall);
+
 // What a user should know of it (empty when nothing was split): how many edges were split and why, and
 // what is left over the limit.
 std::string wallRefinementNote(const WallRefinement& refinement);

@@ -32,15 +32,6 @@ SurfaceMesh needleTetrahedron(double shift = 0)
   return s;
 }
 
-std::vector<int32_t> wallOf(const SurfaceMesh& s, const std::vector<uint8_t>& isWall)
-{
-  std::vector<int32_t> wall;
-  for (int32_t t = 0; t < s.numberOfTriangles(); ++t)
-    if (isWall[t])
-      wall.insert(wall.end(), s.triangle(t), s.triangle(t) + 3);
-  return wall;
-}
-
 // Every directed edge once and its reverse once: closed, conforming (no point on another's edge) and
 // consistently oriented.
 bool closedAndConforming(const SurfaceMesh& s)
@@ -80,7 +71,7 @@ TEST(WallRefinement, SkewedEdgesGoAndTheSurfaceKeepsItsShape)
   // Only the two triangles of the skewed edge are walls: the others are split where they share a bisected
   // edge, and the surface stays conforming.
   std::vector<uint8_t> isWall = { 1, 1, 0, 0 };
-  ASSERT_EQ(skewedWallEdges(input.points, wallOf(input, isWall)).size(), 2u);
+  ASSERT_EQ(skewedWallEdges(input.points, wallTriangles(input, isWall)).size(), 2u);
   SurfaceMesh s = input;
   const WallRefinement r = refineSkewedWall(s, isWall);
   EXPECT_EQ(r.skewedEdgesBefore, 1);
@@ -89,7 +80,7 @@ TEST(WallRefinement, SkewedEdgesGoAndTheSurfaceKeepsItsShape)
   EXPECT_EQ(s.numberOfPoints(), input.numberOfPoints() + r.splitEdges);
   EXPECT_EQ(s.numberOfTriangles(), input.numberOfTriangles() + r.addedTriangles);
   ASSERT_EQ(isWall.size(), size_t(s.numberOfTriangles()));
-  EXPECT_TRUE(skewedWallEdges(s.points, wallOf(s, isWall)).empty());
+  EXPECT_TRUE(skewedWallEdges(s.points, wallTriangles(s, isWall)).empty());
   EXPECT_TRUE(closedAndConforming(s));
   EXPECT_TRUE(surfaceStatus(checkSurface(s)).ok());
   // The same shape: the input's points kept, every new one on an input edge (to rounding), the same volume.
