@@ -1,5 +1,5 @@
 // Keys of mesh edges and faces by vertex ids, independent of orientation: edgeKey (the two ids in one
-// 64-bit word, smaller first) and TriKey (the three ids sorted), with a hash for unordered containers.
+// 64-bit word, smaller first) and TriKey (the three ids sorted), with hashes for FlatHashMap and unordered containers.
 // Shared by boundary recovery (BoundaryRecovery.h) and the optimisation's face constraints (TetEditor.h).
 #pragma once
 
@@ -38,6 +38,11 @@ struct TriKey
   {
     return v[0] != o.v[0] ? v[0] < o.v[0] : v[1] != o.v[1] ? v[1] < o.v[1] : v[2] < o.v[2];
   }
+};
+// An edgeKey() is its own hash in FlatHashMap, which mixes the bits itself.
+struct EdgeKeyHash
+{
+  uint64_t operator()(uint64_t k) const { return k; }
 };
 struct TriKeyHash
 {

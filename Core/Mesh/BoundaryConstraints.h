@@ -64,10 +64,6 @@ public:
   std::vector<int32_t> parent; // input triangle id, -1 = removed
 
 private:
-  struct EdgeKeyHash
-  {
-    uint64_t operator()(uint64_t k) const { return k; } // FlatHashMap mixes the bits
-  };
   FlatHashMap<TriKey, int32_t, TriKeyHash> faces_;
   FlatHashMap<uint64_t, std::array<int32_t, 2>, EdgeKeyHash> edges_;
   std::unordered_map<int32_t, uint64_t> segmentOf_; // segment Steiner point -> its input segment

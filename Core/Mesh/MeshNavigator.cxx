@@ -310,7 +310,6 @@ void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone
   const size_t n = cone.tets.size();
   std::vector<int32_t>& ids = replaceIds_;
   ids.resize(n);
-  edgeSlots_.clear();
   for (size_t k = 0; k < n; ++k)
   {
     const auto& q = cone.tets[k];
@@ -335,19 +334,21 @@ void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone
       for (int m = 0; m < 4; ++m)
         if (m != i && m != j)
           (a < 0 ? a : b) = q[m];
-      const uint64_t key =
-        a < b ? (uint64_t(uint32_t(a)) << 32) | uint32_t(b) : (uint64_t(uint32_t(b)) << 32) | uint32_t(a);
-      edgeSlots_.push_back({ key, TetMesh::encode(t, j) });
+      const uint64_t key = edgeKey(a, b);
+      // The first of the edge's two side faces waits in the table; the second links to it and takes it out,
+      // so the table is empty again at the end (no clearing per insertion, unlike the sort it replaced).
+      const int32_t code = TetMesh::encode(t, j);
+      if (const int32_t* other = openSideFaces_.find(key))
+      {
+        mesh.link(t, j, *other >> 2, *other & 3);
+        openSideFaces_.erase(key);
+      }
+      else
+        openSideFaces_.insert(key, code);
     }
   }
-  std::sort(edgeSlots_.begin(), edgeSlots_.end(),
-            [](const std::pair<uint64_t, int32_t>& x, const std::pair<uint64_t, int32_t>& y)
-            { return x.first < y.first; });
-  for (size_t k = 0; k + 1 < edgeSlots_.size(); k += 2)
-  {
-    const int32_t c1 = edgeSlots_[k].second, c2 = edgeSlots_[k + 1].second;
-    mesh.link(c1 >> 2, c1 & 3, c2 >> 2, c2 & 3);
-  }
+  if (!openSideFaces_.empty()) // a cone whose boundary is not closed (never from a star-shaped cavity)
+    openSideFaces_.clear();
   labelTets(ids, label);
   ensureStamp();
   if (created)

@@ -5,8 +5,10 @@
 #pragma once
 
 #include "EditJournal.h"
+#include "FlatHashMap.h"
 #include "TetMesh.h"
 #include "TetStamps.h"
+#include "VertexKeys.h"
 
 #include <algorithm>
 #include <array>
@@ -154,7 +156,8 @@ private:
   };
   std::vector<FaceEntry> replaceFaces_;
   std::vector<int32_t> replaceIds_;
-  std::vector<std::pair<uint64_t, int32_t>> edgeSlots_; // replaceByCone(): (edge key, side face code)
+  // replaceByCone(): side faces of the cone waiting for their partner, by edge key (empty between calls).
+  FlatHashMap<uint64_t, int32_t, EdgeKeyHash> openSideFaces_;
   std::vector<int32_t> vertTet_;
   std::vector<int32_t> findScratch_;
   StaleEntries stale_;
