@@ -251,13 +251,17 @@ struct OutputSummary
   volgrid::SizeRatioSummary ratio;
 };
 
-OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult& result)
+// sharedFaces: the tet pairs of the shared faces, from the boundary check's face matching (released here).
+OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult& result,
+                              std::vector<std::pair<int32_t, int32_t>>& sharedFaces)
 {
   OutputSummary summary;
   summary.dihedral = volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
                                                  static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
-  summary.ratio = volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4,
-                                               args.options.improvement.sizing.gradation, args.options.threads);
+  summary.ratio =
+    volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, sharedFaces,
+                                 args.options.improvement.sizing.gradation, args.options.threads);
+  std::vector<std::pair<int32_t, int32_t>>().swap(sharedFaces);
   return summary;
 }
 
@@ -441,10 +445,13 @@ int runMeshCommand(int argc, char** argv)
   std::vector<int32_t> inputTriangles(surface.triangles.size());
   for (size_t k = 0; k < surface.triangles.size(); ++k)
     inputTriangles[k] = result.inputToOutputPoint[surface.triangles[k]];
-  const volgrid::BoundaryCheckReport boundary = volgrid::checkBoundaryConformity(
-    result.points, result.numInputPoints, result.tets, inputTriangles, result.stats.enclosedVolume);
+  // Its face matching also gives the neighbours that the size ratios need.
+  std::vector<std::pair<int32_t, int32_t>> sharedFaces;
+  const volgrid::BoundaryCheckReport boundary =
+    volgrid::checkBoundaryConformity(result.points, result.numInputPoints, result.tets, inputTriangles,
+                                     result.stats.enclosedVolume, &sharedFaces, args.options.threads);
   const bool boundaryPreserved = boundary.meshValid() && boundary.boundaryEqualsInput();
-  const OutputSummary output = summarizeOutput(args, result);
+  const OutputSummary output = summarizeOutput(args, result, sharedFaces);
 
   volgrid::SolverMesh solverMesh; // named patches; --patch applied to result.boundaryPatch too
   if (!volgrid::cli::solverMeshFromResult("mesh", exportRequest, surface, result, solverMesh))

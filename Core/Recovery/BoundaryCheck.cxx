@@ -1,6 +1,7 @@
 #include "BoundaryCheck.h"
 
 #include "BoundaryRecovery.h"
+#include "ParallelFor.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -96,17 +97,18 @@ size_t smallestVertex(const int32_t f[3])
   return static_cast<size_t>(std::min({ f[0], f[1], f[2] }));
 }
 
-// The tet loop: ids and orientation (problems noted as 8 * tet in events), the volume, valid[t] = 1 for
-// tets with valid ids, and the faces of those counted per smallest vertex v in start[v + 1].
-void scanTets(const std::vector<double>& points, const std::vector<int32_t>& tets, BoundaryCheckReport& r,
-              std::vector<uint8_t>& valid, std::vector<int64_t>& start, std::vector<int64_t>& events)
+// Tets checked per block: the blocks' volume sums are added in block order, so the total does not depend
+// on how many threads share the blocks.
+constexpr int64_t kTetsPerBlock = 65536;
+
+// The ids and the orientation of tets [begin, end) (problems noted as 8 * tet in events), their volume, and
+// valid[t] = 1 for those with valid ids.
+void scanTetRange(const std::vector<double>& points, const std::vector<int32_t>& tets, int64_t begin, int64_t end,
+                  std::vector<uint8_t>& valid, Sum& vol, int64_t& badIds, int64_t& inverted,
+                  std::vector<int64_t>& events)
 {
   const int64_t np = static_cast<int64_t>(points.size() / 3);
-  const int64_t nt = static_cast<int64_t>(tets.size() / 4);
-  valid.assign(static_cast<size_t>(nt), 0);
-  start.assign(static_cast<size_t>(np) + 1, 0);
-  Sum vol;
-  for (int64_t t = 0; t < nt; ++t)
+  for (int64_t t = begin; t < end; ++t)
   {
     const int32_t* v = tets.data() + 4 * t;
     bool bad = false;
@@ -119,7 +121,7 @@ void scanTets(const std::vector<double>& points, const std::vector<int32_t>& tet
     }
     if (bad)
     {
-      ++r.badIds;
+      ++badIds;
       events.push_back(8 * t);
       continue;
     }
@@ -128,18 +130,59 @@ void scanTets(const std::vector<double>& points, const std::vector<int32_t>& tet
                  *c = &points[3 * static_cast<size_t>(v[2])], *d = &points[3 * static_cast<size_t>(v[3])];
     if (predicates::orient3d(a, b, c, d) <= 0)
     {
-      ++r.invertedTets;
+      ++inverted;
       events.push_back(8 * t);
     }
     vol.add(det3(a, b, c, d) / 6.0);
-    for (int i = 0; i < 4; ++i)
-    {
-      int32_t f[3];
-      faceOf(tets, static_cast<uint32_t>(4 * t + i), f);
-      ++start[smallestVertex(f) + 1];
-    }
+  }
+}
+
+// The tet loop: ids and orientation (problems noted as 8 * tet in events, in tet order), the volume,
+// valid[t] = 1 for tets with valid ids, and the faces of those counted per smallest vertex v in start[v + 1].
+// Blocks of tets on `threads` threads (ParallelFor.h's rule); the report is the same for any count.
+void scanTets(const std::vector<double>& points, const std::vector<int32_t>& tets, int threads, BoundaryCheckReport& r,
+              std::vector<uint8_t>& valid, std::vector<int64_t>& start, std::vector<int64_t>& events)
+{
+  const int64_t np = static_cast<int64_t>(points.size() / 3);
+  const int64_t nt = static_cast<int64_t>(tets.size() / 4);
+  valid.assign(static_cast<size_t>(nt), 0);
+  const int64_t blocks = (nt + kTetsPerBlock - 1) / kTetsPerBlock;
+  struct Block
+  {
+    Sum vol;
+    int64_t badIds = 0, inverted = 0;
+    std::vector<int64_t> events;
+  };
+  std::vector<Block> block(static_cast<size_t>(blocks));
+  parallelFor(threads, blocks, 1,
+              [&](int, int64_t first, int64_t last)
+              {
+                for (int64_t k = first; k < last; ++k)
+                {
+                  Block& b = block[static_cast<size_t>(k)];
+                  scanTetRange(points, tets, k * kTetsPerBlock, std::min(nt, (k + 1) * kTetsPerBlock), valid, b.vol,
+                               b.badIds, b.inverted, b.events);
+                }
+              });
+  Sum vol;
+  for (const Block& b : block)
+  {
+    vol.add(b.vol.s);
+    vol.add(b.vol.c);
+    r.badIds += b.badIds;
+    r.invertedTets += b.inverted;
+    events.insert(events.end(), b.events.begin(), b.events.end());
   }
   r.tetVolume = vol.value();
+  start.assign(static_cast<size_t>(np) + 1, 0);
+  for (int64_t t = 0; t < nt; ++t)
+    if (valid[static_cast<size_t>(t)])
+      for (int i = 0; i < 4; ++i)
+      {
+        int32_t f[3];
+        faceOf(tets, static_cast<uint32_t>(4 * t + i), f);
+        ++start[smallestVertex(f) + 1];
+      }
 }
 
 // The face codes (4 * tet + face) of the valid tets bucketed by smallest vertex, in tet order within a
@@ -169,6 +212,8 @@ struct FaceMatch
   std::vector<int32_t> uses;          // per input triangle: tets having it as a face (0 missing, at most 3)
   std::vector<uint8_t> onBoundary;    // per point: on a face of a single tet
   std::vector<int64_t> boundaryNotes; // tets with a boundary face that is not an input triangle
+  std::vector<std::pair<int32_t, int32_t>>* sharedFaces = nullptr; // optional: the tets of each face of two
+  std::vector<uint8_t> onInput; // per point: a vertex of an input triangle (a face with another is none)
 };
 
 // Groups the faces of each bucket (equal faces together, in tet order) and counts badly oriented and
@@ -205,12 +250,18 @@ void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& st
           events.push_back(8 * static_cast<int64_t>(group[k + 1].second >> 2) + 1 + (group[k + 1].second & 3));
         }
       }
+      if (count == 2 && m.sharedFaces)
+        m.sharedFaces->push_back(
+          { static_cast<int32_t>(group[k].second >> 2), static_cast<int32_t>(group[k + 1].second >> 2) });
       if (count >= 3)
       {
         ++r.overSharedFaces;
         events.push_back(8 * static_cast<int64_t>(group[k + 2].second >> 2) + 1 + (group[k + 2].second & 3));
       }
-      const auto it = input.find(TriKey(static_cast<int32_t>(v), group[k].first[0], group[k].first[1]));
+      const bool maybeInput = m.onInput[v] && m.onInput[static_cast<size_t>(group[k].first[0])] &&
+        m.onInput[static_cast<size_t>(group[k].first[1])];
+      const auto it =
+        maybeInput ? input.find(TriKey(static_cast<int32_t>(v), group[k].first[0], group[k].first[1])) : input.end();
       if (it != input.end())
         m.uses[static_cast<size_t>(it->second)] = static_cast<int32_t>(std::min<int64_t>(count, 3));
       if (count == 1)
@@ -233,7 +284,8 @@ void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& st
 
 BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, int32_t numInputPoints,
                                             const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
-                                            double expected)
+                                            double expected, std::vector<std::pair<int32_t, int32_t>>* sharedFaces,
+                                            int threads)
 {
   BoundaryCheckReport r;
   const int64_t np = static_cast<int64_t>(points.size() / 3);
@@ -245,7 +297,7 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
   std::vector<uint8_t> valid;
   std::vector<int64_t> events; // 8 * tet + slot (0 bad or inverted, 1 + face): notes in tet order
   std::vector<int64_t> start;
-  scanTets(points, tets, r, valid, start, events);
+  scanTets(points, tets, threads, r, valid, start, events);
   r.enclosedVolume = expected;
   r.relativeVolumeError = std::fabs(r.tetVolume - expected) / std::max(std::fabs(expected), 1e-300);
   const std::vector<uint32_t> codes = bucketFaces(tets, valid, start);
@@ -259,6 +311,16 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
   FaceMatch m;
   m.uses.assign(static_cast<size_t>(ntri), 0);
   m.onBoundary.assign(static_cast<size_t>(np), 0);
+  m.sharedFaces = sharedFaces;
+  m.onInput.assign(static_cast<size_t>(np), 0);
+  for (int32_t v : triangles)
+    if (v >= 0 && v < np)
+      m.onInput[static_cast<size_t>(v)] = 1;
+  if (sharedFaces)
+  {
+    sharedFaces->clear();
+    sharedFaces->reserve(codes.size() / 2 + 1);
+  }
   matchFaces(tets, start, codes, input, r, events, m);
   // The first problems: the tet loop's (in tet order), then the boundary's, then the input's.
   std::sort(events.begin(), events.end());

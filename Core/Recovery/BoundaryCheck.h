@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace volgrid
@@ -45,10 +46,15 @@ struct BoundaryCheckReport
 };
 
 // points: 3 per point (the first numInputPoints are the input points); tets: 4 per tet; triangles: the
-// input triangles (3 per triangle, ids into points); enclosedVolume: the expected volume.
+// input triangles (3 per triangle, ids into points); enclosedVolume: the expected volume. sharedFaces
+// (optional) receives the two tets of every face that exactly two tets share, as the check's face matching
+// finds them, so that a caller measuring neighbours (SizeRatio.h) needs no matching of its own. threads: the
+// tets' orientation and volume on that many threads (ParallelFor.h's rule); the report is the same for any.
 BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, int32_t numInputPoints,
                                             const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
-                                            double enclosedVolume);
+                                            double enclosedVolume,
+                                            std::vector<std::pair<int32_t, int32_t>>* sharedFaces = nullptr,
+                                            int threads = 1);
 
 // Volume of the domain the region rule selects, from the surface alone: every shell is oriented
 // consistently first (so the input orientation does not matter for EvenOdd/KeepAll), shellDepth is the

@@ -157,6 +157,41 @@ SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, 
   return s;
 }
 
+SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets,
+                                     const std::vector<std::pair<int32_t, int32_t>>& sharedFaces, double threshold,
+                                     int threads)
+{
+  SizeRatioSummary s;
+  const int64_t nt = static_cast<int64_t>(numTets);
+  std::vector<double> size(numTets);
+  parallelFor(threads, nt, kMinTetsPerThread,
+              [&](int, int64_t begin, int64_t end)
+              {
+                for (int64_t t = begin; t < end; ++t)
+                  size[static_cast<size_t>(t)] = meanEdge(points, tets + 4 * t);
+              });
+  const int64_t nf = static_cast<int64_t>(sharedFaces.size());
+  std::vector<float> ratios(sharedFaces.size());
+  const int ranges = parallelRanges(threads, nf, kMinTetsPerThread);
+  std::vector<int64_t> above(static_cast<size_t>(ranges), 0);
+  parallelFor(threads, nf, kMinTetsPerThread,
+              [&](int r, int64_t begin, int64_t end)
+              {
+                for (int64_t k = begin; k < end; ++k)
+                {
+                  const auto& f = sharedFaces[static_cast<size_t>(k)];
+                  const double ratio = ratioOf(size[static_cast<size_t>(f.first)], size[static_cast<size_t>(f.second)]);
+                  ratios[static_cast<size_t>(k)] = static_cast<float>(ratio);
+                  above[static_cast<size_t>(r)] += threshold > 0 && ratio > threshold;
+                }
+              });
+  std::vector<double>().swap(size);
+  for (int64_t a : above)
+    s.aboveThreshold += a;
+  summarize(ratios, s);
+  return s;
+}
+
 SizeRatioSummary summarizeSizeRatios(const TetMesh& mesh, double threshold)
 {
   SizeRatioSummary s;

@@ -9,6 +9,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace volgrid
 {
@@ -25,6 +27,11 @@ struct SizeRatioSummary
 // points: xyz per point; tets: 4 point ids per tet. Threshold <= 0: aboveThreshold stays 0. threads: the
 // rule of ParallelFor.h (0 = all cores); the summary is the same for any value.
 SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets, double threshold = 0,
+                                     int threads = 1);
+// The same from the tet pairs of the shared faces, as checkBoundaryConformity (BoundaryCheck.h) finds them:
+// no face matching of its own. The same summary as the call above for a valid mesh.
+SizeRatioSummary summarizeSizeRatios(const double* points, const int32_t* tets, size_t numTets,
+                                     const std::vector<std::pair<int32_t, int32_t>>& sharedFaces, double threshold = 0,
                                      int threads = 1);
 // The same over a mesh with adjacency (faces with a neighbour; ghost tets, if any, are skipped).
 SizeRatioSummary summarizeSizeRatios(const TetMesh& mesh, double threshold = 0);

@@ -1,8 +1,10 @@
 // The independent result check (Core/BoundaryCheck.h) against a plain hash-table reference (the check's
 // former implementation): the same counts on a real mesh and on meshes broken on purpose (tets removed,
-// repeated, turned over, with bad ids; input triangles dropped, added, repeated).
+// repeated, turned over, with bad ids; input triangles dropped, added, repeated); the same report on any
+// thread count, and the shared faces it hands to the size ratios are the mesh's.
 #include "BoundaryCheck.h"
 #include "Enclosures.h"
+#include "Mesh/RandomDelaunay.h"
 #include "Mesher.h"
 #include "Predicates.h"
 #include "VertexKeys.h"
@@ -174,5 +176,54 @@ TEST(BoundaryCheck, SameCountsAsAHashTableOnGoodAndBrokenMeshes)
       << "trial " << trial << ": " << r.summary();
     EXPECT_FALSE(r.ok()) << "trial " << trial;
     EXPECT_FALSE(r.firstProblems.empty()) << "trial " << trial;
+  }
+}
+
+TEST(BoundaryCheck, SameReportOnAnyThreadCountAndTheSharedFacesOfTheMesh)
+{
+  // 20,000 random points: about 130,000 tets, two blocks of the check's tet loop; a few tets turned over
+  // so that the problems listed in tet order come from both blocks.
+  TetMesh mesh;
+  randomDelaunay(mesh, 20000, 11);
+  std::vector<int32_t> tets;
+  mesh.forEachTet(
+    [&](int32_t u)
+    {
+      for (int i = 0; i < 4; ++i)
+        tets.push_back(mesh.vertex(u, i));
+    });
+  const int64_t nt = static_cast<int64_t>(tets.size() / 4);
+  ASSERT_GT(nt, 2 * 65536);
+  int64_t interiorFaces = 0;
+  mesh.forEachTet(
+    [&](int32_t u)
+    {
+      for (int i = 0; i < 4; ++i)
+        interiorFaces += mesh.neighbor(u, i) > u;
+    });
+  const std::vector<int32_t> noTriangles;
+  std::vector<std::pair<int32_t, int32_t>> shared;
+  const BoundaryCheckReport one = checkBoundaryConformity(mesh.points, 0, tets, noTriangles, 1.0, &shared, 1);
+  EXPECT_TRUE(one.meshValid()) << one.summary();
+  EXPECT_EQ(static_cast<int64_t>(shared.size()), interiorFaces);
+  for (const auto& f : shared)
+  {
+    ASSERT_TRUE(f.first >= 0 && f.first < nt && f.second >= 0 && f.second < nt && f.first != f.second);
+    int common = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        common += tets[4 * f.first + i] == tets[4 * f.second + j];
+    ASSERT_EQ(common, 3) << f.first << " " << f.second;
+  }
+  for (int64_t t : { int64_t(5), int64_t(70000), nt - 3 })
+    std::swap(tets[4 * t], tets[4 * t + 1]);
+  const BoundaryCheckReport broken = checkBoundaryConformity(mesh.points, 0, tets, noTriangles, 1.0, nullptr, 1);
+  EXPECT_EQ(broken.invertedTets, 3);
+  for (int threads : { 2, 8 })
+  {
+    const BoundaryCheckReport r = checkBoundaryConformity(mesh.points, 0, tets, noTriangles, 1.0, nullptr, threads);
+    EXPECT_TRUE(counts(r) == counts(broken)) << threads;
+    EXPECT_EQ(r.tetVolume, broken.tetVolume) << threads; // the same bits: block sums in block order
+    EXPECT_EQ(r.firstProblems, broken.firstProblems) << threads;
   }
 }

@@ -1,6 +1,7 @@
 // SizeRatio.h: the size ratio between face-neighbouring tets (size = mean edge length).
 #include "SizeRatio.h"
 
+#include "BoundaryCheck.h"
 #include "Mesh/RandomDelaunay.h"
 #include "MeshImprovement.h"
 #include "TetMesh.h"
@@ -99,5 +100,15 @@ TEST(SizeRatio, SameFiguresOnAnyThreadCountAndAsTheMeshWithAdjacency)
     EXPECT_EQ(s.p99, adj.p99) << threads;
     EXPECT_EQ(s.max, adj.max) << threads;
     EXPECT_EQ(s.aboveThreshold, adj.aboveThreshold) << threads;
+    // From the boundary check's shared faces (the CLI's way): no matching of its own, the same figures.
+    std::vector<std::pair<int32_t, int32_t>> shared;
+    checkBoundaryConformity(mesh.points, 0, t, {}, 1.0, &shared, threads);
+    const SizeRatioSummary fromPairs =
+      summarizeSizeRatios(mesh.points.data(), t.data(), t.size() / 4, shared, 1.5, threads);
+    EXPECT_EQ(fromPairs.faces, adj.faces) << threads;
+    EXPECT_EQ(fromPairs.median, adj.median) << threads;
+    EXPECT_EQ(fromPairs.p99, adj.p99) << threads;
+    EXPECT_EQ(fromPairs.max, adj.max) << threads;
+    EXPECT_EQ(fromPairs.aboveThreshold, adj.aboveThreshold) << threads;
   }
 }
