@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <unordered_map>
 
@@ -75,12 +76,28 @@ Status findBoundaryFaceOwners(const std::vector<int32_t>& tets, const std::vecto
     const int32_t* v = triangles.data() + 3 * t;
     triangleOf.emplace(sortedKey(v[0], v[1], v[2]), t);
   }
+  // Only a face whose three vertices are all on triangles can be one: most faces skip the hash look-up.
+  std::vector<uint8_t> onTriangle;
+  for (int32_t v : triangles)
+    if (v >= 0)
+    {
+      if (static_cast<size_t>(v) >= onTriangle.size())
+        onTriangle.resize(static_cast<size_t>(v) + 1, 0);
+      onTriangle[static_cast<size_t>(v)] = 1;
+    }
+  const auto isOnTriangle = [&](int32_t v)
+  { return v >= 0 && static_cast<size_t>(v) < onTriangle.size() && onTriangle[static_cast<size_t>(v)]; };
   for (int64_t t = 0; t < numTets; ++t)
   {
     const int32_t* v = tets.data() + 4 * t;
+    const bool on[4] = { isOnTriangle(v[0]), isOnTriangle(v[1]), isOnTriangle(v[2]), isOnTriangle(v[3]) };
+    if (on[0] + on[1] + on[2] + on[3] < 3)
+      continue;
     for (int side = 0; side < 4; ++side)
     {
       const int* f = kExodusTetSide[side];
+      if (!on[f[0]] || !on[f[1]] || !on[f[2]])
+        continue;
       const auto it = triangleOf.find(sortedKey(v[f[0]], v[f[1]], v[f[2]]));
       if (it != triangleOf.end() && owners[static_cast<size_t>(it->second)].tet < 0)
         owners[static_cast<size_t>(it->second)] = { t, side };
