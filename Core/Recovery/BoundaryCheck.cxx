@@ -206,23 +206,31 @@ std::vector<uint32_t> bucketFaces(const std::vector<int32_t>& tets, const std::v
   return codes;
 }
 
-// What matching the faces finds besides the report's counts.
+// What matching the faces finds besides the report's counts: for the whole check, and per range of
+// smallest vertices (the ranges are matched on threads and joined in order).
 struct FaceMatch
 {
-  std::vector<int32_t> uses;          // per input triangle: tets having it as a face (0 missing, at most 3)
-  std::vector<uint8_t> onBoundary;    // per point: on a face of a single tet
-  std::vector<int64_t> boundaryNotes; // tets with a boundary face that is not an input triangle
-  std::vector<std::pair<int32_t, int32_t>>* sharedFaces = nullptr; // optional: the tets of each face of two
-  std::vector<uint8_t> onInput; // per point: a vertex of an input triangle (a face with another is none)
+  std::vector<int32_t> uses;       // per input triangle: tets having it as a face (0 missing, at most 3)
+  std::vector<uint8_t> onBoundary; // per point: on a face of a single tet
+  std::vector<uint8_t> onInput;    // per point: a vertex of an input triangle (a face with another is none)
+};
+struct RangeMatch
+{
+  int64_t sameOrientationFaces = 0, overSharedFaces = 0, boundaryFaces = 0, boundaryFacesNotInput = 0;
+  std::vector<int64_t> events;                          // as the check's events
+  std::vector<int64_t> boundaryNotes;                   // tets with a boundary face that is not an input triangle
+  std::vector<int32_t> boundaryPoints;                  // the vertices of the boundary faces (repeated)
+  std::vector<std::pair<int32_t, int32_t>> sharedFaces; // the tets of each face that two tets share
 };
 
-// Groups the faces of each bucket (equal faces together, in tet order) and counts badly oriented and
-// over-shared faces (noted in events), boundary faces and the input triangles' uses.
+// Groups the faces of the buckets [first, last) (equal faces together, in tet order) and counts badly
+// oriented and over-shared faces (noted in events), boundary faces and the input triangles' uses
+// (m.uses: each triangle is written by the range of its smallest vertex only).
 void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& start, const std::vector<uint32_t>& codes,
-                const InputTriangles& input, BoundaryCheckReport& r, std::vector<int64_t>& events, FaceMatch& m)
+                const InputTriangles& input, size_t first, size_t last, FaceMatch& m, RangeMatch& r)
 {
   std::vector<std::pair<std::array<int32_t, 2>, uint32_t>> group; // (other two vertices sorted, code)
-  for (size_t v = 0; v + 1 < start.size(); ++v)
+  for (size_t v = first; v < last; ++v)
   {
     group.clear();
     for (int64_t k = start[v]; k < start[v + 1]; ++k)
@@ -247,16 +255,16 @@ void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& st
         if (sameCyclic(f1, f0))
         {
           ++r.sameOrientationFaces;
-          events.push_back(8 * static_cast<int64_t>(group[k + 1].second >> 2) + 1 + (group[k + 1].second & 3));
+          r.events.push_back(8 * static_cast<int64_t>(group[k + 1].second >> 2) + 1 + (group[k + 1].second & 3));
         }
       }
-      if (count == 2 && m.sharedFaces)
-        m.sharedFaces->push_back(
+      if (count == 2)
+        r.sharedFaces.push_back(
           { static_cast<int32_t>(group[k].second >> 2), static_cast<int32_t>(group[k + 1].second >> 2) });
       if (count >= 3)
       {
         ++r.overSharedFaces;
-        events.push_back(8 * static_cast<int64_t>(group[k + 2].second >> 2) + 1 + (group[k + 2].second & 3));
+        r.events.push_back(8 * static_cast<int64_t>(group[k + 2].second >> 2) + 1 + (group[k + 2].second & 3));
       }
       const bool maybeInput = m.onInput[v] && m.onInput[static_cast<size_t>(group[k].first[0])] &&
         m.onInput[static_cast<size_t>(group[k].first[1])];
@@ -270,14 +278,48 @@ void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& st
         if (it == input.end())
         {
           ++r.boundaryFacesNotInput;
-          m.boundaryNotes.push_back(group[k].second >> 2);
+          r.boundaryNotes.push_back(group[k].second >> 2);
         }
-        m.onBoundary[v] = 1;
-        m.onBoundary[static_cast<size_t>(group[k].first[0])] = 1;
-        m.onBoundary[static_cast<size_t>(group[k].first[1])] = 1;
+        r.boundaryPoints.insert(r.boundaryPoints.end(),
+                                { static_cast<int32_t>(v), group[k].first[0], group[k].first[1] });
       }
       k = e;
     }
+  }
+}
+
+// matchFaces over every bucket, in ranges of vertices on `threads` threads, joined in range order (the
+// report and the lists are those of one range). events and boundaryNotes are appended to; sharedFaces
+// (optional) receives the shared faces.
+void matchAllFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& start,
+                   const std::vector<uint32_t>& codes, const InputTriangles& input, int threads, FaceMatch& m,
+                   BoundaryCheckReport& r, std::vector<int64_t>& events, std::vector<int64_t>& boundaryNotes,
+                   std::vector<std::pair<int32_t, int32_t>>* sharedFaces)
+{
+  const int64_t np = static_cast<int64_t>(start.size()) - 1;
+  constexpr int64_t kMinVerticesPerThread = 16384;
+  std::vector<RangeMatch> ranges(static_cast<size_t>(parallelRanges(threads, np, kMinVerticesPerThread)));
+  parallelFor(threads, np, kMinVerticesPerThread,
+              [&](int k, int64_t first, int64_t last)
+              {
+                matchFaces(tets, start, codes, input, static_cast<size_t>(first), static_cast<size_t>(last), m,
+                           ranges[static_cast<size_t>(k)]);
+              });
+  if (sharedFaces)
+    sharedFaces->clear();
+  for (RangeMatch& range : ranges)
+  {
+    r.sameOrientationFaces += range.sameOrientationFaces;
+    r.overSharedFaces += range.overSharedFaces;
+    r.boundaryFaces += range.boundaryFaces;
+    r.boundaryFacesNotInput += range.boundaryFacesNotInput;
+    events.insert(events.end(), range.events.begin(), range.events.end());
+    boundaryNotes.insert(boundaryNotes.end(), range.boundaryNotes.begin(), range.boundaryNotes.end());
+    for (int32_t v : range.boundaryPoints)
+      m.onBoundary[static_cast<size_t>(v)] = 1;
+    if (sharedFaces)
+      sharedFaces->insert(sharedFaces->end(), range.sharedFaces.begin(), range.sharedFaces.end());
+    range = RangeMatch(); // its memory goes before the next range's is copied
   }
 }
 } // namespace
@@ -311,23 +353,18 @@ BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, i
   FaceMatch m;
   m.uses.assign(static_cast<size_t>(ntri), 0);
   m.onBoundary.assign(static_cast<size_t>(np), 0);
-  m.sharedFaces = sharedFaces;
   m.onInput.assign(static_cast<size_t>(np), 0);
   for (int32_t v : triangles)
     if (v >= 0 && v < np)
       m.onInput[static_cast<size_t>(v)] = 1;
-  if (sharedFaces)
-  {
-    sharedFaces->clear();
-    sharedFaces->reserve(codes.size() / 2 + 1);
-  }
-  matchFaces(tets, start, codes, input, r, events, m);
+  std::vector<int64_t> boundaryNotes;
+  matchAllFaces(tets, start, codes, input, threads, m, r, events, boundaryNotes, sharedFaces);
   // The first problems: the tet loop's (in tet order), then the boundary's, then the input's.
   std::sort(events.begin(), events.end());
   for (size_t k = 0; k < events.size() && r.firstProblems.size() < 8; ++k)
     r.firstProblems.push_back(events[k] / 8);
-  for (size_t k = 0; k < m.boundaryNotes.size() && r.firstProblems.size() < 8; ++k)
-    r.firstProblems.push_back(m.boundaryNotes[k]);
+  for (size_t k = 0; k < boundaryNotes.size() && r.firstProblems.size() < 8; ++k)
+    r.firstProblems.push_back(boundaryNotes[k]);
   for (int64_t v = numInputPoints; v < np; ++v)
     r.boundaryPointsAdded += m.onBoundary[static_cast<size_t>(v)];
   for (int64_t t = 0; t < ntri; ++t)

@@ -181,10 +181,11 @@ TEST(BoundaryCheck, SameCountsAsAHashTableOnGoodAndBrokenMeshes)
 
 TEST(BoundaryCheck, SameReportOnAnyThreadCountAndTheSharedFacesOfTheMesh)
 {
-  // 20,000 random points: about 130,000 tets, two blocks of the check's tet loop; a few tets turned over
+  // 40,000 random points: about 260,000 tets, four blocks of the check's tet loop and two ranges of its face
+  // matching on two threads; a few tets turned over
   // so that the problems listed in tet order come from both blocks.
   TetMesh mesh;
-  randomDelaunay(mesh, 20000, 11);
+  randomDelaunay(mesh, 40000, 11);
   std::vector<int32_t> tets;
   mesh.forEachTet(
     [&](int32_t u)
@@ -217,8 +218,12 @@ TEST(BoundaryCheck, SameReportOnAnyThreadCountAndTheSharedFacesOfTheMesh)
   }
   for (int64_t t : { int64_t(5), int64_t(70000), nt - 3 })
     std::swap(tets[4 * t], tets[4 * t + 1]);
+  tets.insert(tets.end(), tets.begin() + 4 * 100, tets.begin() + 4 * 101); // repeated: over-shared faces
+  tets.erase(tets.begin() + 4 * 90000, tets.begin() + 4 * 90001);          // removed: a hole
   const BoundaryCheckReport broken = checkBoundaryConformity(mesh.points, 0, tets, noTriangles, 1.0, nullptr, 1);
   EXPECT_EQ(broken.invertedTets, 3);
+  EXPECT_GT(broken.overSharedFaces, 0);
+  EXPECT_GT(broken.boundaryFacesNotInput, one.boundaryFacesNotInput);
   for (int threads : { 2, 8 })
   {
     const BoundaryCheckReport r = checkBoundaryConformity(mesh.points, 0, tets, noTriangles, 1.0, nullptr, threads);
