@@ -2,8 +2,8 @@
 // every tet face, on a meshed sphere (its triangles are faces; most tet faces touch no triangle, and the
 // search skips those) with triangles that are no face added (their owner stays -1 and the call fails).
 #include "BoundaryFaceOwners.h"
-#include "Enclosures.h"
 #include "Mesher.h"
+#include "MesherTestShapes.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include <vector>
 
 using namespace volgrid;
+using volgrid::testshapes::addSphere;
 
 namespace
 {
@@ -26,10 +27,8 @@ std::array<int32_t, 3> sorted(int32_t a, int32_t b, int32_t c)
 TEST(BoundaryFaceOwners, SameOwnersAsABruteForceSearch)
 {
   SurfaceMesh s;
-  EnclosureOptions eo;
-  eo.shape = EnclosureShape::Sphere;
-  eo.targetEdgeLength = 0.3;
-  ASSERT_TRUE(makeEnclosure(eo, s).ok());
+  const double centre[3] = { 0, 0, 0 };
+  addSphere(s, centre, 1.0, 2);
   MesherResult m;
   ASSERT_TRUE(meshSurface(s, MesherOptions(), m).ok());
   std::vector<int32_t> triangles = m.boundaryTriangles;

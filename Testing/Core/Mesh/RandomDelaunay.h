@@ -21,3 +21,16 @@ inline void randomDelaunay(volgrid::TetMesh& mesh, int n, unsigned seed = 7)
   opt.keepGhosts = false;
   ASSERT_TRUE(volgrid::buildDelaunay(xyz.data(), static_cast<size_t>(n), opt, mesh, map).ok());
 }
+
+// The mesh's tets as plain arrays (4 vertex ids per tet, in slot order), as the array-based checks take them.
+inline std::vector<int32_t> flatTets(const volgrid::TetMesh& mesh)
+{
+  std::vector<int32_t> tets;
+  mesh.forEachTet(
+    [&](int32_t u)
+    {
+      for (int i = 0; i < 4; ++i)
+        tets.push_back(mesh.vertex(u, i));
+    });
+  return tets;
+}

@@ -182,17 +182,11 @@ TEST(BoundaryCheck, SameCountsAsAHashTableOnGoodAndBrokenMeshes)
 TEST(BoundaryCheck, SameReportOnAnyThreadCountAndTheSharedFacesOfTheMesh)
 {
   // 40,000 random points: about 260,000 tets, four blocks of the check's tet loop and two ranges of its face
-  // matching on two threads; a few tets turned over
-  // so that the problems listed in tet order come from both blocks.
+  // matching on two threads; tets turned over, repeated and removed, so that the problems listed in tet order
+  // come from several blocks and ranges.
   TetMesh mesh;
   randomDelaunay(mesh, 40000, 11);
-  std::vector<int32_t> tets;
-  mesh.forEachTet(
-    [&](int32_t u)
-    {
-      for (int i = 0; i < 4; ++i)
-        tets.push_back(mesh.vertex(u, i));
-    });
+  std::vector<int32_t> tets = flatTets(mesh);
   const int64_t nt = static_cast<int64_t>(tets.size() / 4);
   ASSERT_GT(nt, 2 * 65536);
   int64_t interiorFaces = 0;

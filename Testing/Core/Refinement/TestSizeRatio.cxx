@@ -82,13 +82,7 @@ TEST(SizeRatio, SameFiguresOnAnyThreadCountAndAsTheMeshWithAdjacency)
   // 20,000 random points: about 130,000 tets, so that 2 and 8 threads cut both loops into ranges.
   TetMesh mesh;
   randomDelaunay(mesh, 20000, 5);
-  std::vector<int32_t> t;
-  mesh.forEachTet(
-    [&](int32_t u)
-    {
-      for (int i = 0; i < 4; ++i)
-        t.push_back(mesh.vertex(u, i));
-    });
+  std::vector<int32_t> t = flatTets(mesh);
   ASSERT_GT(t.size() / 4, 100000u);
   const SizeRatioSummary adj = summarizeSizeRatios(mesh, 1.5);
   ASSERT_GT(adj.aboveThreshold, 0);
