@@ -49,7 +49,7 @@ struct BoundaryCheckReport
 // input triangles (3 per triangle, ids into points); enclosedVolume: the expected volume. sharedFaces
 // (optional) receives the two tets of every face that exactly two tets share, as the check's face matching
 // finds them, so that a caller measuring neighbours (SizeRatio.h) needs no matching of its own. threads: the
-// tets' orientation and volume on that many threads (ParallelFor.h's rule); the report is the same for any.
+// tet loop and the face matching on that many threads (ParallelFor.h's rule); the report is the same for any.
 BoundaryCheckReport checkBoundaryConformity(const std::vector<double>& points, int32_t numInputPoints,
                                             const std::vector<int32_t>& tets, const std::vector<int32_t>& triangles,
                                             double enclosedVolume,
