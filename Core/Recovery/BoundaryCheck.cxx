@@ -212,7 +212,8 @@ struct FaceMatch
 {
   std::vector<int32_t> uses;       // per input triangle: tets having it as a face (0 missing, at most 3)
   std::vector<uint8_t> onBoundary; // per point: on a face of a single tet
-  std::vector<uint8_t> onInput;    // per point: a vertex of an input triangle (a face with another is none)
+  std::vector<uint8_t> onInput;    // per point: a vertex of an input triangle (other faces need no look-up)
+  bool listSharedFaces = false;    // whether the caller wants RangeMatch::sharedFaces
 };
 struct RangeMatch
 {
@@ -258,7 +259,7 @@ void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& st
           r.events.push_back(8 * static_cast<int64_t>(group[k + 1].second >> 2) + 1 + (group[k + 1].second & 3));
         }
       }
-      if (count == 2)
+      if (count == 2 && m.listSharedFaces)
         r.sharedFaces.push_back(
           { static_cast<int32_t>(group[k].second >> 2), static_cast<int32_t>(group[k + 1].second >> 2) });
       if (count >= 3)
@@ -298,6 +299,7 @@ void matchAllFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>&
 {
   const int64_t np = static_cast<int64_t>(start.size()) - 1;
   constexpr int64_t kMinVerticesPerThread = 16384;
+  m.listSharedFaces = sharedFaces != nullptr;
   std::vector<RangeMatch> ranges(static_cast<size_t>(parallelRanges(threads, np, kMinVerticesPerThread)));
   parallelFor(threads, np, kMinVerticesPerThread,
               [&](int k, int64_t first, int64_t last)
