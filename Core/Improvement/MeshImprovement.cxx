@@ -167,6 +167,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
         return s;
       stats.fieldPoints = fr.inserted;
       stats.fieldPasses = fr.passes;
+      stats.fieldPointsInRegions = fr.insertedInRegions;
       // The field points and the tets are scattered through memory by now: one renumbering in space
       // makes the sweeps and local edits below read mostly consecutive memory (SpatialReorder.h). The
       // vertices before the field points (input, boundary Steiner and cluster points) keep their numbers.

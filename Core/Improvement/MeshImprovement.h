@@ -101,6 +101,7 @@ struct ImprovementStatistics
 {
   int64_t fieldPoints = 0; // field points inserted (and still in the mesh, see removedPoints)
   int fieldPasses = 0;
+  int64_t fieldPointsInRegions = 0; // of those inserted, by the regions of large passes (FieldPointRegions.h)
   int64_t clusterPoints = 0;  // clustering points inserted
   int64_t clusterSkipped = 0; // outside, on the boundary, duplicates or too close
   int64_t interfaceFaces = 0; // interior faces kept as constraints (region interfaces)

@@ -5,11 +5,13 @@
 namespace volgrid
 {
 
-MeshNavigator::MeshNavigator(TetMesh& m, StaleEntries rule)
+MeshNavigator::MeshNavigator(TetMesh& m, StaleEntries rule, VertexMap map)
   : mesh(m)
   , stale_(rule)
+  , map_(map)
 {
-  rebuildVertexMap();
+  if (map_ == VertexMap::Kept)
+    rebuildVertexMap();
 }
 
 void MeshNavigator::rebuildVertexMap()
@@ -305,7 +307,10 @@ void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone
   for (int32_t t : cavity)
   {
     journalTet(t);
-    mesh.freeTet(t);
+    if (slotPool)
+      slotPool->give(mesh, t);
+    else
+      mesh.freeTet(t);
   }
   const size_t n = cone.tets.size();
   std::vector<int32_t>& ids = replaceIds_;
@@ -313,8 +318,19 @@ void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone
   for (size_t k = 0; k < n; ++k)
   {
     const auto& q = cone.tets[k];
-    journalTet(mesh.freeListHead());
-    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    int32_t t;
+    if (slotPool)
+    {
+      // Written in place: newTet() would touch the mesh's free list and counters, which other threads share.
+      t = slotPool->take();
+      std::copy(q.begin(), q.end(), mesh.tetVertices.begin() + 4 * static_cast<ptrdiff_t>(t));
+      std::fill_n(mesh.tetNeighbors.begin() + 4 * static_cast<ptrdiff_t>(t), 4, TetMesh::kNoNeighbor);
+    }
+    else
+    {
+      journalTet(mesh.freeListHead());
+      t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    }
     mesh.tetFlags[t] = userBits;
     ids[k] = t;
     const int i = cone.apexAt[k];

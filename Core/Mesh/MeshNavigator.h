@@ -7,6 +7,7 @@
 #include "EditJournal.h"
 #include "FlatHashMap.h"
 #include "TetMesh.h"
+#include "TetSlotPool.h"
 #include "TetStamps.h"
 #include "VertexKeys.h"
 
@@ -29,7 +30,14 @@ public:
     Rescan, // rebuild the map (recovery: MeshEditor)
     Trust   // return the entry (the improvement stages: TetEditor, whose edits and forgetVertex keep it exact)
   };
-  MeshNavigator(TetMesh& mesh, StaleEntries rule);
+  // Whether the navigator keeps the vertex -> tet map (star, findEdge, findFace need it). An editor that only
+  // inserts points (a thread of FieldPointRegions.h) goes without: no whole-mesh scan to build it.
+  enum class VertexMap
+  {
+    Kept,
+    None
+  };
+  MeshNavigator(TetMesh& mesh, StaleEntries rule, VertexMap map = VertexMap::Kept);
   TetMesh& mesh;
 
   // Vertex -> one incident live tet, rebuilt from scratch.
@@ -83,6 +91,10 @@ public:
   EditJournal* journal = nullptr;
   // Optional per-tet-slot labels (region tags): new tets take the first old tet's, resized as tets are made.
   std::vector<int32_t>* labels = nullptr;
+  // Optional slots of this editor's own (TetSlotPool.h): point insertions (replaceByCone) take their new slots
+  // from it and give the freed ones back, instead of the mesh's free list. The caller sizes `labels` to the
+  // mesh's capacity first, so that no thread grows it.
+  TetSlotPool* slotPool = nullptr;
 
 protected:
   // Replaces oldTets by newTets (vertex quadruples, positively oriented, filling the same region): old
@@ -137,6 +149,8 @@ protected:
   // Records t as the tet of vertex v (the edits call it for every vertex of a new tet).
   void mapVertex(int32_t v, int32_t t)
   {
+    if (map_ == VertexMap::None)
+      return;
     if (static_cast<size_t>(v) >= vertTet_.size())
       vertTet_.resize(std::max(static_cast<size_t>(v) + 1, static_cast<size_t>(mesh.numVertices())), -1);
     vertTet_[static_cast<size_t>(v)] = t;
@@ -161,6 +175,7 @@ private:
   std::vector<int32_t> vertTet_;
   std::vector<int32_t> findScratch_;
   StaleEntries stale_;
+  VertexMap map_;
 };
 
 template<class Blocked>

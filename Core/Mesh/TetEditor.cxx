@@ -123,8 +123,8 @@ double sineQualityToDegrees(double q)
 }
 
 // ---------------------------------------------------------------------------------------------------------
-TetEditor::TetEditor(TetMesh& m, const FaceConstraints* c, std::vector<int32_t>* l)
-  : MeshNavigator(m, StaleEntries::Trust)
+TetEditor::TetEditor(TetMesh& m, const FaceConstraints* c, std::vector<int32_t>* l, VertexMap map)
+  : MeshNavigator(m, StaleEntries::Trust, map)
   , constraints(c)
 {
   labels = l;
@@ -220,15 +220,23 @@ struct ConstrainedCavityRule
   const double* p;
   int32_t v;
   static constexpr bool kBlocksAreWalls = true;
+  // With editor.regionLimit: set when a tet outside the region is in conflict (it is left out of the cavity).
+  bool outsideRegion = false;
 
   bool wall(int32_t t, int i) const { return editor.isConstrainedFace(t, i); }
   bool blocks(int32_t t, int i) const { return wall(t, i); }
-  bool conflicts(int32_t u) const
+  bool conflicts(int32_t u)
   {
     const TetMesh& mesh = editor.mesh;
     const int32_t* w = mesh.vertices(u);
-    return predicates::insphereSoSInline(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), p,
-                                         w[0], w[1], w[2], w[3], v) > 0;
+    const bool inSphere = predicates::insphereSoSInline(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]),
+                                                        mesh.point(w[3]), p, w[0], w[1], w[2], w[3], v) > 0;
+    if (inSphere && editor.regionLimit && !editor.regionLimit->owns(w))
+    {
+      outsideRegion = true;
+      return false;
+    }
+    return inSphere;
   }
   int faceSide(int32_t t, int i) const
   {
@@ -328,8 +336,15 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   if (!interiorStart(rule, start))
     return InsertStatus::NotInside;
   // Conflict region not crossing constrained faces, shrunk until strictly star-shaped from p.
+  if (regionLimit && !regionLimit->owns(mesh.vertices(start)))
+    return InsertStatus::Deferred;
   cavity_.start(&start, 1);
   cavity_.grow(rule, SIZE_MAX);
+  if (rule.outsideRegion)
+  {
+    cavity_.release();
+    return InsertStatus::Deferred;
+  }
   if (!cavity_.shrinkToStar(p, rule, &start, 1, 64))
     return InsertStatus::NoCavity;
   if (!buildCone(v, cavity_.starShaped() ? nullptr : p))
@@ -337,7 +352,10 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
     cavity_.release();
     return InsertStatus::NoCavity;
   }
-  const InsertStatus status = checkCavityVertices(v, p, minDistance, nearest);
+  InsertStatus status = checkCavityVertices(v, p, minDistance, nearest);
+  if (status == InsertStatus::Inserted && slotPool &&
+      slotPool->available() + static_cast<int64_t>(cavity_.tets.size()) < static_cast<int64_t>(coneTets_.tets.size()))
+    status = InsertStatus::Deferred;
   if (status != InsertStatus::Inserted)
   {
     cavity_.release();

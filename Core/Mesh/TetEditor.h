@@ -69,7 +69,8 @@ class TetEditor : public MeshNavigator
 {
 public:
   // constraints and labels may be null. labels (one entry per tet slot) is resized as tets are created.
-  TetEditor(TetMesh& mesh, const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr);
+  TetEditor(TetMesh& mesh, const FaceConstraints* constraints = nullptr, std::vector<int32_t>* labels = nullptr,
+            VertexMap map = VertexMap::Kept);
 
   const FaceConstraints* constraints;
   // labels and the undo log (journal) are MeshNavigator's: replace() and the insertions keep both.
@@ -114,8 +115,24 @@ public:
     Inserted,
     NotInside, // p is outside the start tet's closure, or on a constrained face
     TooClose,  // a cavity vertex is closer than minDistance
-    NoCavity   // no valid star-shaped cavity (would swallow a vertex); nothing changed
+    NoCavity,  // no valid star-shaped cavity (would swallow a vertex); nothing changed
+    Deferred   // with a region: the cavity needs a tet outside it, or more slots than slotPool has; nothing changed
   };
+  // Optional limit for a thread that edits one region of the mesh while others edit theirs
+  // (FieldPointRegions.h): vertexRegion[v] is v's region, and insertPoint() removes only tets whose four
+  // vertices are all in `region` (else Deferred). Tets of two different regions never share a face, so
+  // the cavity's outer neighbours are then this region's tets or tets no thread removes.
+  struct RegionLimit
+  {
+    const uint8_t* vertexRegion = nullptr;
+    uint8_t region = 0;
+    bool owns(const int32_t* w) const
+    {
+      return vertexRegion[w[0]] == region && vertexRegion[w[1]] == region && vertexRegion[w[2]] == region &&
+        vertexRegion[w[3]] == region;
+    }
+  };
+  const RegionLimit* regionLimit = nullptr;
   // Insert vertex v (coordinates already in mesh.points, used by no tet) whose position lies in the
   // closure of tet `start`. Rejects it when a vertex of the cavity (which contains the nearest vertex in a
   // Delaunay mesh) is closer than minDistance. nearest (optional) receives that distance.

@@ -121,6 +121,28 @@ void TetMesh::freeTet(int32_t t)
   ++numFree_;
 }
 
+std::vector<int32_t> TetMesh::takeFreeSlots()
+{
+  std::vector<int32_t> slots;
+  slots.reserve(static_cast<size_t>(numFree_));
+  const int32_t n = tetCapacity();
+  for (int32_t t = 0; t < n; ++t)
+    if (tetFlags[t] & kFree)
+      slots.push_back(t);
+  freeHead_ = -1;
+  numFree_ = 0;
+  return slots;
+}
+
+void TetMesh::returnSlot(int32_t t)
+{
+  assert(t >= 0 && t < tetCapacity());
+  tetFlags[t] = kFree;
+  tetNeighbors[4 * static_cast<size_t>(t)] = freeHead_;
+  freeHead_ = t;
+  ++numFree_;
+}
+
 int32_t TetMesh::removeGhostTets()
 {
   int32_t removed = 0;

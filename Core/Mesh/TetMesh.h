@@ -177,6 +177,12 @@ public:
   // Drop the slots from `capacity` on (they must be referenced by nothing and not be on the free list;
   // used after appendTets reserved more slots than a parallel stage needed).
   void truncate(int32_t capacity);
+  // Take every free slot out of circulation (for TetSlotPools), in ascending order: the free list is then
+  // empty; the slots keep their kFree flags and are given back with returnSlot().
+  std::vector<int32_t> takeFreeSlots();
+  // Put a slot that a TetSlotPool kept out of circulation (appended, or freed by a pooled edit) on the
+  // free list: flags kFree, counted free. Its contents are meaningless and nothing references it.
+  void returnSlot(int32_t t);
   // Overwrite the vertices of a live tet (adjusts the ghost count).
   void setTetVertices(int32_t t, int32_t v0, int32_t v1, int32_t v2, int32_t v3);
   // Put t on the free list. Neighbours pointing at t are NOT updated (the caller relinks them).

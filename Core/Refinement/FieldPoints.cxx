@@ -1,5 +1,7 @@
 #include "FieldPoints.h"
 
+#include "FieldPointRegions.h"
+
 #include "LargeMesh.h"
 #include "ParallelFor.h"
 #include "SpatialSort.h"
@@ -80,26 +82,28 @@ double sizeWhereAPointIsWanted(const TetMesh& mesh, const SizingField& sizing, c
   return dm > options.alpha * h || big ? h : 0;
 }
 
-// sizeWhereAPointIsWanted for the tets todo[begin, end) of pass `pass`, ahead of the insertions among them. A
-// tet the pass reaches alive and not born in the pass is unchanged since the pass began, so the answers are
-// those the pass would get; they depend on nothing else, so the tets are split across threads when the
-// field allows. (A block at a time: the insertions that follow find its tets still in the caches.) Tets
-// that earlier insertions of the pass already destroyed are skipped: the pass skips them too.
+// sizeWhereAPointIsWanted for the tets todo[order[begin, end)] of pass `pass` (order null: todo[begin, end)),
+// ahead of the insertions among them. A tet the pass reaches alive and not born in the pass is unchanged since
+// the pass began, so the answers are those the pass would get; they depend on nothing else, so the tets are
+// split across threads when the field allows. (A block at a time: the insertions that follow find its tets
+// still in the caches.) Tets that earlier insertions of the pass already destroyed are skipped: the pass
+// skips them too.
 void testTets(const TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options, double hVol,
-              const std::vector<int32_t>& birth, int pass, const std::vector<int32_t>& todo, size_t begin,
-              size_t end, std::vector<double>& wanted)
+              const std::vector<int32_t>& birth, int pass, const std::vector<int32_t>& todo, const size_t* order,
+              size_t begin, size_t end, std::vector<double>& wanted)
 {
   wanted.resize(todo.size());
   const int threads = sizing.evaluatesConcurrently() ? options.threads : 1;
   parallelFor(threads, static_cast<int64_t>(end - begin), 8192,
               [&](int, int64_t from, int64_t to)
               {
-                for (size_t k = begin + static_cast<size_t>(from); k < begin + static_cast<size_t>(to); ++k)
+                for (size_t n = begin + static_cast<size_t>(from); n < begin + static_cast<size_t>(to); ++n)
                 {
+                  const size_t k = order ? order[n] : n;
                   const int32_t t = todo[k];
                   wanted[k] = unchangedSincePassBegan(mesh, birth, pass, t)
-                                ? sizeWhereAPointIsWanted(mesh, sizing, options, hVol, t)
-                                : 0;
+                    ? sizeWhereAPointIsWanted(mesh, sizing, options, hVol, t)
+                    : 0;
                 }
               });
 }
@@ -147,11 +151,12 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
     return Status::failure(ErrorKind::InvalidOption, "Field points are inserted into a mesh without ghost tets.");
   FieldPointReport local;
   FieldPointReport& report = reportOut ? *reportOut : local;
-  TetEditor editor(mesh, constraints, labels);
+  TetEditor editor(mesh, constraints, labels, TetEditor::VertexMap::None);
   // h cap from maxVolume: edge of the regular tet of that volume, V = L^3 / (6 sqrt 2).
   const double hVol = options.maxVolume > 0 ? std::cbrt(options.maxVolume * 6.0 * std::sqrt(2.0)) : 0;
   std::vector<int32_t> birth(static_cast<size_t>(mesh.tetCapacity()), 0), created, todo, bornThisPass;
   std::vector<double> wanted;
+  FieldPointRegions regionInserter(editor, options.threads);
   mesh.forEachTet([&](int32_t t) { todo.push_back(t); }); // the first pass examines every tet
   int64_t total = 0;
   for (int pass = 1; pass <= options.maxPasses; ++pass)
@@ -163,25 +168,13 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
       sortAlongHilbertCurve(mesh, todo);
     bornThisPass.clear();
     int64_t insertedThisPass = 0;
-    for (size_t k = 0, tested = 0; k < todo.size(); ++k)
+    // One candidate, on this thread: false when the point cap is reached.
+    auto insertCandidate = [&](size_t k)
     {
-      if (k == tested)
-      {
-        if (progress && progress->cancelled())
-          return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
-        tested = std::min(todo.size(), k + kTestBlock);
-        testTets(mesh, sizing, options, hVol, birth, pass, todo, k, tested, wanted);
-      }
-      if (((k + 1) & 4095) == 0 && progress)
-      {
-        if (progress->cancelled())
-          return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
-        progress->report(std::min(1.0, (pass - 1 + double(k + 1) / todo.size()) / 8.0), "Creating field points");
-      }
       const int32_t t = todo[k];
       const double h = wanted[k];
       if (!(h > 0) || !unchangedSincePassBegan(mesh, birth, pass, t))
-        continue; // no point wanted, or destroyed (or its slot reused) by an insertion of this pass
+        return true; // no point wanted, or destroyed (or its slot reused) by an insertion of this pass
       const int32_t* v = mesh.vertices(t);
       const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *c = mesh.point(v[2]), *d = mesh.point(v[3]);
       const double cen[3] = { (a[0] + b[0] + c[0] + d[0]) / 4, (a[1] + b[1] + c[1] + d[1]) / 4,
@@ -190,7 +183,7 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
       if (inside && !inside(cen))
       {
         ++report.rejectedOther;
-        continue;
+        return true;
       }
       const int32_t nv = mesh.addPoint(cen);
       const auto st = editor.insertPoint(nv, t, options.beta * h, nullptr, &created);
@@ -198,7 +191,7 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
       {
         mesh.points.resize(mesh.points.size() - 3);
         (st == TetEditor::InsertStatus::TooClose ? report.rejectedSpacing : report.rejectedOther)++;
-        continue;
+        return true;
       }
       if (birth.size() < static_cast<size_t>(mesh.tetCapacity()))
         birth.resize(static_cast<size_t>(mesh.tetCapacity()) + 1024, -1);
@@ -207,9 +200,62 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
       bornThisPass.insert(bornThisPass.end(), created.begin(), created.end());
       ++insertedThisPass;
       ++total;
-      if (options.maxPoints >= 0 && total >= options.maxPoints)
-        break;
+      return !(options.maxPoints >= 0 && total >= options.maxPoints);
+    };
+    // The tets todo[order[0, count)] (order null: todo[0, count)), one after the other on this thread, their
+    // sizes asked a block at a time. False when cancelled.
+    auto insertInOrder = [&](const size_t* order, size_t count)
+    {
+      for (size_t n = 0, tested = 0; n < count; ++n)
+      {
+        if (n == tested)
+        {
+          if (progress && progress->cancelled())
+            return false;
+          tested = std::min(count, n + kTestBlock);
+          testTets(mesh, sizing, options, hVol, birth, pass, todo, order, n, tested, wanted);
+        }
+        if (((n + 1) & 4095) == 0 && progress)
+        {
+          if (progress->cancelled())
+            return false;
+          progress->report(std::min(1.0, (pass - 1 + double(n + 1) / count) / 8.0), "Creating field points");
+        }
+        if (!insertCandidate(order ? order[n] : n))
+          break;
+      }
+      return true;
+    };
+    const int regions = inside || options.maxPoints >= 0 ? 1 : fieldPointRegionCount(options.regionTets, todo.size());
+    bool finished = true;
+    if (regions > 1)
+    {
+      // A large pass: its regions on the threads, then what they left, here (FieldPointRegions.h).
+      FieldPointPass fp;
+      fp.todo = &todo;
+      fp.birth = &birth;
+      fp.pass = pass;
+      fp.beta = options.beta;
+      fp.sizeWanted = [&](int32_t t) { return sizeWhereAPointIsWanted(mesh, sizing, options, hVol, t); };
+      fp.sizeWantedConcurrently = sizing.evaluatesConcurrently();
+      FieldPointRegionOutcome out;
+      const Status s = regionInserter.insertPass(fp, regions, progress, out);
+      insertedThisPass += out.inserted;
+      total += out.inserted;
+      report.candidates += out.candidates;
+      report.rejectedSpacing += out.rejectedSpacing;
+      report.rejectedOther += out.rejectedOther;
+      report.insertedInRegions += out.inserted;
+      report.deferredToOneThread += static_cast<int64_t>(out.deferred.size());
+      bornThisPass.swap(out.created);
+      if (!s.ok())
+        return s;
+      finished = insertInOrder(out.deferred.data(), out.deferred.size());
     }
+    else
+      finished = insertInOrder(nullptr, todo.size());
+    if (!finished)
+      return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
     report.passes = pass;
     report.insertedPerPass.push_back(insertedThisPass);
     report.inserted += insertedThisPass;

@@ -57,15 +57,21 @@ struct FieldPointOptions
   // From this many tets in a pass (LargeMesh.h), the order of the tets follows space instead of the slots
   // (FieldPoints.cxx, tetsBornIn). Tests set it low to reach that order on small meshes.
   int64_t largeMeshTets = kLargeMeshTets;
+  // A pass of at least 2 x regionTets tets is inserted by regions of space on the threads
+  // (FieldPointRegions.h), each of about regionTets tets or more; 0 = the default. The mesh does not depend
+  // on the thread count; it does on this (tests set it low to reach regions on small meshes).
+  int64_t regionTets = 0;
 };
 
 struct FieldPointReport
 {
   int passes = 0;
   int64_t inserted = 0;
-  int64_t candidates = 0;      // centroids that passed eq. 4
-  int64_t rejectedSpacing = 0; // eq. 5
-  int64_t rejectedOther = 0;   // outside (inside() false), no valid cavity
+  int64_t candidates = 0;          // centroids that passed eq. 4
+  int64_t rejectedSpacing = 0;     // eq. 5
+  int64_t rejectedOther = 0;       // outside (inside() false), no valid cavity
+  int64_t insertedInRegions = 0;   // of `inserted`, by the regions of large passes (FieldPointRegions.h)
+  int64_t deferredToOneThread = 0; // candidates the regions of a large pass left for one thread
   std::vector<int64_t> insertedPerPass;
   // Clustering.
   int64_t clusterInserted = 0;

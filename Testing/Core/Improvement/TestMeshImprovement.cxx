@@ -450,7 +450,8 @@ TEST(MeshImprovement, ACapInsideABoxOfTwelveTrianglesHolds)
 }
 
 // From OptimizationOptions::largeMeshTets on, the stage works in memory order (spatial renumbering, flips by
-// slot, smoothing in colour classes on all threads, one run with vertex collapses from the start). Forced
+// slot, smoothing in colour classes on all threads, one run with vertex collapses from the start), and from
+// 2 x FieldPointOptions::regionTets tets a field point pass is inserted by regions on the threads. Both forced
 // here on the small sphere-in-sphere domain: the mesh is valid with the exact boundary and volume, as good
 // as the small-mesh path's within 3 degrees, and the same mesh at 1, 2 and 8 threads (README: Threads).
 TEST(MeshImprovement, LargeMeshPathIsExactAndTheSameOnAnyThreadCount)
@@ -464,7 +465,9 @@ TEST(MeshImprovement, LargeMeshPathIsExactAndTheSameOnAnyThreadCount)
     MesherOptions o;
     o.threads = threads;
     o.improvement.optimization.largeMeshTets = 0;
+    o.improvement.fieldPointOptions.regionTets = 2048;
     results.push_back(meshChecked(s, o, "large-mesh path"));
+    EXPECT_GT(results.back().stats.improvement.fieldPointsInRegions, 0) << threads;
     const DihedralSummary d = dihedralsOf(results.back());
     EXPECT_EQ(d.inverted, 0) << threads;
     EXPECT_GE(d.minDihedral, ds.minDihedral - 3.0) << threads;
@@ -486,36 +489,43 @@ TEST(MeshImprovement, KeepAllRegionsKeepsTheirInterface)
 {
   // Two nested spheres with KeepAll: the inner sphere is an interface between two regions; field points
   // and optimisation never cross it, and every input triangle is still a face.
+  // Also with the field points inserted by regions (FieldPointRegions.h), whose cavities stop at the interface
+  // as well.
   const SurfaceMesh s =
     combine(enclosure(EnclosureShape::Sphere, 2.0, 0.4), enclosure(EnclosureShape::Sphere, 1.0, 0.2));
-  MesherOptions o;
-  o.regionRule = RegionRule::KeepAll;
-  MesherResult r;
-  ASSERT_TRUE(meshSurface(s, o, r).ok());
-  EXPECT_EQ(r.stats.regions, 2);
-  EXPECT_GT(r.stats.improvement.interfaceFaces, 0);
-  EXPECT_EQ(r.boundaryTriangles.size(), s.triangles.size());
-  const BoundaryCheckReport br =
-    checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
-  EXPECT_TRUE(br.meshValid()) << br.summary();
-  EXPECT_EQ(br.inputTrianglesNotFaces, 0);
-  // One label inside the inner sphere, another outside it: no tet straddles the interface.
-  std::set<int32_t> inner, outer;
-  for (size_t t = 0; t < r.tetRegion.size(); ++t)
+  for (const int64_t regionTets : { int64_t{ 0 }, int64_t{ 512 } })
   {
-    double c[3] = { 0, 0, 0 };
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k)
-        c[k] += r.points[3 * size_t(r.tets[4 * t + i]) + k] / 4;
-    const double rc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    if (rc < 0.9)
-      inner.insert(r.tetRegion[t]);
-    else if (rc > 1.02)
-      outer.insert(r.tetRegion[t]);
+    MesherOptions o;
+    o.regionRule = RegionRule::KeepAll;
+    o.improvement.fieldPointOptions.regionTets = regionTets;
+    MesherResult r;
+    ASSERT_TRUE(meshSurface(s, o, r).ok());
+    EXPECT_EQ(r.stats.improvement.fieldPointsInRegions > 0, regionTets > 0);
+    EXPECT_EQ(r.stats.regions, 2);
+    EXPECT_GT(r.stats.improvement.interfaceFaces, 0);
+    EXPECT_EQ(r.boundaryTriangles.size(), s.triangles.size());
+    const BoundaryCheckReport br =
+      checkBoundaryConformity(r.points, r.numInputPoints, r.tets, s.triangles, r.stats.enclosedVolume);
+    EXPECT_TRUE(br.meshValid()) << br.summary();
+    EXPECT_EQ(br.inputTrianglesNotFaces, 0);
+    // One label inside the inner sphere, another outside it: no tet straddles the interface.
+    std::set<int32_t> inner, outer;
+    for (size_t t = 0; t < r.tetRegion.size(); ++t)
+    {
+      double c[3] = { 0, 0, 0 };
+      for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k)
+          c[k] += r.points[3 * size_t(r.tets[4 * t + i]) + k] / 4;
+      const double rc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      if (rc < 0.9)
+        inner.insert(r.tetRegion[t]);
+      else if (rc > 1.02)
+        outer.insert(r.tetRegion[t]);
+    }
+    EXPECT_EQ(inner.size(), 1u);
+    EXPECT_EQ(outer.size(), 1u);
+    EXPECT_NE(*inner.begin(), *outer.begin());
   }
-  EXPECT_EQ(inner.size(), 1u);
-  EXPECT_EQ(outer.size(), 1u);
-  EXPECT_NE(*inner.begin(), *outer.begin());
 }
 
 TEST(MeshImprovement, BadOptionsAndTetListsAreReported)

@@ -64,6 +64,24 @@ std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
   return faces;
 }
 
+// Pairs of vertices closer than eq. 5 allows, a field point (number n0 on) being one of them: beta x its size
+// from an earlier vertex, beta x the smaller size from another field point (whichever came first).
+int64_t spacingViolations(const TetMesh& m, int32_t n0, const SizingField& sizing, double beta)
+{
+  const int32_t n = m.numVertices();
+  std::vector<double> h(static_cast<size_t>(n));
+  for (int32_t v = n0; v < n; ++v)
+    h[v] = sizing.evaluate(m.point(v));
+  int64_t violations = 0;
+  for (int32_t a = n0; a < n; ++a)
+    for (int32_t b = 0; b < a; ++b)
+    {
+      const double limit = b < n0 ? beta * h[a] : beta * std::min(h[a], h[b]);
+      violations += dist(m.point(a), m.point(b)) < limit * (1 - 1e-9);
+    }
+  return violations;
+}
+
 // Mean length of the distinct edges with both ends within radius r of c.
 double meanEdgeNear(const TetMesh& m, const double* c, double r)
 {
@@ -126,19 +144,7 @@ TEST(FieldPoints, BetaSpacingHoldsAndBoundaryIsKept)
     {
       EXPECT_GT(rep.rejectedSpacing, 0);
     }
-    std::vector<double> h(static_cast<size_t>(n));
-    for (int32_t v = n0; v < n; ++v)
-      h[v] = d.sizing.evaluate(d.mesh.point(v));
-    int64_t violations = 0;
-    for (int32_t a = n0; a < n; ++a)
-    {
-      for (int32_t b = 0; b < a; ++b)
-      {
-        const double limit = b < n0 ? beta * h[a] : beta * std::min(h[a], h[b]);
-        violations += dist(d.mesh.point(a), d.mesh.point(b)) < limit * (1 - 1e-9);
-      }
-    }
-    EXPECT_EQ(violations, 0) << "beta " << beta;
+    EXPECT_EQ(spacingViolations(d.mesh, n0, d.sizing, beta), 0) << "beta " << beta;
     EXPECT_EQ(hullFaces(d.mesh), faces0);
     const MeshCheckReport check = checkMesh(d.mesh); // still Delaunay: insertion is Bowyer-Watson
     EXPECT_TRUE(check.valid) << check.summary();
@@ -392,4 +398,76 @@ TEST(FieldPoints, SameMeshOnAnyThreadCount)
     EXPECT_EQ(mesh.tetVertices, reference.tetVertices) << threads;
     EXPECT_EQ(mesh.tetNeighbors, reference.tetNeighbors) << threads;
   }
+}
+
+// A large pass is inserted by regions of space on the threads (FieldPointRegions.h; regionTets lowered here
+// so that this small mesh is cut into up to 16 regions): the points and tets are the same, bit for bit, on
+// any thread count; the mesh is still a valid Delaunay mesh with the same boundary; eq. 5's spacing holds
+// across region borders; and most points were inserted by the regions, the rest by one thread after them.
+TEST(FieldPoints, RegionsGiveTheSameMeshOnAnyThreadCount)
+{
+  Domain base;
+  makeDomain(base, EnclosureShape::Box, 0.1);
+  SizingField sizing;
+  sizing.setUserFunction([](const double* p) { return 0.032 + 0.02 * (p[0] + 0.5); }, /*threadSafe=*/true);
+  ASSERT_TRUE(sizing.buildUniform(1e300, SizingOptions()).ok());
+  const auto boundary = hullFaces(base.mesh);
+  const int32_t n0 = base.mesh.numVertices();
+  TetMesh reference;
+  for (const int threads : { 1, 2, 8 })
+  {
+    TetMesh mesh = base.mesh;
+    FieldPointOptions o;
+    o.threads = threads;
+    o.beta = 0.6;
+    o.largeMeshTets = 20000;
+    o.regionTets = 1024;
+    FieldPointReport report;
+    ASSERT_TRUE(insertFieldPoints(mesh, sizing, o, nullptr, nullptr, nullptr, nullptr, &report).ok());
+    const MeshCheckReport check = checkMesh(mesh); // still Delaunay: a region inserts a point whole, or defers it
+    EXPECT_TRUE(check.valid) << threads << ": " << check.summary();
+    EXPECT_EQ(hullFaces(mesh), boundary) << threads;
+    if (threads == 1)
+    {
+      EXPECT_GT(report.insertedInRegions, report.inserted / 2);
+      EXPECT_GT(report.deferredToOneThread, 0);
+      EXPECT_EQ(spacingViolations(mesh, n0, sizing, o.beta), 0);
+      reference = mesh;
+      continue;
+    }
+    EXPECT_EQ(mesh.points, reference.points) << threads;
+    EXPECT_EQ(mesh.tetVertices, reference.tetVertices) << threads;
+    EXPECT_EQ(mesh.tetNeighbors, reference.tetNeighbors) << threads;
+    EXPECT_EQ(mesh.tetFlags, reference.tetFlags) << threads;
+  }
+}
+
+// Cancelled while the regions run: Cancelled, and the mesh left behind is still valid (the regions' points
+// renumbered, their spare slots on the free list).
+TEST(FieldPoints, CancelledRegionsLeaveAValidMesh)
+{
+  Domain d;
+  makeDomain(d, EnclosureShape::Box, 0.1);
+  SizingField sizing;
+  sizing.setUserFunction([](const double*) { return 0.03; }, /*threadSafe=*/true);
+  ASSERT_TRUE(sizing.buildUniform(1e300, SizingOptions()).ok());
+  struct CancelLater final : Progress
+  {
+    int calls = 0;
+    void report(double, const char*) override {}
+    bool cancelled() override { return ++calls > 12; }
+  } progress;
+  FieldPointOptions o;
+  o.threads = 2;
+  o.regionTets = 1024;
+  FieldPointReport report;
+  const Status s = insertFieldPoints(d.mesh, sizing, o, nullptr, nullptr, nullptr, &progress, &report);
+  EXPECT_EQ(s.kind, ErrorKind::Cancelled);
+  EXPECT_GT(report.insertedInRegions, 0);
+  const MeshCheckReport check = checkMesh(d.mesh);
+  EXPECT_TRUE(check.valid) << check.summary();
+  int32_t freeSlots = 0; // every slot marked free is counted free (the regions gave back all they kept)
+  for (int32_t t = 0; t < d.mesh.tetCapacity(); ++t)
+    freeSlots += d.mesh.isFree(t);
+  EXPECT_EQ(freeSlots, d.mesh.numFreeTets());
 }
