@@ -78,6 +78,26 @@ public:
         out.push_back(t);
   }
 
+  // After edits that touched only `changed` (slots, repeats allowed; free ones included): the list is what
+  // a new sweep would give, from those slots alone.
+  void update(std::vector<int32_t>& changed)
+  {
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    auto touched = [&](int32_t t) { return std::binary_search(changed.begin(), changed.end(), t); };
+    tets_.erase(std::remove_if(tets_.begin(), tets_.end(), [&](const auto& e) { return touched(e.second); }),
+                tets_.end());
+    for (int32_t t : changed)
+    {
+      if (t >= mesh_.tetCapacity() || mesh_.isFree(t))
+        continue;
+      const double q = tetQuality(mesh_, t);
+      if (q < limit_)
+        tets_.emplace_back(q, t);
+    }
+    std::sort(tets_.begin(), tets_.end());
+  }
+
   // The mesh's smallest dihedral angle (of the six angles of each tet).
   double smallestAngle() const
   {
@@ -500,7 +520,6 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   TetEditor editor(mesh, constraints, labels);
   EditJournal journal; // undo of an attempt and of a round (no copy of the mesh)
   editor.journal = &journal;
-  editor.rebuildVertexMap();
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
     for (size_t v = 0; v < std::min(lock.size(), locked->size()); ++v)
@@ -514,7 +533,8 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   std::pair<double, double> lastRange{ 0, 0 }; // the dihedral range after the previous round
   // The tets a round looks at lie within aboveWorst of the worst, which is rarely above the plateau.
   const double lowLimit = degreesToQuality(options.plateauDegrees + 2 * options.aboveWorst);
-  std::unique_ptr<LowTets> low; // the sweep of the mesh as it is now
+  std::unique_ptr<LowTets> low; // the tets under lowLimit in the mesh as it is now
+  std::vector<int32_t> changed, moved, star;
   for (int round = 0; round < options.rounds; ++round)
   {
     // The worst tets: those within aboveWorst degrees of the worst one, at most tetsPerRound (a tet tried in
@@ -582,7 +602,16 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
       progress->report((round + 1.0) / options.rounds, "Optimising");
     if (kept == keptBefore)
       break;
-    low = std::make_unique<LowTets>(mesh, lowLimit, options.threads); // the next round's sweep as well
+    // The next round's list: this one with the tets the kept attempts changed (no sweep of the mesh).
+    journal.changedSince(before, changed, moved);
+    for (int32_t t = before.capacity; t < mesh.tetCapacity(); ++t)
+      changed.push_back(t);
+    for (int32_t v : moved)
+    {
+      editor.star(v, star);
+      changed.insert(changed.end(), star.begin(), star.end());
+    }
+    low->update(changed);
     const std::pair<double, double> rangeAfter = low->range();
     lastRange = rangeAfter;
     if (!(rangeAfter.first > rangeBefore.first) && rangeAfter.second > rangeBefore.second)

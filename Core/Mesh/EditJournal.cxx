@@ -39,6 +39,16 @@ void EditJournal::savePoint(const TetMesh& mesh, int32_t v)
   points_.push_back({ v, { p[0], p[1], p[2] } });
 }
 
+void EditJournal::changedSince(const Mark& m, std::vector<int32_t>& slots, std::vector<int32_t>& points) const
+{
+  slots.clear();
+  points.clear();
+  for (size_t k = m.tets; k < tets_.size(); ++k)
+    slots.push_back(tets_[k].t);
+  for (size_t k = m.points; k < points_.size(); ++k)
+    points.push_back(points_[k].v);
+}
+
 void EditJournal::rollback(const Mark& mark, TetMesh& mesh, std::vector<int32_t>* labels)
 {
   assert(mark.tets <= tets_.size() && mark.points <= points_.size());

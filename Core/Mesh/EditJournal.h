@@ -38,6 +38,10 @@ public:
   void saveTet(const TetMesh& mesh, const std::vector<int32_t>* labels, int32_t t);
   // Vertex v's position before a move.
   void savePoint(const TetMesh& mesh, int32_t v);
+  // What the edits since mark m touched: the slots saved (tets removed, reused or relinked) and the vertices
+  // moved, each as often as it was saved. A slot appended since (from m.capacity on) is listed only when a
+  // later edit wrote it again: callers add that range themselves.
+  void changedSince(const Mark& m, std::vector<int32_t>& slots, std::vector<int32_t>& points) const;
   // Back to the mark (see above); the log is cut back to it.
   void rollback(const Mark& mark, TetMesh& mesh, std::vector<int32_t>* labels);
   void clear();

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -90,4 +91,39 @@ TEST(EditJournal, RollbackRestoresTheMeshAndLabelsExactly)
   EXPECT_TRUE(checkMesh(mesh, o).valid) << checkMesh(mesh, o).summary();
   EXPECT_GT(edit(ed, 10, 0), 0);
   EXPECT_TRUE(checkMesh(mesh, o).valid) << checkMesh(mesh, o).summary();
+}
+
+// changedSince() tells what the edits since a mark touched: every slot of the mark's capacity whose content
+// differs is listed (slots appended since are the caller's to add), and the moved vertices are listed.
+TEST(EditJournal, ChangedSinceListsEveryChangedSlotAndMovedPoint)
+{
+  TetMesh mesh;
+  randomDelaunay(mesh, 400);
+  TetEditor ed(mesh, nullptr, nullptr);
+  EditJournal journal;
+  ed.journal = &journal;
+  ASSERT_GT(edit(ed, 20, 0), 0); // free slots for the edits below to reuse
+  const TetMesh start = mesh;
+  const EditJournal::Mark mark = journal.mark(mesh, nullptr);
+  ASSERT_GT(edit(ed, 30, 100), 0);
+  journal.savePoint(mesh, 7);
+  mesh.points[21] += 0.001;
+  std::vector<int32_t> slots, points;
+  journal.changedSince(mark, slots, points);
+  EXPECT_EQ(points, std::vector<int32_t>{ 7 });
+  std::sort(slots.begin(), slots.end());
+  int32_t changed = 0;
+  for (int32_t t = 0; t < start.tetCapacity(); ++t)
+  {
+    const bool same = std::equal(mesh.vertices(t), mesh.vertices(t) + 4, start.vertices(t)) &&
+      mesh.tetFlags[t] == start.tetFlags[t] &&
+      std::equal(mesh.tetNeighbors.begin() + 4 * t, mesh.tetNeighbors.begin() + 4 * t + 4,
+                 start.tetNeighbors.begin() + 4 * t);
+    if (!same)
+    {
+      ++changed;
+      EXPECT_TRUE(std::binary_search(slots.begin(), slots.end(), t)) << "slot " << t;
+    }
+  }
+  EXPECT_GT(changed, 30);
 }
