@@ -51,8 +51,9 @@ struct FieldPointOptions
   // tets larger than maxVolume skip the eq. 4 test (eq. 5 still applies).
   double maxVolume = 0;
   // The tets of a pass are tested against eq. 4 on this many threads (ParallelFor.h's rule) when the
-  // sizing field can be evaluated concurrently (SizingField::evaluatesConcurrently), else on one. The
-  // points are inserted one after the other, in the same order for any count: the mesh is the same.
+  // sizing field can be evaluated concurrently (SizingField::evaluatesConcurrently), else on one. A large
+  // pass's points are inserted by regions on them too (regionTets); the rest one after the other. The mesh
+  // is the same for any count.
   int threads = 1;
   // From this many tets in a pass (LargeMesh.h), the order of the tets follows space instead of the slots
   // (FieldPoints.cxx, tetsBornIn). Tests set it low to reach that order on small meshes.

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <set>
 #include <vector>
 
@@ -362,10 +363,12 @@ TEST(FieldPoints, OnlyAThreadSafeFieldIsEvaluatedConcurrently)
   EXPECT_TRUE(uniform.evaluatesConcurrently());
 }
 
-// The tets of a pass are tested on several threads, and from largeMeshTets (lowered here, so that this
-// small mesh reaches it) the passes take their tets in the order the insertions created them: the points
-// and tets are the same, bit for bit, on any thread count, and the mesh is a valid Delaunay mesh.
-TEST(FieldPoints, SameMeshOnAnyThreadCount)
+// Field points with `o` on copies of a box's boundary mesh, on 1, 2 and 8 threads, with a size that grows
+// along x: every mesh is a valid Delaunay mesh (insertion is Bowyer-Watson; a region inserts a point whole
+// or defers it) with the box's boundary, and the same bit for bit as on one thread. onOneThread sees the
+// first run's mesh, report and number of vertices before the field points.
+void expectTheSameMeshOnAnyThreadCount(
+  FieldPointOptions o, const std::function<void(const TetMesh&, const FieldPointReport&, int32_t)>& onOneThread)
 {
   Domain base;
   makeDomain(base, EnclosureShape::Box, 0.1);
@@ -377,61 +380,15 @@ TEST(FieldPoints, SameMeshOnAnyThreadCount)
   for (const int threads : { 1, 2, 8 })
   {
     TetMesh mesh = base.mesh;
-    FieldPointOptions o;
     o.threads = threads;
-    o.largeMeshTets = 20000;
     FieldPointReport report;
     ASSERT_TRUE(insertFieldPoints(mesh, sizing, o, nullptr, nullptr, nullptr, nullptr, &report).ok());
-    const MeshCheckReport check = checkMesh(mesh); // still Delaunay: insertion is Bowyer-Watson
+    const MeshCheckReport check = checkMesh(mesh);
     EXPECT_TRUE(check.valid) << threads << ": " << check.summary();
     EXPECT_EQ(hullFaces(mesh), boundary) << threads;
     if (threads == 1)
     {
-      // A pass that creates more than largeMeshTets tets (at least 20 a point), so that the next one
-      // takes them in creation order and splits them across threads (from 2 x 8192 tets).
-      const int64_t most = *std::max_element(report.insertedPerPass.begin(), report.insertedPerPass.end());
-      ASSERT_GT(most * 20, 20000);
-      reference = mesh;
-      continue;
-    }
-    EXPECT_EQ(mesh.points, reference.points) << threads;
-    EXPECT_EQ(mesh.tetVertices, reference.tetVertices) << threads;
-    EXPECT_EQ(mesh.tetNeighbors, reference.tetNeighbors) << threads;
-  }
-}
-
-// A large pass is inserted by regions of space on the threads (FieldPointRegions.h; regionTets lowered here
-// so that this small mesh is cut into up to 16 regions): the points and tets are the same, bit for bit, on
-// any thread count; the mesh is still a valid Delaunay mesh with the same boundary; eq. 5's spacing holds
-// across region borders; and most points were inserted by the regions, the rest by one thread after them.
-TEST(FieldPoints, RegionsGiveTheSameMeshOnAnyThreadCount)
-{
-  Domain base;
-  makeDomain(base, EnclosureShape::Box, 0.1);
-  SizingField sizing;
-  sizing.setUserFunction([](const double* p) { return 0.032 + 0.02 * (p[0] + 0.5); }, /*threadSafe=*/true);
-  ASSERT_TRUE(sizing.buildUniform(1e300, SizingOptions()).ok());
-  const auto boundary = hullFaces(base.mesh);
-  const int32_t n0 = base.mesh.numVertices();
-  TetMesh reference;
-  for (const int threads : { 1, 2, 8 })
-  {
-    TetMesh mesh = base.mesh;
-    FieldPointOptions o;
-    o.threads = threads;
-    o.beta = 0.6;
-    o.largeMeshTets = 20000;
-    o.regionTets = 1024;
-    FieldPointReport report;
-    ASSERT_TRUE(insertFieldPoints(mesh, sizing, o, nullptr, nullptr, nullptr, nullptr, &report).ok());
-    const MeshCheckReport check = checkMesh(mesh); // still Delaunay: a region inserts a point whole, or defers it
-    EXPECT_TRUE(check.valid) << threads << ": " << check.summary();
-    EXPECT_EQ(hullFaces(mesh), boundary) << threads;
-    if (threads == 1)
-    {
-      EXPECT_GT(report.insertedInRegions, report.inserted / 2);
-      EXPECT_GT(report.deferredToOneThread, 0);
-      EXPECT_EQ(spacingViolations(mesh, n0, sizing, o.beta), 0);
+      onOneThread(mesh, report, base.mesh.numVertices());
       reference = mesh;
       continue;
     }
@@ -440,6 +397,46 @@ TEST(FieldPoints, RegionsGiveTheSameMeshOnAnyThreadCount)
     EXPECT_EQ(mesh.tetNeighbors, reference.tetNeighbors) << threads;
     EXPECT_EQ(mesh.tetFlags, reference.tetFlags) << threads;
   }
+}
+
+// The tets of a pass are tested on several threads, and from largeMeshTets (lowered here, so that this
+// small mesh reaches it) the passes take their tets in the order the insertions created them.
+TEST(FieldPoints, SameMeshOnAnyThreadCount)
+{
+  FieldPointOptions o;
+  o.largeMeshTets = 20000;
+  expectTheSameMeshOnAnyThreadCount(o,
+                                    [](const TetMesh&, const FieldPointReport& report, int32_t)
+                                    {
+                                      // A pass that creates more than largeMeshTets tets (at least 20 a
+                                      // point), so that the next one takes them in creation order and
+                                      // splits them across threads (from 2 x 8192 tets).
+                                      const int64_t most =
+                                        *std::max_element(report.insertedPerPass.begin(), report.insertedPerPass.end());
+                                      EXPECT_GT(most * 20, 20000);
+                                      EXPECT_EQ(report.insertedInRegions, 0);
+                                    });
+}
+
+// A large pass is inserted by regions of space on the threads (FieldPointRegions.h; regionTets lowered here
+// so that this small mesh is cut into up to 16 regions): the same mesh on any thread count; eq. 5's spacing
+// holds across region borders; most points were inserted by the regions, the rest by one thread after them.
+TEST(FieldPoints, RegionsGiveTheSameMeshOnAnyThreadCount)
+{
+  FieldPointOptions o;
+  o.beta = 0.6;
+  o.largeMeshTets = 20000;
+  o.regionTets = 1024;
+  SizingField sizing;
+  sizing.setUserFunction([](const double* p) { return 0.032 + 0.02 * (p[0] + 0.5); }, /*threadSafe=*/true);
+  ASSERT_TRUE(sizing.buildUniform(1e300, SizingOptions()).ok());
+  expectTheSameMeshOnAnyThreadCount(o,
+                                    [&](const TetMesh& mesh, const FieldPointReport& report, int32_t n0)
+                                    {
+                                      EXPECT_GT(report.insertedInRegions, report.inserted / 2);
+                                      EXPECT_GT(report.deferredToOneThread, 0);
+                                      EXPECT_EQ(spacingViolations(mesh, n0, sizing, o.beta), 0);
+                                    });
 }
 
 // Cancelled while the regions run: Cancelled, and the mesh left behind is still valid (the regions' points
