@@ -340,7 +340,8 @@ Status FieldPointRegions::insertPass(const FieldPointPass& pass, int regions, Pr
                 for (int r = nextRegion++; r < regions && !stop.load(); r = nextRegion++)
                 {
                   if (worker == 0 && progress)
-                    progress->report(double(r) / regions, "Creating field points");
+                    progress->report(std::min(1.0, (pass.pass - 1 + double(r) / regions) / 8.0),
+                                     "Creating field points"); // as FieldPoints.cxx reports a pass
                   insertRegion(editor, shared, static_cast<uint8_t>(r), works[static_cast<size_t>(r)]);
                 }
               });
