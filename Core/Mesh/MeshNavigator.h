@@ -93,7 +93,7 @@ public:
   std::vector<int32_t>* labels = nullptr;
   // Optional slots of this editor's own (TetSlotPool.h): point insertions (replaceByCone) take their new slots
   // from it and give the freed ones back, instead of the mesh's free list. The caller sizes `labels` to the
-  // mesh's capacity first, so that no thread grows it.
+  // mesh's capacity first, so that no thread grows it. Not with a journal (pooled slots are not saved).
   TetSlotPool* slotPool = nullptr;
 
 protected:

@@ -332,12 +332,13 @@ TetEditor::InsertStatus TetEditor::insertPoint(int32_t v, int32_t start, double 
   const double* p = mesh.point(v);
   if (start < 0 || mesh.isFree(start))
     return InsertStatus::NotInside;
+  if (regionLimit && !regionLimit->owns(mesh.vertices(start)))
+    return InsertStatus::Deferred;
   ConstrainedCavityRule rule{ *this, p, v };
   if (!interiorStart(rule, start))
     return InsertStatus::NotInside;
-  // Conflict region not crossing constrained faces, shrunk until strictly star-shaped from p.
-  if (regionLimit && !regionLimit->owns(mesh.vertices(start)))
-    return InsertStatus::Deferred;
+  // Conflict region not crossing constrained faces (nor, with a region limit, leaving the region), shrunk
+  // until strictly star-shaped from p.
   cavity_.start(&start, 1);
   cavity_.grow(rule, SIZE_MAX);
   if (rule.outsideRegion)
