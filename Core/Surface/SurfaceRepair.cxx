@@ -715,7 +715,11 @@ Status repairSurface(SurfaceMesh& mesh, const SurfaceRepairOptions& o, SurfaceRe
   }
   const double diag = boundingBox(mesh, true).diagonal();
   progress->report(0.0, "Repairing surface");
-  r.weldedPoints = weldPoints(mesh, o.weldTolerance * diag, false);
+  // Only points on open edges are welded: copies of one vertex (a triangle soup, a seam) leave the edges
+  // around them open, while two points of a closed part are two vertices however close they are (a prepared
+  // domain prepared again, whose far field has grown the bounding box and so the tolerance, lost a wing's
+  // thin trailing edge to the weld when every point was a candidate).
+  r.weldedPoints = weldPoints(mesh, o.weldTolerance * diag, true);
   if (o.removeDegenerate)
   {
     r.removedDegenerate = removeDegenerateTriangles(mesh);

@@ -14,7 +14,8 @@ namespace volgrid
 
 struct SurfaceRepairOptions
 {
-  // Points closer than weldTolerance * (bounding-box diagonal) are merged; 0 = exactly coincident only.
+  // Points on open edges closer than weldTolerance * (bounding-box diagonal) are merged; 0 = exactly
+  // coincident only. (Points of closed parts are never welded: they are distinct vertices.)
   double weldTolerance = 0.0;
   bool removeDegenerate = true; // repeated ids or exactly collinear corners
   bool removeDuplicates = true; // same point set as an earlier triangle

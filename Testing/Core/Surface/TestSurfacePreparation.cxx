@@ -57,6 +57,31 @@ TEST(SurfacePreparation, RepairsEnclosesAndReports)
   EXPECT_EQ(surfacePreparationWarning(report, rows, mesh.numberOfTriangles()), "");
 }
 
+// Preparing a prepared domain again changes nothing, even where two sheets of the body are closer than the
+// weld tolerance of the larger box the far field makes (here a slab 2e-6 thick in a sphere 10 times its size:
+// 1e-6 x the diagonal is about 1.7e-5). Before, the second preparation welded the slab's top to its bottom
+// and called the result open and non-manifold (found on a swept wing's trailing edge).
+TEST(SurfacePreparation, PreparingAPreparedDomainAgainChangesNothing)
+{
+  SurfaceMesh mesh;
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 2e-6 };
+  testshapes::addBox(mesh, lo, hi);
+  SurfacePreparationOptions options;
+  options.enclosure = true;
+  SurfacePreparationReport first;
+  ASSERT_TRUE(prepareSurface(mesh, 1, options, first).ok());
+  ASSERT_TRUE(first.meshable);
+  const SurfaceMesh prepared = mesh;
+  SurfacePreparationOptions again; // no new enclosure: the domain already has one
+  SurfacePreparationReport second;
+  ASSERT_TRUE(prepareSurface(mesh, 2, again, second).ok());
+  EXPECT_TRUE(second.meshable);
+  EXPECT_EQ(second.repair.weldedPoints, 0);
+  EXPECT_EQ(second.repair.removedDegenerate, 0);
+  EXPECT_EQ(mesh.points, prepared.points);
+  EXPECT_EQ(mesh.triangles, prepared.triangles);
+}
+
 TEST(SurfacePreparation, LeftDefectsAreWarnedAndUnmeasuredCountsSaySo)
 {
   SurfaceMesh mesh = damagedBox();
