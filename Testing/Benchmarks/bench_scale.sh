@@ -217,13 +217,15 @@ def bench_gmsh(surface, cap):
     geo = os.path.join(work, "out.gm.geo")
     shells = off_shells(surface)
     with open(geo, "w") as g:
-        if len(shells) == 2:
-            # HXT needs one surface loop per shell here: far field first, then the body (a hole).
-            stls = [os.path.join(work, "out.gm%d.stl" % k) for k in range(2)]
+        if len(shells) >= 2:
+            # HXT needs one surface loop per shell here: far field first, then the bodies (holes).
+            stls = [os.path.join(work, "out.gm%d.stl" % k) for k in range(len(shells))]
             for k, shell in enumerate(shells):
                 write_stl(stls[k], *shell)
-            g.write('Merge "%s";\nMerge "%s";\nSurface Loop(1) = {1};\nSurface Loop(2) = {2};\n'
-                    'Volume(1) = {1, 2};\nPhysical Volume(1) = {1};\n' % tuple(stls))
+            loops = range(1, len(shells) + 1)
+            g.write("".join('Merge "%s";\n' % stl for stl in stls) +
+                    "".join("Surface Loop(%d) = {%d};\n" % (k, k) for k in loops) +
+                    "Volume(1) = {%s};\nPhysical Volume(1) = {1};\n" % ", ".join(str(k) for k in loops))
         else:
             stl = os.path.join(work, "out.gm.stl")
             must([volgrid, "prep", surface, stl])
