@@ -197,7 +197,9 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
     const OccupancyPyramid domain = domainBoxes(mesh);
     octree = std::make_shared<OctreeSizing>();
     octree->build(sizing, lo, ext, 18, std::max<size_t>(1u << 20, 16 * static_cast<size_t>(mesh.numVertices())),
-                  &domain);
+                  &domain, progress);
+    if (octree->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Sizing was cancelled.");
     std::shared_ptr<const OctreeSizing> tree = octree;
     SizingOptions uniformOptions = sizingOptions; // the cap (or none, when the floor took it over)
     uniformOptions.gradation = 1;                 // no sized points in the outer field: nothing to grade

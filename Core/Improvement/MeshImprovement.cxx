@@ -174,6 +174,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       // Only for meshes too large for the caches (LargeMesh.h).
       if (mesh.numTets() >= options.optimization.largeMeshTets)
       {
+        if (progress && progress->cancelled()) // each whole-mesh step in between is a few tenths of a second at 10M
+          return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
         const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint);
         renumberTetArray(renumbering, tetRegion, -1);
         renumberVertexArray(renumbering, clusterLock, uint8_t{ 0 });
@@ -187,6 +189,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
   //    remaining passes would only retry them.
   // The vertices in tets before optimisation: those it removes are counted at the end.
   const int32_t nvField = mesh.numVertices();
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
   const std::vector<uint8_t> usedBefore = usedVertices(mesh);
   if (options.optimize)
   {
@@ -207,6 +211,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       stats.severeFacesAfter = orep.severeAfter;
       stats.orthogonalityMoves = orep.moves;
     }
+    if (progress && progress->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
     stats.after = summarizeDihedrals(mesh, options.threads);
     stats.secondsOptimization = since(t0);
   }

@@ -356,6 +356,17 @@ struct OptimizationPasses
   std::vector<std::pair<double, int32_t>> bad, worst;
   std::vector<int32_t> queue, created, verts, touched, candidates, star;
   int64_t changes = 0; // in the current pass
+  // Asked every 1024 tets or vertices of a pass whether to stop (a first pass over a million tets takes
+  // about a third of a second); stopped says it did, leaving a valid mesh (each edit is whole).
+  Progress* progress = nullptr;
+  bool stopped = false;
+
+  bool askedToStop(size_t k)
+  {
+    if ((k & 1023) == 1023 && progress && progress->cancelled())
+      stopped = true;
+    return stopped;
+  }
 
   OptimizationPasses(TetMesh& m, TetEditor& e, const OptimizationOptions& o, OptimizationReport& r,
                      const std::vector<uint8_t>& l, std::vector<uint8_t>& u)
@@ -408,7 +419,7 @@ struct OptimizationPasses
       queue.push_back(b.second);
     if (mesh.numTets() >= options.largeMeshTets)
       std::sort(queue.begin(), queue.end());
-    for (size_t k = 0; k < queue.size(); ++k)
+    for (size_t k = 0; k < queue.size() && !askedToStop(k); ++k)
     {
       const int32_t t = queue[k];
       if (mesh.isFree(t) || tetQ(mesh, t) >= qT)
@@ -446,8 +457,9 @@ struct OptimizationPasses
     if (mesh.numTets() >= options.largeMeshTets)
       smoothInColourClasses(editor, verts, lock, unmoved, options, moved);
     else
-      for (int32_t v : verts)
+      for (size_t k = 0; k < verts.size() && !askedToStop(k); ++k)
       {
+        const int32_t v = verts[k];
         if (lock[v] || unmoved[v])
           continue;
         if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
@@ -514,6 +526,7 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   const bool resume = worklist && worklist->valid && worklist->targetDegrees == options.targetDegrees;
   std::vector<uint8_t> localUnmoved;
   OptimizationPasses p(mesh, editor, options, report, lock, worklist ? worklist->unmoved : localUnmoved);
+  p.progress = progress;
   if (resume)
     p.bad.swap(worklist->below); // exactly what a sweep would collect: the mesh is as the last call left it
   else
@@ -540,8 +553,10 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     p.changes = 0;
     p.touched.clear();
     p.flipBadTets(qT);
-    if (options.smoothing)
+    if (options.smoothing && !p.stopped)
       p.smoothBadTets(qT);
+    if (p.stopped)
+      return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
     if (options.vertexRemoval)
       p.collapseWorst();
     report.passes = pass + 1;

@@ -23,8 +23,9 @@ struct OctreeSizing::Building
 };
 
 void OctreeSizing::build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells,
-                         const OccupancyPyramid* where)
+                         const OccupancyPyramid* where, Progress* progress)
 {
+  cancelled_ = false;
   std::copy(lo, lo + 3, lo_);
   size_ = size;
   cells_.assign(1, Cell());
@@ -52,8 +53,13 @@ void OctreeSizing::build(const SizingField& field, const double lo[3], double si
       b.queue.push({ cs / hmin, -static_cast<int32_t>(c) });
   };
   queueIfOversized(0);
-  while (!b.queue.empty() && cells_.size() + 8 <= maxCells)
+  for (size_t splits = 0; !b.queue.empty() && cells_.size() + 8 <= maxCells; ++splits)
   {
+    if ((splits & 1023) == 1023 && progress && progress->cancelled())
+    {
+      cancelled_ = true;
+      return;
+    }
     const size_t c = static_cast<size_t>(-b.queue.top().second);
     b.queue.pop();
     split(c, b, field);

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "OccupancyPyramid.h"
+#include "Progress.h"
 #include "SizingField.h"
 
 #include <cstddef>
@@ -30,9 +31,11 @@ class OctreeSizing
 {
 public:
   // Samples `field` over the cube [lo, lo + size]^3, at most maxDepth levels deep and maxCells cells,
-  // splitting only cells that `where` may overlap (every cell when null).
+  // splitting only cells that `where` may overlap (every cell when null). progress (optional) is asked every
+  // 1024 splits whether to stop (then cancelled() is true and the tree is unfinished).
   void build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells,
-             const OccupancyPyramid* where = nullptr);
+             const OccupancyPyramid* where = nullptr, Progress* progress = nullptr);
+  bool cancelled() const { return cancelled_; }
   // The interpolated size at p (clamped to the cube).
   double evaluate(const double* p) const;
   size_t cells() const { return cells_.size(); }
@@ -53,6 +56,7 @@ private:
   double lo_[3] = { 0, 0, 0 };
   double size_ = 1;
   bool capped_ = false;
+  bool cancelled_ = false;
 };
 
 } // namespace volgrid

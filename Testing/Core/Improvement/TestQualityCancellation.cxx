@@ -1,9 +1,10 @@
-// The quality stage's point insertions (BadTetSplitting.h, InsertionImprovement.h) stop when the user
-// cancels, leave a valid mesh, and score positions the same on any thread count.
+// The quality stage's point insertions (BadTetSplitting.h, InsertionImprovement.h) and its optimisation
+// passes stop when the user cancels, leave a valid mesh, and score positions the same on any thread count.
 #include "BadTetSplitting.h"
 #include "InsertionImprovement.h"
 #include "Mesh/RandomDelaunay.h"
 #include "MeshChecker.h"
+#include "MeshOptimization.h"
 
 #include <gtest/gtest.h>
 
@@ -97,4 +98,26 @@ TEST(QualityCancellation, SplittingIsTheSameOnAnyThreadCount)
   EXPECT_EQ(one.tetVertices, two.tetVertices);
   EXPECT_EQ(one.tetVertices, eight.tetVertices);
   expectValid(one);
+}
+
+// An optimisation pass asks every 1024 tets (and vertices) whether to stop: a first pass over the bad tets of
+// a million-tet mesh takes about a third of a second, more than a user waits after pressing stop.
+TEST(QualityCancellation, OptimisationStopsWithinAPass)
+{
+  TetMesh full;
+  randomDelaunay(full, 20000, 5);
+  TetMesh cancelled = full;
+  OptimizationOptions options;
+  options.summaries = false;
+  options.maxPasses = 1;
+  OptimizationReport onePass, stopped;
+  ASSERT_TRUE(optimizeMesh(full, nullptr, nullptr, nullptr, options, nullptr, &onePass).ok());
+  ASSERT_GT(onePass.belowTargetBefore, 2048); // the pass has more than 1024 bad tets to go through
+  CancelFrom progress(2);                     // the pass's start asks first, its 1024th bad tet second
+  const Status s = optimizeMesh(cancelled, nullptr, nullptr, nullptr, options, &progress, &stopped);
+  EXPECT_EQ(s.kind, ErrorKind::Cancelled);
+  EXPECT_EQ(progress.questions, 2);
+  EXPECT_GT(stopped.flips23 + stopped.edgeRemovals, 0);                                      // it had begun,
+  EXPECT_LT(stopped.flips23 + stopped.edgeRemovals, onePass.flips23 + onePass.edgeRemovals); // not finished
+  expectValid(cancelled);
 }

@@ -92,3 +92,26 @@ TEST(OctreeSizing, SplitsOnlyWhereTheDomainIs)
         ASSERT_EQ(inDomain.evaluate(p), everywhere.evaluate(p)) << x << " " << y << " " << z;
       }
 }
+
+// A build asks its progress whether to stop every 1024 splits (the octree of a 10M-tet domain takes about a
+// second) and stops there when told: cancelled() says so, and the tree has only the cells made until then.
+TEST(OctreeSizing, StopsWhenCancelled)
+{
+  const SizingField field = capWithOneFeature();
+  const double lo[3] = { 0, 0, 0 };
+  OctreeSizing whole;
+  whole.build(field, lo, 1.0, 18, size_t(1) << 22);
+  struct StopOnSecondQuestion final : Progress
+  {
+    int questions = 0;
+    void report(double, const char*) override {}
+    bool cancelled() override { return ++questions >= 2; }
+  } progress;
+  OctreeSizing stopped;
+  stopped.build(field, lo, 1.0, 18, size_t(1) << 22, nullptr, &progress);
+  EXPECT_FALSE(whole.cancelled());
+  EXPECT_TRUE(stopped.cancelled());
+  EXPECT_EQ(progress.questions, 2);
+  EXPECT_EQ(stopped.cells(), 1 + 8 * 2047u); // the root, and eight children for each split before the 2nd question
+  EXPECT_GT(whole.cells(), stopped.cells());
+}
