@@ -220,8 +220,8 @@ void declareEnclosureFlags(volgrid::cli::FlagParser& p, Arguments& args, vtkVolG
 void declareRepairFlags(volgrid::cli::FlagParser& p, Arguments& args, vtkVolGridSurfacePrep* prep)
 {
   addRanged(p, "--merge-tolerance", args.mergeTolerance, 0.0, 0.01, "must be in [0, 0.01]",
-            "  --merge-tolerance T   weld points closer than T * bounding-box diagonal (default 1e-6; 0: exactly\n"
-            "                        coincident points only, like --exact)\n",
+            "  --merge-tolerance T   weld points on open edges closer than T * bounding-box diagonal (default\n"
+            "                        1e-6; 0: exactly coincident points only, like --exact)\n",
             [prep](double x) { prep->SetMergeTolerance(x); });
   p.add("--exact", args.exact, true, "  --exact               merge exactly coincident points only\n");
   p.add("--fill-holes", args.fillHoles,

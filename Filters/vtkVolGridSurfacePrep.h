@@ -61,8 +61,9 @@ public:
 
   ///@{
   /**
-   * Points closer than MergeTolerance times the input's bounding-box diagonal are welded, and parts are
-   * stitched along boundary points that close (range [0, 0.01], default 1e-6). ExactMergeOnly (default
+   * Points on open edges closer than MergeTolerance times the input's bounding-box diagonal are welded
+   * (points of closed parts never are: they are distinct vertices), and parts are stitched along boundary
+   * points that close (range [0, 0.01], default 1e-6). ExactMergeOnly (default
    * off) merges only exactly coincident points, whatever the tolerance.
    */
   vtkSetClampMacro(MergeTolerance, double, 0.0, 0.01);
