@@ -315,7 +315,8 @@ Status readBody(BodyReader& body, const std::string& path, const std::vector<Ele
           continue;
         }
         double countValue = 0;
-        if (!body.read(p.countType, countValue) || countValue < 0 || countValue > 1e8)
+        if (!body.read(p.countType, countValue) ||
+            !(countValue >= 0 && countValue <= 1e8 && countValue == std::floor(countValue))) // NaN too
           return plyError(path, "bad list length in element '" + e.name + "' " + std::to_string(i));
         const bool indices = (isFace || isStrip) && (p.name == "vertex_indices" || p.name == "vertex_index");
         list.clear();

@@ -119,4 +119,19 @@ TEST(PlyReader, MalformedFilesGiveClearErrors)
   EXPECT_NE(s.message.find("refers to vertex 7"), std::string::npos) << s.message;
   s = volgrid::readSurface(writeFile("nomagic.ply", "solid x\n"), mesh);
   EXPECT_FALSE(s.ok());
+  // A list length given as a float must be a whole number: NaN (found by fuzz.reader_ply, where it was
+  // converted to an integer: undefined behaviour) and 2.5 are refused, naming the file.
+  for (const char* count : { "nan", "2.5" })
+  {
+    const std::string path =
+      writeFile("float_count.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 1\nproperty list float int vertex_indices\nend_header\n"
+                "0 0 0\n1 0 0\n0 1 0\n" +
+                  std::string(count) + " 0 1 2\n");
+    s = volgrid::readSurface(path, mesh);
+    EXPECT_FALSE(s.ok()) << count;
+    EXPECT_NE(s.message.find("bad list length"), std::string::npos) << s.message;
+    EXPECT_NE(s.message.find(path), std::string::npos) << s.message;
+  }
 }
