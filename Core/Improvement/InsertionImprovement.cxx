@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <set>
 #include <utility>
 
 namespace volgrid
@@ -433,6 +434,7 @@ private:
     smooth.optimizeIterations = 30;
     std::vector<int32_t> alive, made;
     std::vector<std::pair<double, int32_t>> order;
+    std::set<int32_t> smoothed; // this round's
     for (int round = 0; round < 4; ++round)
     {
       bool changed = false;
@@ -466,9 +468,11 @@ private:
       }
       if (ed_.tetOf(nv_) >= 0 && smoothVertex(ed_, nv_, smooth) != SmoothMove::None)
         changed = true;
-      // The other unlocked vertices of the new tets still near q_t: a moved vertex changes its whole
-      // star, which then counts as created (judged with the new tets, restored with them).
+      // The other unlocked vertices of the new tets still near q_t, each once a round (smoothed again for
+      // every such tet it is in, a vertex took six times the work for no better moves): a moved vertex
+      // changes its whole star, which then counts as created (judged with the new tets, restored with them).
       aliveCreated(alive);
+      smoothed.clear();
       for (int32_t c : alive)
       {
         if (m_.isFree(c) || !(tetQuality(m_, c) < aim))
@@ -477,7 +481,7 @@ private:
         const int32_t cv[4] = { v[0], v[1], v[2], v[3] };
         for (int32_t u : cv)
         {
-          if (u == nv_ || isLocked(u))
+          if (u == nv_ || isLocked(u) || !smoothed.insert(u).second)
             continue;
           ed_.journal->savePoint(m_, u); // undone with the attempt
           if (smoothVertex(ed_, u, smooth) != SmoothMove::None)
