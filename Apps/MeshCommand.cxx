@@ -292,8 +292,13 @@ OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult
                               std::vector<std::pair<int32_t, int32_t>>& sharedFaces)
 {
   OutputSummary summary;
-  summary.dihedral = volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr,
-                                                 static_cast<int64_t>(result.tets.size() / 4), args.options.threads);
+  // The quality stage ends with the same summary of the same tets (counts, extremes: any order gives the
+  // same): computed again only when the counts differ.
+  const volgrid::DihedralSummary& last = result.stats.improvement.after;
+  const int64_t tets = static_cast<int64_t>(result.tets.size() / 4);
+  summary.dihedral = last.tets == tets
+    ? last
+    : volgrid::summarizeDihedrals(result.points.data(), result.tets.data(), nullptr, tets, args.options.threads);
   summary.ratio =
     volgrid::summarizeSizeRatios(result.points.data(), result.tets.data(), result.tets.size() / 4, sharedFaces,
                                  args.options.improvement.sizing.gradation, args.options.threads);
@@ -302,8 +307,8 @@ OutputSummary summarizeOutput(const Arguments& args, const volgrid::MesherResult
 }
 
 // The mesher's arrays, released once the output holds what it needs of them: at millions of tets the
-// writer's own buffers then take their place instead of adding to them (the legacy writer converts the
-// cells to 64-bit ids, about 40 bytes per tet). Only the statistics stay, for the report.
+// writer's own buffers then take their place instead of adding to them. Only the statistics stay, for the
+// report.
 void releaseMeshArrays(volgrid::MesherResult& result)
 {
   volgrid::MesherResult statisticsOnly;
