@@ -222,8 +222,9 @@ public:
   ParallelScan(TetMesh& mesh, const FaceConstraints* constraints, int threads)
     : mesh_(mesh)
   {
+    // They only locate and try cavities (no commit): no vertex map, whose build is a sweep of the mesh.
     for (int w = 1; w < threads; ++w)
-      editors_.push_back(std::make_unique<TetEditor>(mesh, constraints));
+      editors_.push_back(std::make_unique<TetEditor>(mesh, constraints, nullptr, TetEditor::VertexMap::None));
   }
 
   // Scores `cand` for bad tet t into `search` (whose vertex nv is the last point of the mesh).
@@ -270,8 +271,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
 {
   const bool speculative = request.speculative;
   ParallelScan parallelScan(mesh, constraints, resolveThreads(request.threads));
-  TetEditor editor(mesh, constraints, labels);
-  editor.rebuildVertexMap();
+  TetEditor editor(mesh, constraints, labels); // builds its vertex map
   const std::vector<uint8_t> locked = editor.lockedVertices();
   const double qT = std::sin(request.degrees * 3.14159265358979323846 / 180.0);
   auto quality = [&](int32_t t)

@@ -222,8 +222,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
   // Tets below 10 degrees whose four vertices lie on constrained faces: their shape is set by the
   // boundary triangles (no flip or move can change it without touching the boundary).
   {
-    TetEditor probe(mesh, &fc, nullptr);
-    probe.rebuildVertexMap();
+    TetEditor probe(mesh, &fc, nullptr); // builds its vertex map
     const std::vector<uint8_t> lock = probe.lockedVertices();
     const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
     mesh.forEachTet(

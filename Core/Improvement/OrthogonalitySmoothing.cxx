@@ -218,8 +218,7 @@ Status smoothNonOrthogonalFaces(TetMesh& mesh, const FaceConstraints* constraint
   OrthogonalitySmoothingReport local;
   OrthogonalitySmoothingReport& report = reportOut ? *reportOut : local;
   const double cosLimit = std::cos(options.severeDegrees * kDegree);
-  TetEditor editor(mesh, constraints, nullptr);
-  editor.rebuildVertexMap();
+  TetEditor editor(mesh, constraints, nullptr); // builds its vertex map
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
     for (size_t v = 0; v < std::min(lock.size(), locked->size()); ++v)

@@ -39,8 +39,7 @@ void collectSortedBelow(const TetMesh& mesh, double degrees, int threads, std::v
 bool hasUnlockedVertexBelow(TetMesh& mesh, const FaceConstraints& fc, const std::vector<uint8_t>& extraLock,
                             double degrees)
 {
-  TetEditor probe(mesh, &fc, nullptr);
-  probe.rebuildVertexMap();
+  TetEditor probe(mesh, &fc, nullptr); // builds its vertex map
   const std::vector<uint8_t> lock = probe.lockedVertices();
   const double q = std::sin(degrees * 3.14159265358979323846 / 180.0);
   bool found = false;
