@@ -58,11 +58,14 @@ public:
     , limit_(limit)
     , threads_(threads)
   {
-    collectSineBelow(mesh, limit, threads, tets_);
+    std::vector<std::pair<double, int32_t>> low;
+    collectSineBelow(mesh, limit, threads, low);
+    for (const auto& e : low)
+      tets_.push_back(entry(e.first, e.second));
     std::sort(tets_.begin(), tets_.end());
   }
 
-  double worstQuality() const { return tets_.empty() ? minSineQuality(mesh_, threads_) : tets_.front().first; }
+  double worstQuality() const { return tets_.empty() ? minSineQuality(mesh_, threads_) : tets_.front().q; }
 
   // The tets under q, in (quality, slot) order.
   void below(double q, std::vector<std::pair<double, int32_t>>& out) const
@@ -74,9 +77,9 @@ public:
       return;
     }
     out.clear();
-    for (const auto& t : tets_)
-      if (t.first < q)
-        out.push_back(t);
+    for (const Entry& t : tets_)
+      if (t.q < q)
+        out.emplace_back(t.q, t.t);
   }
 
   // After edits that touched only `changed` (slots, repeats allowed; free ones included): the list is what
@@ -86,15 +89,14 @@ public:
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
     auto touched = [&](int32_t t) { return std::binary_search(changed.begin(), changed.end(), t); };
-    tets_.erase(std::remove_if(tets_.begin(), tets_.end(), [&](const auto& e) { return touched(e.second); }),
-                tets_.end());
+    tets_.erase(std::remove_if(tets_.begin(), tets_.end(), [&](const Entry& e) { return touched(e.t); }), tets_.end());
     for (int32_t t : changed)
     {
       if (t >= mesh_.tetCapacity() || mesh_.isFree(t))
         continue;
       const double q = tetQuality(mesh_, t);
       if (q < limit_)
-        tets_.emplace_back(q, t);
+        tets_.push_back(entry(q, t));
     }
     std::sort(tets_.begin(), tets_.end());
   }
@@ -103,8 +105,8 @@ public:
   double smallestAngle() const
   {
     double m = 180;
-    for (const auto& t : tets_)
-      m = std::min(m, minDihedral(mesh_, t.second));
+    for (const Entry& t : tets_)
+      m = std::min(m, minDihedral(mesh_, t.t));
     if (m < boundDegrees())
       return m;
     mesh_.forEachTet([&](int32_t t) { m = std::min(m, minDihedral(mesh_, t)); });
@@ -115,13 +117,10 @@ public:
   std::pair<double, double> range() const
   {
     double lo = 180, hi = 0;
-    for (const auto& t : tets_)
+    for (const Entry& t : tets_)
     {
-      const int32_t* v = mesh_.vertices(t.second);
-      double a, b;
-      quality::tetDihedralExtremes(mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]), a, b);
-      lo = std::min(lo, a);
-      hi = std::max(hi, b);
+      lo = std::min(lo, t.lo);
+      hi = std::max(hi, t.hi);
     }
     if (lo < boundDegrees() && hi > 180 - boundDegrees())
       return { lo, hi };
@@ -129,6 +128,24 @@ public:
   }
 
 private:
+  // A listed tet with its extreme dihedral angles, kept from when it was listed (a tet that changes is
+  // listed again): range() then reads them instead of computing them again every round.
+  struct Entry
+  {
+    double q;
+    int32_t t;
+    double lo, hi;
+    bool operator<(const Entry& o) const { return q < o.q || (q == o.q && t < o.t); }
+  };
+
+  Entry entry(double q, int32_t t) const
+  {
+    Entry e{ q, t, 0, 0 };
+    const int32_t* v = mesh_.vertices(t);
+    quality::tetDihedralExtremes(mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]), e.lo, e.hi);
+    return e;
+  }
+
   // Angles outside [bound, 180 - bound] occur only among the collected tets (the margin is far above the
   // rounding difference between the angle and the sine measures).
   double boundDegrees() const { return std::asin(std::min(1.0, limit_)) * 180 / 3.14159265358979323846 - 1e-6; }
@@ -136,7 +153,7 @@ private:
   const TetMesh& mesh_;
   double limit_;
   int threads_;
-  std::vector<std::pair<double, int32_t>> tets_;
+  std::vector<Entry> tets_;
 };
 
 // The local frame of a face: centroid, two in-plane axes, the unit normal towards `side`, and the scale
