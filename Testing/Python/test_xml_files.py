@@ -1,7 +1,8 @@
 # VolGrid's .vtu/.vtp files against the expat that Debian 12 ships now (2.5.0-1+deb12u5 and later defer
 # re-parsing, CVE-2023-52425), which breaks VTK 9.2's reading of raw appended data:
 # 1. every XML file the CLI writes (prep, mesh --boundary, delaunay --out) is read back by plain
-#    VTK readers (ParaView's own VTK, nothing of VolGrid's), with the counts the CLI reported;
+#    VTK readers (ParaView's own VTK, nothing of VolGrid's), with the counts the CLI reported; the legacy
+#    .vtk of the same mesh holds what its .vtu holds;
 # 2. raw appended files written by plain VTK (the default of VTK's and ParaView's writers) go through
 #    VolGrid's reading path: check, mesh and quality give what they give on VolGrid's own files.
 import ctypes
@@ -12,7 +13,11 @@ import subprocess
 import sys
 import tempfile
 
+import numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkObject
+from vtkmodules.vtkCommonDataModel import VTK_TETRA
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkIOXML import (vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLUnstructuredGridReader,
                                  vtkXMLUnstructuredGridWriter)
 
@@ -84,6 +89,33 @@ for path, cells in ((domain, prep.get("triangles")), (mesh, meshed.get("tets")),
           f"plain VTK reads {os.path.basename(path)}: {data.GetNumberOfCells()} cells, the CLI said {cells}")
 check(plain_read(boundary).GetNumberOfCells() == prep.get("triangles"),
       "plain VTK reads the boundary .vtp with one cell per input triangle")
+
+# 1b. The legacy .vtk of the same run (VolGrid writes its cells itself, not through VTK's copy to 64-bit
+# ids): plain VTK's legacy reader gives the .vtu's points, cells, cell arrays and names.
+legacy = os.path.join(tmp, "mesh.vtk")
+json_of("mesh", domain, legacy, "--json")
+reader = vtkUnstructuredGridReader()
+reader.SetFileName(legacy)
+reader.ReadAllScalarsOn()
+reader.ReadAllFieldsOn()
+reader.Update()
+old_grid, new_grid = plain_read(mesh), reader.GetOutput()
+check(new_grid.GetNumberOfCells() == meshed.get("tets"),
+      f"plain VTK reads the legacy .vtk: {new_grid.GetNumberOfCells()} cells, the CLI said {meshed.get('tets')}")
+same = lambda a, b: a is not None and b is not None and numpy.array_equal(vtk_to_numpy(a), vtk_to_numpy(b))
+check(same(old_grid.GetPoints().GetData(), new_grid.GetPoints().GetData()), "the .vtk's points are the .vtu's")
+check(same(old_grid.GetCells().GetConnectivityArray(), new_grid.GetCells().GetConnectivityArray()) and
+      same(old_grid.GetCells().GetOffsetsArray(), new_grid.GetCells().GetOffsetsArray()),
+      "the .vtk's cells are the .vtu's")
+check(set(vtk_to_numpy(new_grid.GetCellTypesArray()).tolist()) == {VTK_TETRA}, "the .vtk's cells are tets")
+for name in ("Region", "Forced", "BoundaryFacePatch"):
+    check(same(old_grid.GetCellData().GetArray(name), new_grid.GetCellData().GetArray(name)),
+          f"the .vtk's cell array {name} is the .vtu's")
+for name in ("PatchNames", "RegionNames"):
+    a, b = old_grid.GetFieldData().GetAbstractArray(name), new_grid.GetFieldData().GetAbstractArray(name)
+    check(a is not None and b is not None and
+          [a.GetValue(i) for i in range(a.GetNumberOfValues())] == [b.GetValue(i) for i in range(b.GetNumberOfValues())],
+          f"the .vtk's field data {name} is the .vtu's")
 
 # 2. Raw appended files from other tools, through VolGrid's readers.
 raw_domain = os.path.join(tmp, "raw_domain.vtp")
