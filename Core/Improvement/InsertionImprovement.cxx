@@ -486,8 +486,9 @@ private:
       if (ed_.tetOf(nv_) >= 0 && smoothVertex(ed_, nv_, smooth) != SmoothMove::None)
         changed = true;
       // The other unlocked vertices of the new tets still near q_t, each once a round (smoothed again for
-      // every such tet it is in, a vertex took six times the work for no better moves): a moved vertex
-      // changes its whole star, which then counts as created (judged with the new tets, restored with them).
+      // every such tet it is in, a vertex took six times the work; the worst tet the rounds reach then moves
+      // by chance, up or down by a degree or two): a moved vertex changes its whole star, which then counts
+      // as created (judged with the new tets, restored with them).
       aliveCreated(alive);
       smoothed.clear();
       for (int32_t c : alive)
