@@ -162,27 +162,21 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
       stats.latticeNodes = static_cast<int64_t>(h.size() - nBoundary);
     }
     sizing.addSizedPoints(xyz.data(), h.data(), h.size());
-    SizingOptions sizingOptions = options.sizing;
     std::shared_ptr<const CoarseBoundaryFloor> floor;
     s = coarseBoundaryFloor(mesh, surface, boundaryPoint, xyz, h, options.sizing, floor);
     if (!s.ok())
       return s;
+    // The outer field's cap: the octree's samples carry it, or, with a floor, the cap it raises.
+    SizingOptions uniformOptions = options.sizing;
     if (floor)
     {
       // The cap holds away from the boundary; next to triangles coarser than it, the size grades down
       // from their spacing (CoarseBoundaryFloor.h).
-      const double cap = options.sizing.maxEdgeLength;
-      sizing.setUserFunction(
-        [floor, cap, user = options.sizingFunction](const double* p)
-        {
-          const double u = user ? user(p) : std::numeric_limits<double>::infinity();
-          const double capHere = std::max(cap, floor->evaluate(p));
-          return std::isfinite(u) && u > 0 ? std::min(u, capHere) : capHere;
-        });
-      sizingOptions.maxEdgeLength = 0;
+      sizing.setCapFloor(floor);
+      uniformOptions.maxEdgeLength = 0;
       stats.coarseBoundaryFloor = floor->largestBoundarySize();
     }
-    s = sizing.build(nullptr, 0, nullptr, 0, sizingOptions, progress);
+    s = sizing.build(nullptr, 0, nullptr, 0, options.sizing, progress);
     if (!s.ok())
       return s;
     // The field points query the octree sampling of this field (see OctreeSizing).
@@ -201,8 +195,7 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
     if (octree->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Sizing was cancelled.");
     std::shared_ptr<const OctreeSizing> tree = octree;
-    SizingOptions uniformOptions = sizingOptions; // the cap (or none, when the floor took it over)
-    uniformOptions.gradation = 1;                 // no sized points in the outer field: nothing to grade
+    uniformOptions.gradation = 1; // no sized points in the outer field: nothing to grade
     fast.setUserFunction([tree](const double* p) { return tree->evaluate(p); }, /*threadSafe=*/true);
     s = fast.buildUniform(std::numeric_limits<double>::max(), uniformOptions);
     if (!s.ok())

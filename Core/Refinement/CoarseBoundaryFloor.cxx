@@ -34,8 +34,19 @@ double CoarseBoundaryFloor::evaluate(const double* p) const
 {
   if (field_.empty())
     return 0;
-  const double v = field_.evaluate(p);
-  return std::isfinite(v) ? std::max(0.0, k_ - v) : 0;
+  return floorOf(field_.evaluate(p));
+}
+
+double CoarseBoundaryFloor::evaluate(const double* p, int32_t& hint) const
+{
+  if (field_.empty())
+    return 0;
+  return floorOf(field_.evaluate(p, hint));
+}
+
+double CoarseBoundaryFloor::floorOf(double interpolated) const
+{
+  return std::isfinite(interpolated) ? std::max(0.0, k_ - interpolated) : 0;
 }
 
 } // namespace volgrid

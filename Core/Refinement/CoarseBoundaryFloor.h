@@ -21,6 +21,7 @@
 #include "Status.h"
 
 #include <cstddef>
+#include <cstdint>
 
 namespace volgrid
 {
@@ -34,13 +35,16 @@ public:
   // lets the floor fall to zero in between); boundarySize: the spacing H at each of the first nBoundary
   // nodes. slope > 0: the gradation's (gradation - 1).
   Status build(const double* xyz, const double* boundarySize, size_t nBoundary, size_t nNodes, double slope);
-  // The floor at p (0 where no boundary node reaches); 0 before build.
+  // The floor at p (0 where no boundary node reaches); 0 before build. With a hint of the caller's own,
+  // as LinearInterpolant::evaluate: callers with hints of their own may query at once.
   double evaluate(const double* p) const;
+  double evaluate(const double* p, int32_t& hint) const;
   // The largest boundary spacing: a cap at or above it never meets the floor.
   double largestBoundarySize() const { return largest_; }
 
 private:
-  LinearInterpolant field_; // K - floor
+  double floorOf(double interpolated) const; // the floor from the interpolated K - floor
+  LinearInterpolant field_;                  // K - floor
   double k_ = 0;
   double largest_ = 0;
 };

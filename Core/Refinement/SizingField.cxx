@@ -1,5 +1,6 @@
 #include "SizingField.h"
 
+#include "CoarseBoundaryFloor.h"
 #include "Delaunay.h"
 #include "PredicatesInline.h"
 
@@ -22,6 +23,59 @@ inline double dist(const double* a, const double* b)
 inline bool usable(double h)
 {
   return std::isfinite(h) && h > 0;
+}
+
+// The point of triangle abc nearest p, as barycentric weights w (Ericson, Real-Time Collision Detection
+// 5.1.5: the vertex, edge or face region p projects into); returns the squared distance.
+double nearestOnTriangle(const double* p, const double* a, const double* b, const double* c, double w[3])
+{
+  const auto sub = [](const double* x, const double* y, double* r)
+  {
+    for (int k = 0; k < 3; ++k)
+      r[k] = x[k] - y[k];
+  };
+  const auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  double ab[3], ac[3], ap[3], bp[3], cp[3];
+  sub(b, a, ab);
+  sub(c, a, ac);
+  sub(p, a, ap);
+  sub(p, b, bp);
+  sub(p, c, cp);
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp), d5 = dot(ab, cp),
+               d6 = dot(ac, cp);
+  const double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+  if (d1 <= 0 && d2 <= 0)
+    w[0] = 1, w[1] = 0, w[2] = 0;
+  else if (d3 >= 0 && d4 <= d3)
+    w[0] = 0, w[1] = 1, w[2] = 0;
+  else if (d6 >= 0 && d5 <= d6)
+    w[0] = 0, w[1] = 0, w[2] = 1;
+  else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    const double t = d1 / (d1 - d3);
+    w[0] = 1 - t, w[1] = t, w[2] = 0;
+  }
+  else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    const double t = d2 / (d2 - d6);
+    w[0] = 1 - t, w[1] = 0, w[2] = t;
+  }
+  else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  {
+    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    w[0] = 0, w[1] = 1 - t, w[2] = t;
+  }
+  else
+  {
+    const double sum = va + vb + vc;
+    w[0] = va / sum, w[1] = vb / sum, w[2] = vc / sum;
+    if (!std::isfinite(w[0]) || !std::isfinite(w[1]) || !std::isfinite(w[2]))
+      w[0] = 1, w[1] = 0, w[2] = 0; // a degenerate hull face: its first vertex
+  }
+  double q[3];
+  for (int k = 0; k < 3; ++k)
+    q[k] = w[0] * a[k] + w[1] * b[k] + w[2] * c[k] - p[k];
+  return dot(q, q);
 }
 } // namespace
 
@@ -81,6 +135,11 @@ Status LinearInterpolant::build(const double* xyz, size_t n, const double* value
 
 double LinearInterpolant::evaluate(const double* p) const
 {
+  return evaluate(p, locator_->hint);
+}
+
+double LinearInterpolant::evaluate(const double* p, int32_t& hint) const
+{
   if (values_.empty())
     return std::numeric_limits<double>::quiet_NaN();
   if (degenerate_)
@@ -97,8 +156,8 @@ double LinearInterpolant::evaluate(const double* p) const
     }
     return h;
   }
-  // Visibility walk (randomised start face) from the last tet found.
-  int32_t t = locator_->hint;
+  // Visibility walk (randomised start face) from the hint's tet.
+  int32_t t = hint;
   if (t < 0 || t >= mesh_.tetCapacity() || mesh_.isFree(t) || mesh_.isGhost(t))
   {
     t = -1;
@@ -113,34 +172,7 @@ double LinearInterpolant::evaluate(const double* p) const
     const int32_t* v = mesh_.vertices(t);
     const int g = mesh_.ghostIndex(t);
     if (g >= 0)
-    {
-      // Outside the hull: clamped barycentric interpolation on the hull face.
-      int32_t f[3];
-      mesh_.faceVertices(t, g, f);
-      const double *a = mesh_.point(f[0]), *b = mesh_.point(f[1]), *c = mesh_.point(f[2]);
-      const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-      const double nrm[3] = { ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
-                              ab[0] * ac[1] - ab[1] * ac[0] };
-      const double nn = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
-      double w[3];
-      const double* q[3] = { a, b, c };
-      for (int k = 0; k < 3; ++k)
-      {
-        const double* u = q[(k + 1) % 3];
-        const double* s = q[(k + 2) % 3];
-        const double e1[3] = { u[0] - p[0], u[1] - p[1], u[2] - p[2] };
-        const double e2[3] = { s[0] - p[0], s[1] - p[1], s[2] - p[2] };
-        const double cr[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                               e1[0] * e2[1] - e1[1] * e2[0] };
-        w[k] = nn > 0 ? std::max(0.0, (cr[0] * nrm[0] + cr[1] * nrm[1] + cr[2] * nrm[2]) / nn) : 1.0;
-      }
-      const double sw = w[0] + w[1] + w[2];
-      locator_->hint = mesh_.neighbor(t, g);
-      if (!(sw > 0))
-        return (values_[f[0]] + values_[f[1]] + values_[f[2]]) / 3;
-      return (w[0] * values_[f[0]] + w[1] * values_[f[1]] + w[2] * values_[f[2]]) / sw;
-    }
+      return outsideHull(p, t, hint);
     rng = rng * 1664525u + 1013904223u;
     const int first = static_cast<int>((rng >> 16) & 3);
     int exitFace = -1;
@@ -155,7 +187,7 @@ double LinearInterpolant::evaluate(const double* p) const
     if (exitFace < 0)
     {
       // Inside t: barycentric weights from sub-volumes.
-      locator_->hint = t;
+      hint = t;
       const double* P[4] = { mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]) };
       double w[4], sw = 0;
       for (int i = 0; i < 4; ++i)
@@ -186,6 +218,56 @@ double LinearInterpolant::evaluate(const double* p) const
       h = values_[v[i]];
     }
   return h;
+}
+
+// p is outside the hull, beyond the hull face of ghost tet t that the walk crossed. Every hull face on the
+// side of p may be crossed (below a flat hull, such as a symmetry plane's, all of them), so the value is
+// taken at the point of the hull nearest p, not on the face crossed: the walk goes on over the hull faces
+// to a nearer one while there is one. A face whose nearest point is a vertex or an edge shares it with its
+// neighbours there, so their ring is searched (faces as near as the best) before the walk stops. On a
+// convex hull the distance has no other local minimum: the walk ends on a face through the nearest
+// point whatever the start (only where several faces touch that point may the face depend on it).
+double LinearInterpolant::outsideHull(const double* p, int32_t t, int32_t& hint) const
+{
+  const auto distance = [&](int32_t ghost, double w[3], int32_t f[3])
+  {
+    mesh_.faceVertices(ghost, mesh_.ghostIndex(ghost), f);
+    return nearestOnTriangle(p, mesh_.point(f[0]), mesh_.point(f[1]), mesh_.point(f[2]), w);
+  };
+  double w[3];
+  int32_t f[3];
+  double best = distance(t, w, f);
+  // Faces as near as the best, searched from (a few: a vertex's ring); the thread's own, kept between calls.
+  thread_local std::vector<int32_t> plateau;
+  plateau.assign(1, t);
+  for (size_t next = 0; next < plateau.size();)
+  {
+    const int32_t cur = plateau[next++];
+    const int g = mesh_.ghostIndex(cur);
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = i == g ? -1 : mesh_.neighbor(cur, i);
+      if (u < 0 || !mesh_.isGhost(u) || std::find(plateau.begin(), plateau.end(), u) != plateau.end())
+        continue;
+      double wu[3];
+      int32_t fu[3];
+      const double d = distance(u, wu, fu);
+      if (d < best)
+      {
+        best = d;
+        t = u;
+        std::copy(wu, wu + 3, w);
+        std::copy(fu, fu + 3, f);
+        plateau.assign(1, u);
+        next = 0;
+        break;
+      }
+      if (d == best)
+        plateau.push_back(u);
+    }
+  }
+  hint = mesh_.neighbor(t, mesh_.ghostIndex(t));
+  return w[0] * values_[f[0]] + w[1] * values_[f[1]] + w[2] * values_[f[2]];
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -306,7 +388,7 @@ void SizingField::addSizedPoints(const double* xyz, const double* sizes, size_t 
     }
 }
 
-double SizingField::userSize(const double* p) const
+double SizingField::userSize(const double* p, Walk& walk) const
 {
   double h = std::numeric_limits<double>::infinity();
   if (user_)
@@ -317,11 +399,19 @@ double SizingField::userSize(const double* p) const
   }
   if (!cloud_.empty())
   {
-    const double c = cloud_.evaluate(p);
+    const double c = cloud_.evaluate(p, walk.cloud);
     if (usable(c))
       h = std::min(h, c);
   }
   return h;
+}
+
+double SizingField::capAt(const double* p, Walk& walk) const
+{
+  double cap = options_.maxEdgeLength > 0 ? options_.maxEdgeLength : std::numeric_limits<double>::infinity();
+  if (capFloor_ && options_.maxEdgeLength > 0)
+    cap = std::max(cap, capFloor_->evaluate(p, walk.floor));
+  return cap;
 }
 
 static Status checkOptions(const SizingOptions& o)
@@ -342,6 +432,7 @@ Status SizingField::build(const double* points, int32_t numPoints, const int32_t
     return st;
   options_ = options;
   uniform_ = 0;
+  walk_ = Walk();
   if (!cloudXYZ_.empty())
   {
     st = cloud_.build(cloudXYZ_.data(), cloudSize_.size(), cloudSize_.data(), progress);
@@ -361,7 +452,11 @@ Status SizingField::build(const double* points, int32_t numPoints, const int32_t
   if (h.empty())
     return Status::failure(ErrorKind::EmptyInput, "The sizing field has no boundary triangle and no sized point.");
   for (size_t i = 0; i < h.size(); ++i)
-    h[i] = std::min(h[i], userSize(xyz.data() + 3 * i));
+  {
+    h[i] = std::min(h[i], userSize(xyz.data() + 3 * i, walk_));
+    if (capFloor_)
+      h[i] = std::min(h[i], capAt(xyz.data() + 3 * i, walk_));
+  }
   st = graded_.build(xyz.data(), h.size(), h.data(), progress);
   if (!st.ok())
     return st;
@@ -386,6 +481,7 @@ Status SizingField::buildUniform(double size, const SizingOptions& options)
   if (!usable(size))
     return Status::failure(ErrorKind::InvalidOption, "The uniform size must be finite and positive.");
   options_ = options;
+  walk_ = Walk();
   if (!cloudXYZ_.empty())
   {
     st = cloud_.build(cloudXYZ_.data(), cloudSize_.size(), cloudSize_.data());
@@ -408,7 +504,7 @@ Status SizingField::buildUniform(double size, const SizingOptions& options)
   return Status::success();
 }
 
-double SizingField::evaluate(const double* p) const
+double SizingField::evaluate(const double* p, Walk& walk) const
 {
   double h = std::numeric_limits<double>::infinity();
   if (uniform_ > 0)
@@ -424,10 +520,9 @@ double SizingField::evaluate(const double* p) const
     }
   }
   else if (!graded_.empty())
-    h = graded_.evaluate(p);
-  h = std::min(h, userSize(p));
-  if (options_.maxEdgeLength > 0)
-    h = std::min(h, options_.maxEdgeLength);
+    h = graded_.evaluate(p, walk.graded);
+  h = std::min(h, userSize(p, walk));
+  h = std::min(h, capAt(p, walk));
   if (options_.minEdgeLength > 0)
     h = std::max(h, options_.minEdgeLength);
   return h;

@@ -13,14 +13,16 @@
 //      one size apart thus differ by at most the factor G. The limited value is the largest one that
 //      satisfies all the bounds: h(v) = min_u (h0(u) + (G-1) d(u, v)), d the shortest path along edges.
 //   5. Query: h(p) = barycentric interpolation over the background tet containing p (outside the nodes'
-//      hull: clamped barycentric interpolation on the hull face that sees p), then
+//      hull: linear interpolation at the point of the hull nearest p), then
 //      min(h, callback(p), cloud(p), maxEdgeLength), max(h, minEdgeLength).
 // The user sizes are not graded between nodes (only at the nodes): a user field is taken as given.
 //
-// evaluate() walks the background mesh from the last query (spatially coherent queries are cheap); it is
-// therefore not thread-safe: use one SizingField (or copy) per thread. The exception, which
-// evaluatesConcurrently() tells: a uniform field whose only user input is a function declared thread-safe
-// (e.g. an OctreeSizing lookup, DomainSizing.h).
+// evaluate(p) walks the background mesh from the last query (spatially coherent queries are cheap); it is
+// therefore not thread-safe. evaluate(p, walk) walks from the caller's own Walk instead, so threads with a
+// Walk each may query at once when evaluatesWithWalks() (no user function, or a thread-safe one; the
+// sampling octree, OctreeSizing.h, does so). Without any walk, evaluatesConcurrently() tells: a uniform
+// field whose only user input is a function declared thread-safe (e.g. an OctreeSizing lookup,
+// DomainSizing.h).
 #pragma once
 
 #include "OptionTable.h"
@@ -35,6 +37,8 @@
 
 namespace volgrid
 {
+
+class CoarseBoundaryFloor;
 
 struct SizingOptions
 {
@@ -60,7 +64,13 @@ public:
   // n points (xyz), one finite value each. Identical points keep the smallest value.
   Status build(const double* xyz, size_t n, const double* values, Progress* progress = nullptr);
   bool empty() const { return values_.empty(); }
+  // The value at p, walking from the tet of the last query.
   double evaluate(const double* p) const;
+  // The same, walking from `hint` (a tet of an earlier query, or -1), which is set to the tet p lies in:
+  // callers with hints of their own may query at once. The value depends on the start only where p lies on
+  // a face of the background mesh, or outside it where its nearest point is on several hull faces (then
+  // either face's or tet's weights, equal up to rounding).
+  double evaluate(const double* p, int32_t& hint) const;
 
   // The background mesh (with ghosts) and the value per mesh vertex, for the gradation and the tests.
   TetMesh& mesh() { return mesh_; }
@@ -70,6 +80,7 @@ public:
   bool degenerate() const { return degenerate_; }
 
 private:
+  double outsideHull(const double* p, int32_t ghost, int32_t& hint) const;
   TetMesh mesh_;
   std::vector<double> values_;
   bool degenerate_ = false;
@@ -98,6 +109,10 @@ public:
   void setBackgroundCloud(const double* xyz, const double* sizes, size_t n);
   // Extra sized nodes (clustering points with a target size). Non-finite or non-positive sizes ignored.
   void addSizedPoints(const double* xyz, const double* sizes, size_t n);
+  // A floor under the size cap (CoarseBoundaryFloor.h): the cap at p becomes max(maxEdgeLength, floor(p)).
+  // A cap that varies in space also caps the nodes before the gradation (a constant one needs not: the
+  // graded field capped afterwards is the same).
+  void setCapFloor(std::shared_ptr<const CoarseBoundaryFloor> floor) { capFloor_ = std::move(floor); }
 
   // Build from the boundary surface (points and triangles; points used by no triangle are ignored).
   // Errors: EmptyInput (no triangle and no sized point), InvalidOption (bad option values).
@@ -107,13 +122,21 @@ public:
   // A uniform field (no surface): h = size everywhere, with the same caps and user inputs.
   Status buildUniform(double size, const SizingOptions& options);
 
-  double evaluate(const double* p) const;
+  // Where a caller's last queries ended in each background mesh (-1: not yet).
+  struct Walk
+  {
+    int32_t graded = -1, cloud = -1, floor = -1;
+  };
+  double evaluate(const double* p) const { return evaluate(p, walk_); }
+  double evaluate(const double* p, Walk& walk) const;
   double operator()(const double* p) const { return evaluate(p); }
+  // Whether evaluate(p, walk) may be called from several threads at once, each with its own Walk.
+  bool evaluatesWithWalks() const { return !user_ || userThreadSafe_; }
   // Whether evaluate() may be called from several threads at once: no interpolant walks (no graded
   // nodes, no background cloud) and no user function other than a thread-safe one.
   bool evaluatesConcurrently() const
   {
-    return graded_.empty() && cloud_.empty() && (!user_ || userThreadSafe_);
+    return graded_.empty() && cloud_.empty() && !capFloor_ && (!user_ || userThreadSafe_);
   }
 
   // The graded interpolant (nodes = boundary points + sized points) and the options used.
@@ -124,10 +147,13 @@ public:
   double maxNodeSize() const { return maxNode_; }
 
 private:
-  double userSize(const double* p) const;
+  double userSize(const double* p, Walk& walk) const;
+  double capAt(const double* p, Walk& walk) const; // the cap, raised by the floor (infinite: none)
   SizingOptions options_;
   Function user_;
   bool userThreadSafe_ = false;
+  std::shared_ptr<const CoarseBoundaryFloor> capFloor_;
+  mutable Walk walk_; // evaluate(p)'s
   std::vector<double> cloudXYZ_, cloudSize_;
   std::vector<double> extraXYZ_, extraSize_;
   LinearInterpolant cloud_;

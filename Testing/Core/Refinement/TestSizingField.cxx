@@ -173,3 +173,60 @@ TEST(SizingField, SizedPointsDensifyTheirNeighbourhood)
   // Far away (on the boundary) the size is unchanged.
   EXPECT_NEAR(sized.evaluate(s.point(0)), plain.evaluate(s.point(0)), 1e-12);
 }
+
+// Outside the nodes' hull the value is the one at the hull point nearest the query, whatever tet the walk
+// starts from. Below a flat hull (the nodes of a symmetry plane) every hull face is on the query's side,
+// so the face the walk happens to cross says nothing: a far start gave the value of a far face.
+TEST(LinearInterpolant, OutsideTheHullTheValueIsAtTheNearestHullPoint)
+{
+  std::vector<double> xyz, values;
+  const auto f = [](double x, double y, double z) { return 1 + 2 * x - 3 * y + 0.5 * z; }; // linear: exact
+  uint32_t seed = 12345;
+  const auto jitter = [&]()
+  {
+    seed = seed * 1664525u + 1013904223u;
+    return (static_cast<double>(seed >> 8) / 16777216.0 - 0.5) * 0.02;
+  };
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 10; ++j)
+    {
+      const double x = i / 10.0 + (i % 10 ? jitter() : 0), y = j / 10.0 + (j % 10 ? jitter() : 0);
+      xyz.insert(xyz.end(), { x, y, 0.0 });
+      values.push_back(f(x, y, 0));
+    }
+  for (int k = 0; k < 40; ++k)
+  {
+    const double x = 0.5 + 20 * jitter(), y = 0.5 + 20 * jitter(), z = 0.3 + 30 * jitter();
+    xyz.insert(xyz.end(), { x, y, z });
+    values.push_back(f(x, y, z));
+  }
+  LinearInterpolant interpolant;
+  ASSERT_TRUE(interpolant.build(xyz.data(), values.size(), values.data()).ok());
+  ASSERT_FALSE(interpolant.degenerate());
+  // Start tets: every tet the walks to these points end in.
+  std::vector<int32_t> starts = { -1 };
+  for (const double* s : { &xyz[0], &xyz[3 * 120], &xyz[3 * 130], &xyz[3 * 10] })
+  {
+    const double above[3] = { s[0] * 0.98 + 0.01, s[1] * 0.98 + 0.01, 0.05 };
+    int32_t hint = -1;
+    interpolant.evaluate(above, hint);
+    starts.push_back(hint);
+  }
+  for (double x = 0.05; x < 1; x += 0.1)
+    for (double y = 0.07; y < 1; y += 0.1)
+    {
+      const double below[3] = { x, y, -0.3 }; // nearest hull point (x, y, 0)
+      int32_t firstHint = starts[0];
+      const double first = interpolant.evaluate(below, firstHint);
+      EXPECT_NEAR(first, f(x, y, 0), 1e-12) << x << " " << y;
+      for (int32_t start : starts)
+      {
+        int32_t hint = start;
+        EXPECT_EQ(interpolant.evaluate(below, hint), first) << x << " " << y << " from tet " << start;
+      }
+    }
+  // Beyond the square's edge x = 1 and below it: the nearest hull point is on the edge.
+  const double beyond[3] = { 1.4, 0.55, -0.2 };
+  int32_t hint = -1;
+  EXPECT_NEAR(interpolant.evaluate(beyond, hint), f(1, 0.55, 0), 1e-12);
+}
