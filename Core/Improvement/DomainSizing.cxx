@@ -191,7 +191,7 @@ Status buildDomainSizing(const TetMesh& mesh, const SurfaceMesh& surface, const 
     const OccupancyPyramid domain = domainBoxes(mesh);
     octree = std::make_shared<OctreeSizing>();
     octree->build(sizing, lo, ext, 18, std::max<size_t>(1u << 20, 16 * static_cast<size_t>(mesh.numVertices())),
-                  &domain, progress);
+                  &domain, progress, options.threads);
     if (octree->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Sizing was cancelled.");
     std::shared_ptr<const OctreeSizing> tree = octree;

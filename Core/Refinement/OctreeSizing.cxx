@@ -1,105 +1,227 @@
-// OctreeSizing: the most oversized cell split first, children appended as groups of eight siblings.
+// OctreeSizing: a level at a time on the threads, or the most oversized cell first under a cap; children
+// appended as groups of eight siblings.
 #include "OctreeSizing.h"
 
+#include "ParallelFor.h"
+
 #include <algorithm>
-#include <array>
+#include <atomic>
 #include <queue>
 #include <utility>
 
 namespace volgrid
 {
 
+namespace
+{
+constexpr size_t kCellsPerChunk = 64; // a level's cells are split in chunks of this many, one thread each
+} // namespace
+
 struct OctreeSizing::Building
 {
-  std::vector<std::array<double, 3>> origin;
-  std::vector<int> depth;
-  std::vector<double> centreSize;
-  // (size over the smallest size at its corners and centre, -cell): the most oversized first, ties by cell.
-  std::priority_queue<std::pair<double, int32_t>> queue;
   double rootSize = 1;
   int maxDepth = 0;
+  size_t maxCells = 0;
+  const OccupancyPyramid* where = nullptr;
 
-  double cellSize(size_t c) const { return rootSize / static_cast<double>(1u << depth[c]); }
+  double cellSize(int depth) const { return rootSize / static_cast<double>(1u << depth); }
 };
 
 void OctreeSizing::build(const SizingField& field, const double lo[3], double size, int maxDepth, size_t maxCells,
-                         const OccupancyPyramid* where, Progress* progress)
+                         const OccupancyPyramid* where, Progress* progress, int threads)
 {
   cancelled_ = false;
+  capped_ = false;
   std::copy(lo, lo + 3, lo_);
   size_ = size;
   cells_.assign(1, Cell());
+  SizingField::Walk walk;
   for (int k = 0; k < 8; ++k)
   {
     const double p[3] = { lo[0] + ((k & 1) ? size : 0), lo[1] + ((k & 2) ? size : 0), lo[2] + ((k & 4) ? size : 0) };
-    cells_[0].h[k] = static_cast<float>(field.evaluate(p));
+    cells_[0].h[k] = static_cast<float>(field.evaluate(p, walk));
   }
   Building b;
-  b.origin = { { lo[0], lo[1], lo[2] } };
-  b.depth = { 0 };
   b.rootSize = size;
   b.maxDepth = maxDepth;
+  b.maxCells = maxCells;
+  b.where = where;
+  const Unsplit root = sampleCentre({ lo[0], lo[1], lo[2] }, 0, field, walk, b);
+  if (field.evaluatesWithWalks() && buildByLevels(field, b, root, progress, threads))
+    return;
+  cells_.resize(1);
+  cells_[0].child = -1;
+  buildByPriority(field, b, root, progress);
+}
+
+double OctreeSizing::splitPriority(const Cell& cell, const Unsplit& u, const Building& b) const
+{
+  const double cs = b.cellSize(u.depth);
+  double hmin = u.centreSize;
+  for (int k = 0; k < 8; ++k)
+    hmin = std::min(hmin, static_cast<double>(cell.h[k]));
+  const double hi[3] = { u.origin[0] + cs, u.origin[1] + cs, u.origin[2] + cs };
+  if (u.depth < b.maxDepth && cs > 1.5 * hmin && (!b.where || b.where->mayOverlap(u.origin.data(), hi)))
+    return cs / hmin;
+  return 0;
+}
+
+OctreeSizing::Unsplit OctreeSizing::sampleCentre(const std::array<double, 3>& origin, int depth,
+                                                 const SizingField& field, SizingField::Walk& walk,
+                                                 const Building& b)
+{
+  const double cs = b.cellSize(depth);
+  const double centre[3] = { origin[0] + cs / 2, origin[1] + cs / 2, origin[2] + cs / 2 };
+  Unsplit u;
+  u.origin = origin;
+  u.depth = depth;
+  u.centreSize = field.evaluate(centre, walk);
+  u.walk = walk;
+  return u;
+}
+
+void OctreeSizing::splitInto(const Cell& cell, const Unsplit& u, const SizingField& field, const Building& b,
+                             Cell* children, Unsplit* states)
+{
+  const double cs = b.cellSize(u.depth);
+  const std::array<double, 3>& o = u.origin;
+  SizingField::Walk walk = u.walk;
+  float grid[27];
+  for (int l = 0; l < 27; ++l)
+  {
+    const int i = l % 3, j = (l / 3) % 3, m = l / 9;
+    if (i != 1 && j != 1 && m != 1)
+      grid[l] = cell.h[(i / 2) | ((j / 2) << 1) | ((m / 2) << 2)];
+    else if (i == 1 && j == 1 && m == 1)
+      grid[l] = static_cast<float>(u.centreSize);
+    else
+    {
+      const double p[3] = { o[0] + i * cs / 2, o[1] + j * cs / 2, o[2] + m * cs / 2 };
+      grid[l] = static_cast<float>(field.evaluate(p, walk));
+    }
+  }
+  for (int k = 0; k < 8; ++k)
+  {
+    const int bx = k & 1, by = (k >> 1) & 1, bz = (k >> 2) & 1;
+    Cell& child = children[k];
+    child = Cell();
+    for (int n = 0; n < 8; ++n)
+      child.h[n] = grid[(bx + (n & 1)) + 3 * (by + ((n >> 1) & 1)) + 9 * (bz + ((n >> 2) & 1))];
+    states[k] =
+      sampleCentre({ o[0] + bx * cs / 2, o[1] + by * cs / 2, o[2] + bz * cs / 2 }, u.depth + 1, field, walk, b);
+  }
+}
+
+// The cells of a level are split on the threads, each into its own eight slots after the level's first
+// (cells in level order), so the tree does not depend on which thread split which cell.
+bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, const Unsplit& root,
+                                 Progress* progress, int threads)
+{
+  std::vector<int32_t> level;
+  std::vector<Unsplit> levelState;
+  if (splitPriority(cells_[0], root, b) > 0)
+  {
+    level.push_back(0);
+    levelState.push_back(root);
+  }
+  std::atomic<bool> stop{ false };
+  size_t splitsAsked = 0; // the cells of the chunks worker 0 took: it asks as each 1024 more begin
+  while (!level.empty())
+  {
+    if (cells_.size() + 8 * level.size() > b.maxCells)
+      return false;
+    const size_t base = cells_.size(), n = level.size();
+    cells_.resize(base + 8 * n);
+    std::vector<Unsplit> childState(8 * n);
+    std::vector<uint8_t> splitNext(8 * n, 0);
+    // Chunks of cells handed out in turn (the cost of a cell's walks varies over the domain); worker 0 runs
+    // on the calling thread and asks progress.
+    std::atomic<size_t> nextChunk{ 0 };
+    const size_t chunks = (n + kCellsPerChunk - 1) / kCellsPerChunk;
+    const int workers = static_cast<int>(std::min<size_t>(static_cast<size_t>(resolveThreads(threads)), chunks));
+    parallelRun(workers,
+                [&](int worker)
+                {
+                  for (size_t chunk = nextChunk++; chunk < chunks && !stop.load(std::memory_order_relaxed);
+                       chunk = nextChunk++)
+                  {
+                    const size_t begin = chunk * kCellsPerChunk, end = std::min(n, begin + kCellsPerChunk);
+                    if (worker == 0 && progress)
+                    {
+                      const size_t before = splitsAsked;
+                      splitsAsked += end - begin;
+                      if (before / 1024 != splitsAsked / 1024 && progress->cancelled())
+                      {
+                        stop = true;
+                        break;
+                      }
+                    }
+                    for (size_t i = begin; i < end; ++i)
+                    {
+                      const size_t first = base + 8 * i;
+                      splitInto(cells_[level[i]], levelState[i], field, b, &cells_[first], &childState[8 * i]);
+                      for (int k = 0; k < 8; ++k)
+                        splitNext[8 * i + k] = splitPriority(cells_[first + k], childState[8 * i + k], b) > 0;
+                      cells_[level[i]].child = static_cast<int32_t>(first);
+                    }
+                  }
+                });
+    if (stop)
+    {
+      // The tree keeps the cells made until then: the level's slots end after its last split cell.
+      size_t end = base;
+      for (const int32_t c : level)
+        if (cells_[c].child >= 0)
+          end = std::max(end, static_cast<size_t>(cells_[c].child) + 8);
+      cells_.resize(end);
+      cancelled_ = true;
+      return true;
+    }
+    level.clear();
+    levelState.clear();
+    for (size_t c = 0; c < 8 * n; ++c)
+      if (splitNext[c])
+      {
+        level.push_back(static_cast<int32_t>(base + c));
+        levelState.push_back(childState[c]);
+      }
+  }
+  return true;
+}
+
+void OctreeSizing::buildByPriority(const SizingField& field, const Building& b, const Unsplit& root,
+                                   Progress* progress)
+{
+  std::vector<Unsplit> state{ root }; // per cell
+  // (how oversized, -cell): the most oversized first, ties by cell.
+  std::priority_queue<std::pair<double, int32_t>> queue;
   const auto queueIfOversized = [&](size_t c)
   {
-    const double cs = b.cellSize(c);
-    const double centre[3] = { b.origin[c][0] + cs / 2, b.origin[c][1] + cs / 2, b.origin[c][2] + cs / 2 };
-    b.centreSize.resize(cells_.size());
-    b.centreSize[c] = field.evaluate(centre);
-    double hmin = b.centreSize[c];
-    for (int k = 0; k < 8; ++k)
-      hmin = std::min(hmin, static_cast<double>(cells_[c].h[k]));
-    const double hi[3] = { b.origin[c][0] + cs, b.origin[c][1] + cs, b.origin[c][2] + cs };
-    if (b.depth[c] < maxDepth && cs > 1.5 * hmin && (!where || where->mayOverlap(b.origin[c].data(), hi)))
-      b.queue.push({ cs / hmin, -static_cast<int32_t>(c) });
+    const double priority = splitPriority(cells_[c], state[c], b);
+    if (priority > 0)
+      queue.push({ priority, -static_cast<int32_t>(c) });
   };
   queueIfOversized(0);
-  for (size_t splits = 0; !b.queue.empty() && cells_.size() + 8 <= maxCells; ++splits)
+  for (size_t splits = 0; !queue.empty() && cells_.size() + 8 <= b.maxCells; ++splits)
   {
     if ((splits & 1023) == 1023 && progress && progress->cancelled())
     {
       cancelled_ = true;
       return;
     }
-    const size_t c = static_cast<size_t>(-b.queue.top().second);
-    b.queue.pop();
-    split(c, b, field);
+    const size_t c = static_cast<size_t>(-queue.top().second);
+    queue.pop();
+    const size_t first = cells_.size();
+    const Cell parent = cells_[c];
+    const Unsplit parentState = state[c];
+    cells_.resize(first + 8);
+    state.resize(first + 8);
+    splitInto(parent, parentState, field, b, &cells_[first], &state[first]);
+    cells_[c].child = static_cast<int32_t>(first);
     for (int k = 0; k < 8; ++k)
-      queueIfOversized(static_cast<size_t>(cells_[c].child + k));
+      queueIfOversized(first + static_cast<size_t>(k));
   }
-  capped_ = !b.queue.empty();
-}
-
-// Appends the eight children of `cell`, their corner sizes from the 3x3x3 lattice of their corners (the
-// parent's corners and centre are known).
-void OctreeSizing::split(size_t cell, Building& b, const SizingField& field)
-{
-  const double cs = b.cellSize(cell);
-  const std::array<double, 3> o = b.origin[cell];
-  float grid[27];
-  for (int l = 0; l < 27; ++l)
-  {
-    const int i = l % 3, j = (l / 3) % 3, m = l / 9;
-    if (i != 1 && j != 1 && m != 1)
-      grid[l] = cells_[cell].h[(i / 2) | ((j / 2) << 1) | ((m / 2) << 2)];
-    else if (i == 1 && j == 1 && m == 1)
-      grid[l] = static_cast<float>(b.centreSize[cell]);
-    else
-    {
-      const double p[3] = { o[0] + i * cs / 2, o[1] + j * cs / 2, o[2] + m * cs / 2 };
-      grid[l] = static_cast<float>(field.evaluate(p));
-    }
-  }
-  cells_[cell].child = static_cast<int32_t>(cells_.size());
-  for (int k = 0; k < 8; ++k)
-  {
-    const int bx = k & 1, by = (k >> 1) & 1, bz = (k >> 2) & 1;
-    Cell child;
-    for (int n = 0; n < 8; ++n)
-      child.h[n] = grid[(bx + (n & 1)) + 3 * (by + ((n >> 1) & 1)) + 9 * (bz + ((n >> 2) & 1))];
-    cells_.push_back(child);
-    b.origin.push_back({ o[0] + bx * cs / 2, o[1] + by * cs / 2, o[2] + bz * cs / 2 });
-    b.depth.push_back(b.depth[cell] + 1);
-  }
+  capped_ = !queue.empty();
 }
 
 double OctreeSizing::evaluate(const double* p) const

@@ -3,11 +3,16 @@
 // cap) and one small feature (a boundary point of size 0.001, the size growing away from it by the
 // gradation). The far field alone asks for 8^6 leaves; with 50,000 cells the old breadth-first order
 // stopped splitting at depth 5 and gave the feature 12 times its size (0.0126 against 0.001).
+#include "CoarseBoundaryFloor.h"
+#include "Enclosures.h"
 #include "OctreeSizing.h"
 #include "SizingField.h"
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <limits>
+#include <memory>
 #include <vector>
 
 using namespace volgrid;
@@ -25,6 +30,61 @@ SizingField capWithOneFeature()
   options.gradation = 1.5; // h(p) = min(0.02, 0.001 + 0.5 |p - feature|)
   EXPECT_TRUE(field.buildUniform(0.02, options).ok());
   return field;
+}
+
+// A field of walks on three background meshes: a fine sphere (r = 1) inside a coarse one (r = 4), graded,
+// under a cap of 0.5 that a floor raises next to the coarse sphere's triangles (CoarseBoundaryFloor.h).
+SizingField gradedFieldWithAFloor()
+{
+  std::vector<double> xyz;
+  std::vector<int32_t> tris;
+  size_t nOuter = 0;
+  for (const double r : { 1.0, 4.0 })
+  {
+    EnclosureOptions o;
+    o.shape = EnclosureShape::Sphere;
+    o.dimensions[0] = r;
+    o.center[1] = 0.0123; // off the octree's lattice
+    o.targetEdgeLength = r < 2 ? 0.08 : 1.0;
+    SurfaceMesh s;
+    EXPECT_TRUE(makeEnclosure(o, s).ok());
+    const int32_t offset = static_cast<int32_t>(xyz.size() / 3);
+    xyz.insert(xyz.end(), s.points.begin(), s.points.end());
+    for (int32_t v : s.triangles)
+      tris.push_back(v + offset);
+    nOuter = s.points.size() / 3;
+  }
+  const size_t n = xyz.size() / 3;
+  std::vector<double> spacing(n, 0.0);
+  std::fill(spacing.end() - static_cast<std::ptrdiff_t>(nOuter), spacing.end(), 1.0);
+  auto floor = std::make_shared<CoarseBoundaryFloor>();
+  // The floor's nodes: the outer sphere's, with its spacing, then the inner sphere's, of no size.
+  std::vector<double> floorXYZ(xyz.end() - static_cast<std::ptrdiff_t>(3 * nOuter), xyz.end());
+  floorXYZ.insert(floorXYZ.end(), xyz.begin(), xyz.end() - static_cast<std::ptrdiff_t>(3 * nOuter));
+  std::vector<double> floorSpacing(nOuter, 1.0);
+  EXPECT_TRUE(floor->build(floorXYZ.data(), floorSpacing.data(), nOuter, n, 0.5).ok());
+  SizingField field;
+  field.setCapFloor(floor);
+  SizingOptions options;
+  options.gradation = 1.5;
+  options.maxEdgeLength = 0.5;
+  EXPECT_TRUE(field.build(xyz.data(), static_cast<int32_t>(n), tris.data(), static_cast<int32_t>(tris.size() / 3),
+                          options)
+                .ok());
+  return field;
+}
+
+// Whether two trees give the same bits at a spread of points through the cube [-5, 5]^3.
+void expectSameSizes(const OctreeSizing& a, const OctreeSizing& b, const char* what)
+{
+  for (double x = -4.93; x < 5; x += 0.377)
+    for (double y = -4.97; y < 5; y += 0.411)
+      for (double z = -4.91; z < 5; z += 0.353)
+      {
+        const double p[3] = { x, y, z };
+        const double ha = a.evaluate(p), hb = b.evaluate(p);
+        ASSERT_EQ(std::memcmp(&ha, &hb, sizeof ha), 0) << what << " at " << x << " " << y << " " << z;
+      }
 }
 
 // The octree's size near the feature is within twice the field's.
@@ -93,8 +153,45 @@ TEST(OctreeSizing, SplitsOnlyWhereTheDomainIs)
       }
 }
 
+// Without a cap the tree is built a level at a time on the threads: the same cells and the same samples on
+// any thread count, and as the most-oversized-first order gives them (taken when the field may be queried
+// by one thread only: here a user function, not declared thread-safe, that changes no size).
+TEST(OctreeSizing, SameTreeOnAnyThreadCountAndInEitherOrder)
+{
+  SizingField field = gradedFieldWithAFloor();
+  ASSERT_TRUE(field.evaluatesWithWalks());
+  const double lo[3] = { -5, -5, -5 };
+  OctreeSizing one, two, eight;
+  one.build(field, lo, 10.0, 18, size_t(1) << 22, nullptr, nullptr, 1);
+  two.build(field, lo, 10.0, 18, size_t(1) << 22, nullptr, nullptr, 2);
+  eight.build(field, lo, 10.0, 18, size_t(1) << 22, nullptr, nullptr, 8);
+  EXPECT_FALSE(one.capped());
+  EXPECT_GT(one.cells(), 20000u); // levels of thousands of cells: several ranges each
+  EXPECT_EQ(two.cells(), one.cells());
+  EXPECT_EQ(eight.cells(), one.cells());
+  expectSameSizes(one, two, "2 threads");
+  expectSameSizes(one, eight, "8 threads");
+
+  field.setUserFunction([](const double*) { return std::numeric_limits<double>::infinity(); });
+  ASSERT_FALSE(field.evaluatesWithWalks());
+  OctreeSizing byPriority;
+  byPriority.build(field, lo, 10.0, 18, size_t(1) << 22, nullptr, nullptr, 8);
+  EXPECT_FALSE(byPriority.capped());
+  EXPECT_EQ(byPriority.cells(), one.cells());
+  expectSameSizes(one, byPriority, "most oversized first");
+
+  // The tree follows the field: near the fine sphere and under the floor alike.
+  for (const double r : { 1.02, 2.5, 3.9 })
+  {
+    const double p[3] = { r, 0.0123, 0.0 };
+    EXPECT_LE(one.evaluate(p), 2 * field.evaluate(p)) << "at r " << r;
+    EXPECT_GE(one.evaluate(p), 0.5 * field.evaluate(p)) << "at r " << r;
+  }
+}
+
 // A build asks its progress whether to stop every 1024 splits (the octree of a 10M-tet domain takes about a
-// second) and stops there when told: cancelled() says so, and the tree has only the cells made until then.
+// second; a level on the threads asks as each 1024 more cells begin) and stops there when told:
+// cancelled() says so, and the tree has only the cells made until then.
 TEST(OctreeSizing, StopsWhenCancelled)
 {
   const SizingField field = capWithOneFeature();
@@ -112,6 +209,8 @@ TEST(OctreeSizing, StopsWhenCancelled)
   EXPECT_FALSE(whole.cancelled());
   EXPECT_TRUE(stopped.cancelled());
   EXPECT_EQ(progress.questions, 2);
-  EXPECT_EQ(stopped.cells(), 1 + 8 * 2047u); // the root, and eight children for each split before the 2nd question
+  // The root and eight children for each split made before the 2nd question: more than 1024, at most 2048.
+  EXPECT_GT(stopped.cells(), 1 + 8 * 1024u);
+  EXPECT_LE(stopped.cells(), 1 + 8 * 2048u);
   EXPECT_GT(whole.cells(), stopped.cells());
 }
