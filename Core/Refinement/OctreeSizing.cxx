@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <queue>
+#include <unordered_map>
 #include <utility>
 
 namespace volgrid
@@ -15,6 +16,7 @@ namespace volgrid
 namespace
 {
 constexpr size_t kCellsPerChunk = 64; // a level's cells are split in chunks of this many, one thread each
+constexpr size_t kBatch = 1024;        // at most this many cells split at once in the most-oversized order
 } // namespace
 
 struct OctreeSizing::Building
@@ -47,11 +49,14 @@ void OctreeSizing::build(const SizingField& field, const double lo[3], double si
   b.maxCells = maxCells;
   b.where = where;
   const Unsplit root = sampleCentre({ lo[0], lo[1], lo[2] }, 0, field, walk, b);
-  if (field.evaluatesWithWalks() && buildByLevels(field, b, root, progress, threads))
+  std::vector<Unsplit> states; // per cell of the level build
+  if (field.evaluatesWithWalks() && buildByLevels(field, b, root, progress, threads, states))
     return;
-  cells_.resize(1);
+  // Past the cap: the splits the levels made are taken again where the order wants them.
+  const SplitCache made{ std::move(cells_), std::move(states) };
+  cells_.assign(1, made.cells.empty() ? Cell() : made.cells[0]);
   cells_[0].child = -1;
-  buildByPriority(field, b, root, progress);
+  buildByPriority(field, b, root, progress, threads, made);
 }
 
 double OctreeSizing::splitPriority(const Cell& cell, const Unsplit& u, const Building& b) const
@@ -115,15 +120,12 @@ void OctreeSizing::splitInto(const Cell& cell, const Unsplit& u, const SizingFie
 // The cells of a level are split on the threads, each into its own eight slots after the level's first
 // (cells in level order), so the tree does not depend on which thread split which cell.
 bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, const Unsplit& root,
-                                 Progress* progress, int threads)
+                                 Progress* progress, int threads, std::vector<Unsplit>& states)
 {
+  states.assign(1, root);
   std::vector<int32_t> level;
-  std::vector<Unsplit> levelState;
   if (splitPriority(cells_[0], root, b) > 0)
-  {
     level.push_back(0);
-    levelState.push_back(root);
-  }
   std::atomic<bool> stop{ false };
   size_t splitsAsked = 0; // the cells of the chunks worker 0 took: it asks as each 1024 more begin
   while (!level.empty())
@@ -132,7 +134,7 @@ bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, co
       return false;
     const size_t base = cells_.size(), n = level.size();
     cells_.resize(base + 8 * n);
-    std::vector<Unsplit> childState(8 * n);
+    states.resize(base + 8 * n);
     std::vector<uint8_t> splitNext(8 * n, 0);
     // Chunks of cells handed out in turn (the cost of a cell's walks varies over the domain); worker 0 runs
     // on the calling thread and asks progress.
@@ -159,9 +161,9 @@ bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, co
                     for (size_t i = begin; i < end; ++i)
                     {
                       const size_t first = base + 8 * i;
-                      splitInto(cells_[level[i]], levelState[i], field, b, &cells_[first], &childState[8 * i]);
+                      splitInto(cells_[level[i]], states[level[i]], field, b, &cells_[first], &states[first]);
                       for (int k = 0; k < 8; ++k)
-                        splitNext[8 * i + k] = splitPriority(cells_[first + k], childState[8 * i + k], b) > 0;
+                        splitNext[8 * i + k] = splitPriority(cells_[first + k], states[first + k], b) > 0;
                       cells_[level[i]].child = static_cast<int32_t>(first);
                     }
                   }
@@ -178,23 +180,25 @@ bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, co
       return true;
     }
     level.clear();
-    levelState.clear();
     for (size_t c = 0; c < 8 * n; ++c)
       if (splitNext[c])
-      {
         level.push_back(static_cast<int32_t>(base + c));
-        levelState.push_back(childState[c]);
-      }
   }
   return true;
 }
 
+// The cells next in the order are split as a batch on the threads (a split depends on its cell alone), then
+// taken in the order one after the other, until a child of one taken outranks the next: the rest wait for
+// the next batch, their splits kept. The tree is the one the one-at-a-time order gives. A cell that the
+// level build split (`made`) takes its children from there.
 void OctreeSizing::buildByPriority(const SizingField& field, const Building& b, const Unsplit& root,
-                                   Progress* progress)
+                                   Progress* progress, int threads, const SplitCache& made)
 {
   std::vector<Unsplit> state{ root }; // per cell
+  std::vector<int32_t> madeAs{ 0 };   // per cell, the same cell in `made` (-1: none)
   // (how oversized, -cell): the most oversized first, ties by cell.
-  std::priority_queue<std::pair<double, int32_t>> queue;
+  using Entry = std::pair<double, int32_t>;
+  std::priority_queue<Entry> queue;
   const auto queueIfOversized = [&](size_t c)
   {
     const double priority = splitPriority(cells_[c], state[c], b);
@@ -202,24 +206,81 @@ void OctreeSizing::buildByPriority(const SizingField& field, const Building& b, 
       queue.push({ priority, -static_cast<int32_t>(c) });
   };
   queueIfOversized(0);
-  for (size_t splits = 0; !queue.empty() && cells_.size() + 8 <= b.maxCells; ++splits)
+  std::vector<Entry> batch;
+  std::vector<Split> splits, waiting;            // the batch's; those made but not taken
+  std::unordered_map<int32_t, size_t> waitingAt; // cell -> its split in waiting
+  const int workers = field.evaluatesWithWalks() ? resolveThreads(threads) : 1;
+  for (size_t done = 0; !queue.empty() && cells_.size() + 8 <= b.maxCells;)
   {
-    if ((splits & 1023) == 1023 && progress && progress->cancelled())
+    // About an eighth of the queue (its most oversized cells seldom wait for a child of another); one cell
+    // on one thread.
+    const size_t room = (b.maxCells - cells_.size()) / 8;
+    const size_t size =
+      workers > 1 ? std::min({ std::max<size_t>(queue.size() / 8, 1), kBatch, room, queue.size() }) : 1;
+    batch.clear();
+    splits.assign(size, Split());
+    for (size_t i = 0; i < size; ++i)
     {
-      cancelled_ = true;
-      return;
+      batch.push_back(queue.top());
+      queue.pop();
+      Split& split = splits[i];
+      split.cell = -batch[i].second;
+      const auto w = waitingAt.find(split.cell);
+      const int32_t m = madeAs[split.cell];
+      if (w != waitingAt.end())
+        split = std::move(waiting[w->second]);
+      else if (m >= 0 && made.cells[m].child >= 0)
+      {
+        split.madeFirst = made.cells[m].child;
+        std::copy_n(&made.cells[split.madeFirst], 8, split.children);
+        std::copy_n(&made.states[split.madeFirst], 8, split.states);
+        split.made = true;
+      }
     }
-    const size_t c = static_cast<size_t>(-queue.top().second);
-    queue.pop();
-    const size_t first = cells_.size();
-    const Cell parent = cells_[c];
-    const Unsplit parentState = state[c];
-    cells_.resize(first + 8);
-    state.resize(first + 8);
-    splitInto(parent, parentState, field, b, &cells_[first], &state[first]);
-    cells_[c].child = static_cast<int32_t>(first);
-    for (int k = 0; k < 8; ++k)
-      queueIfOversized(first + static_cast<size_t>(k));
+    std::atomic<size_t> next{ 0 };
+    parallelRun(static_cast<int>(std::min<size_t>(static_cast<size_t>(workers), (size + 63) / 64)),
+                [&](int)
+                {
+                  for (size_t i = next++; i < size; i = next++)
+                    if (!splits[i].made)
+                    {
+                      splitInto(cells_[splits[i].cell], state[splits[i].cell], field, b, splits[i].children,
+                                splits[i].states);
+                      splits[i].made = true;
+                    }
+                });
+    size_t taken = 0;
+    for (; taken < size; ++taken)
+    {
+      if ((taken > 0 && !queue.empty() && queue.top() > batch[taken]) || cells_.size() + 8 > b.maxCells)
+        break;
+      if ((done & 1023) == 1023 && progress && progress->cancelled())
+      {
+        cancelled_ = true;
+        return;
+      }
+      const Split& split = splits[taken];
+      const size_t first = cells_.size();
+      cells_.insert(cells_.end(), split.children, split.children + 8);
+      for (int k = 0; k < 8; ++k)
+      {
+        cells_[first + static_cast<size_t>(k)].child = -1;
+        state.push_back(split.states[k]);
+        madeAs.push_back(split.madeFirst >= 0 ? split.madeFirst + k : -1);
+      }
+      cells_[split.cell].child = static_cast<int32_t>(first);
+      for (int k = 0; k < 8; ++k)
+        queueIfOversized(first + static_cast<size_t>(k));
+      ++done;
+    }
+    waiting.clear();
+    waitingAt.clear();
+    for (size_t i = taken; i < size; ++i)
+    {
+      queue.push(batch[i]);
+      waitingAt[splits[i].cell] = waiting.size();
+      waiting.push_back(std::move(splits[i]));
+    }
   }
   capped_ = !queue.empty();
 }

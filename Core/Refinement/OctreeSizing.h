@@ -11,8 +11,10 @@
 // most-oversized first (size over that smallest size), one after the other: the cells left unsplit are
 // then the least oversized ones, wherever they are. (Breadth first, a size cap that fills a large far field
 // with cells used up the cap before the boundary's small sizes were reached, and the sizes near a wall
-// were interpolated from far away.) A level that would pass the cap starts the build again in that order;
-// so does a field that only one thread may query (a user function not declared thread-safe).
+// were interpolated from far away.) A level that would pass the cap starts the build again in that order,
+// with the splits the levels made (the cells next in the order are split in batches on the threads, and
+// taken one after the other: the same tree as one at a time); a field that only one thread may query (a
+// user function not declared thread-safe) is built in that order from the start.
 //
 // Only cells where the domain is are split (`where`, the boxes of the domain's tets): the cube around a
 // body is mostly outside it, and the surface's small sizes, interpolated there, would otherwise ask for
@@ -76,10 +78,28 @@ private:
   // samples walk on from the parent's centre, so they depend on the cell alone, not on the order of splits.
   static void splitInto(const Cell& cell, const Unsplit& u, const SizingField& field, const Building& b,
                         Cell* children, Unsplit* states);
-  // The level-at-a-time build; false when a level would pass the cap (the tree is then to be built again).
+  // A split made before it was taken: the children and their states (madeFirst: where the level build
+  // put them, -1 when made here).
+  struct Split
+  {
+    int32_t cell = -1;
+    bool made = false;
+    int32_t madeFirst = -1;
+    Cell children[8];
+    Unsplit states[8];
+  };
+  // The cells and states of a level build that stopped at the cap.
+  struct SplitCache
+  {
+    std::vector<Cell> cells;
+    std::vector<Unsplit> states;
+  };
+  // The level-at-a-time build (states: per cell); false when a level would pass the cap (the cells and
+  // states made until then stay, for the other order to take).
   bool buildByLevels(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress,
-                     int threads);
-  void buildByPriority(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress);
+                     int threads, std::vector<Unsplit>& states);
+  void buildByPriority(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress,
+                       int threads, const SplitCache& made);
 
   std::vector<Cell> cells_;
   double lo_[3] = { 0, 0, 0 };

@@ -20,6 +20,7 @@ using namespace volgrid;
 namespace
 {
 const double kFeature[3] = { 0.5137, 0.4871, 0.5029 }; // off the octree lattice
+const double kAround[3] = { -5, -5, -5 };               // the cube of gradedFieldWithAFloor's trees
 
 SizingField capWithOneFeature()
 {
@@ -74,12 +75,13 @@ SizingField gradedFieldWithAFloor()
   return field;
 }
 
-// Whether two trees give the same bits at a spread of points through the cube [-5, 5]^3.
-void expectSameSizes(const OctreeSizing& a, const OctreeSizing& b, const char* what)
+// Whether two trees give the same bits at a spread of points through the cube [lo, lo + size]^3.
+void expectSameSizes(const OctreeSizing& a, const OctreeSizing& b, const char* what, const double lo[3] = kAround,
+                     double size = 10.0)
 {
-  for (double x = -4.93; x < 5; x += 0.377)
-    for (double y = -4.97; y < 5; y += 0.411)
-      for (double z = -4.91; z < 5; z += 0.353)
+  for (double x = lo[0] + 0.0071 * size; x < lo[0] + size; x += 0.0377 * size)
+    for (double y = lo[1] + 0.0033 * size; y < lo[1] + size; y += 0.0411 * size)
+      for (double z = lo[2] + 0.0089 * size; z < lo[2] + size; z += 0.0353 * size)
       {
         const double p[3] = { x, y, z };
         const double ha = a.evaluate(p), hb = b.evaluate(p);
@@ -154,13 +156,14 @@ TEST(OctreeSizing, SplitsOnlyWhereTheDomainIs)
 }
 
 // Without a cap the tree is built a level at a time on the threads: the same cells and the same samples on
-// any thread count, and as the most-oversized-first order gives them (taken when the field may be queried
-// by one thread only: here a user function, not declared thread-safe, that changes no size).
+// any thread count, and as the most-oversized-first order gives them one at a time (taken when the field
+// may be queried by one thread only: here a user function, not declared thread-safe, that changes no
+// size).
 TEST(OctreeSizing, SameTreeOnAnyThreadCountAndInEitherOrder)
 {
   SizingField field = gradedFieldWithAFloor();
   ASSERT_TRUE(field.evaluatesWithWalks());
-  const double lo[3] = { -5, -5, -5 };
+  const double* lo = kAround;
   OctreeSizing one, two, eight;
   one.build(field, lo, 10.0, 18, size_t(1) << 22, nullptr, nullptr, 1);
   two.build(field, lo, 10.0, 18, size_t(1) << 22, nullptr, nullptr, 2);
@@ -186,6 +189,45 @@ TEST(OctreeSizing, SameTreeOnAnyThreadCountAndInEitherOrder)
     const double p[3] = { r, 0.0123, 0.0 };
     EXPECT_LE(one.evaluate(p), 2 * field.evaluate(p)) << "at r " << r;
     EXPECT_GE(one.evaluate(p), 0.5 * field.evaluate(p)) << "at r " << r;
+  }
+}
+
+// Under a cap the order is most oversized first. Built on the threads (the level build's splits taken
+// again, the rest split in batches and taken one after the other), the tree is the one-at-a-time order's
+// (one thread, or a field only one thread may query). The feature's field has children that outrank the
+// cells after their parent (a cell's corners miss the feature its children's corners come near).
+TEST(OctreeSizing, UnderACapTheThreadsGiveTheOneAtATimeOrder)
+{
+  struct Case
+  {
+    SizingField field;
+    double lo[3], size;
+    size_t cap;
+  };
+  Case cases[2] = { { capWithOneFeature(), { 0, 0, 0 }, 1.0, 50000 }, { gradedFieldWithAFloor(), { -5, -5, -5 }, 10.0, 0 } };
+  OctreeSizing uncapped;
+  uncapped.build(cases[1].field, cases[1].lo, cases[1].size, 18, size_t(1) << 22, nullptr, nullptr, 2);
+  cases[1].cap = uncapped.cells() / 2;
+  for (Case& c : cases)
+  {
+    ASSERT_TRUE(c.field.evaluatesWithWalks());
+    OctreeSizing one, two, eight, oneAtATime;
+    one.build(c.field, c.lo, c.size, 18, c.cap, nullptr, nullptr, 1);
+    two.build(c.field, c.lo, c.size, 18, c.cap, nullptr, nullptr, 2);
+    eight.build(c.field, c.lo, c.size, 18, c.cap, nullptr, nullptr, 8);
+    c.field.setUserFunction([](const double*) { return std::numeric_limits<double>::infinity(); });
+    oneAtATime.build(c.field, c.lo, c.size, 18, c.cap, nullptr, nullptr, 8);
+    EXPECT_TRUE(oneAtATime.capped());
+    EXPECT_GT(oneAtATime.cells(), c.cap - 8);
+    EXPECT_LE(oneAtATime.cells(), c.cap);
+    for (const OctreeSizing* t : { &one, &two, &eight })
+    {
+      EXPECT_EQ(t->cells(), oneAtATime.cells());
+      expectSameSizes(*t, oneAtATime, "capped", c.lo, c.size);
+    }
+    // Near the feature the capped tree still follows the field.
+    if (&c == &cases[0])
+      expectFeatureResolved(eight, c.field);
   }
 }
 
