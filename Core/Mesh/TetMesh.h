@@ -93,6 +93,22 @@ public:
   void clear();
 
   // ---- vertices ----
+  // Loops over scattered tets start the loads of a tet some iterations ahead: its flags and vertex
+  // numbers first (prefetchTet), its points once those have arrived (prefetchPoints).
+  void prefetchTet(int32_t t) const
+  {
+    __builtin_prefetch(&tetFlags[static_cast<size_t>(t)]);
+    __builtin_prefetch(&tetVertices[4 * static_cast<size_t>(t)]);
+  }
+  void prefetchPoints(int32_t t) const
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t v = tetVertices[4 * static_cast<size_t>(t) + i];
+      if (v >= 0 && v < numVertices()) // a free slot or a ghost holds others
+        __builtin_prefetch(points.data() + 3 * static_cast<size_t>(v));
+    }
+  }
   const double* point(int32_t v) const
   {
     assert(v >= 0 && v < numVertices());

@@ -63,6 +63,15 @@ bool unchangedSincePassBegan(const TetMesh& mesh, const std::vector<int32_t>& bi
   return !mesh.isFree(t) && birth[static_cast<size_t>(t)] == pass - 1;
 }
 
+// The loads of the tets a pass asks about, started ahead: the tet (its flags, vertices and birth)
+// kPrefetchTets tets ahead, its points kPrefetchPoints ahead (the tets are scattered through memory).
+constexpr size_t kPrefetchTets = 16, kPrefetchPoints = 8;
+void prefetchTet(const TetMesh& mesh, const std::vector<int32_t>& birth, int32_t t)
+{
+  mesh.prefetchTet(t);
+  __builtin_prefetch(&birth[static_cast<size_t>(t)]);
+}
+
 // The size at tet t's centroid when t asks for a point there (eq. 4, or t is larger than the volume cap),
 // else 0.
 double sizeWhereAPointIsWanted(const TetMesh& mesh, const SizingField& sizing, const FieldPointOptions& options,
@@ -97,8 +106,14 @@ void testTets(const TetMesh& mesh, const SizingField& sizing, const FieldPointOp
   parallelFor(threads, static_cast<int64_t>(end - begin), 8192,
               [&](int, int64_t from, int64_t to)
               {
-                for (size_t n = begin + static_cast<size_t>(from); n < begin + static_cast<size_t>(to); ++n)
+                const size_t first = begin + static_cast<size_t>(from), last = begin + static_cast<size_t>(to);
+                const auto tetAt = [&](size_t n) { return todo[order ? order[n] : n]; };
+                for (size_t n = first; n < last; ++n)
                 {
+                  if (n + kPrefetchTets < last)
+                    prefetchTet(mesh, birth, tetAt(n + kPrefetchTets));
+                  if (n + kPrefetchPoints < last)
+                    mesh.prefetchPoints(tetAt(n + kPrefetchPoints));
                   const size_t k = order ? order[n] : n;
                   const int32_t t = todo[k];
                   wanted[k] = unchangedSincePassBegan(mesh, birth, pass, t)
