@@ -304,6 +304,10 @@ void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone
   // they are matched pairwise by the edge's vertex pair.
   const uint8_t userBits = userBitsOf(cavity[0]);
   const int32_t label = labelOf(cavity[0]);
+  // The outer neighbours' faces are written below, one cone tet after the other: their loads start now.
+  for (const int32_t c : cone.outerCode)
+    if (c >= 0)
+      __builtin_prefetch(&mesh.tetNeighbors[4 * static_cast<size_t>(c >> 2)], 1);
   for (int32_t t : cavity)
   {
     journalTet(t);
