@@ -15,7 +15,7 @@ namespace
 constexpr int64_t kTodoTetsPerRegion = 32768; // a smaller region is mostly border
 constexpr int kMaxRegions = 64;
 constexpr uint8_t kSpansRegions = 255;
-constexpr size_t kTestBlock = 4096; // tets whose sizes are asked ahead of their insertions
+constexpr size_t kTestBlock = 4096;                       // tets whose sizes are asked ahead of their insertions
 constexpr size_t kPrefetchTets = 16, kPrefetchPoints = 8; // how far ahead their loads start
 constexpr size_t kBoxSample = 32768;
 // New slots a region sets aside per tet of the pass: about one tet in 20 gets a point, and an insertion adds

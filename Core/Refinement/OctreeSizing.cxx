@@ -16,7 +16,7 @@ namespace volgrid
 namespace
 {
 constexpr size_t kCellsPerChunk = 64; // a level's cells are split in chunks of this many, one thread each
-constexpr size_t kBatch = 1024;        // at most this many cells split at once in the most-oversized order
+constexpr size_t kBatch = 1024;       // at most this many cells split at once in the most-oversized order
 } // namespace
 
 struct OctreeSizing::Building
@@ -72,8 +72,7 @@ double OctreeSizing::splitPriority(const Cell& cell, const Unsplit& u, const Bui
 }
 
 OctreeSizing::Unsplit OctreeSizing::sampleCentre(const std::array<double, 3>& origin, int depth,
-                                                 const SizingField& field, SizingField::Walk& walk,
-                                                 const Building& b)
+                                                 const SizingField& field, SizingField::Walk& walk, const Building& b)
 {
   const double cs = b.cellSize(depth);
   const double centre[3] = { origin[0] + cs / 2, origin[1] + cs / 2, origin[2] + cs / 2 };
@@ -119,8 +118,8 @@ void OctreeSizing::splitInto(const Cell& cell, const Unsplit& u, const SizingFie
 
 // The cells of a level are split on the threads, each into its own eight slots after the level's first
 // (cells in level order), so the tree does not depend on which thread split which cell.
-bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, const Unsplit& root,
-                                 Progress* progress, int threads, std::vector<Unsplit>& states)
+bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress,
+                                 int threads, std::vector<Unsplit>& states)
 {
   states.assign(1, root);
   std::vector<int32_t> level;
@@ -191,8 +190,8 @@ bool OctreeSizing::buildByLevels(const SizingField& field, const Building& b, co
 // taken in the order one after the other, until a child of one taken outranks the next: the rest wait for
 // the next batch, their splits kept. The tree is the one the one-at-a-time order gives. A cell that the
 // level build split (`made`) takes its children from there.
-void OctreeSizing::buildByPriority(const SizingField& field, const Building& b, const Unsplit& root,
-                                   Progress* progress, int threads, const SplitCache& made)
+void OctreeSizing::buildByPriority(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress,
+                                   int threads, const SplitCache& made)
 {
   std::vector<Unsplit> state{ root }; // per cell
   std::vector<int32_t> madeAs{ 0 };   // per cell, the same cell in `made` (-1: none)

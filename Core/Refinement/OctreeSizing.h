@@ -76,8 +76,8 @@ private:
   // Writes the eight children of cell (state u) to children[0..7] and their states to states[0..7], their
   // corner sizes from the 3x3x3 lattice of their corners (the parent's corners and centre are known). The
   // samples walk on from the parent's centre, so they depend on the cell alone, not on the order of splits.
-  static void splitInto(const Cell& cell, const Unsplit& u, const SizingField& field, const Building& b,
-                        Cell* children, Unsplit* states);
+  static void splitInto(const Cell& cell, const Unsplit& u, const SizingField& field, const Building& b, Cell* children,
+                        Unsplit* states);
   // A split made before it was taken: the children and their states (madeFirst: where the level build
   // put them, -1 when made here).
   struct Split
@@ -96,8 +96,8 @@ private:
   };
   // The level-at-a-time build (states: per cell); false when a level would pass the cap (the cells and
   // states made until then stay, for the other order to take).
-  bool buildByLevels(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress,
-                     int threads, std::vector<Unsplit>& states);
+  bool buildByLevels(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress, int threads,
+                     std::vector<Unsplit>& states);
   void buildByPriority(const SizingField& field, const Building& b, const Unsplit& root, Progress* progress,
                        int threads, const SplitCache& made);
 

@@ -20,7 +20,7 @@ using namespace volgrid;
 namespace
 {
 const double kFeature[3] = { 0.5137, 0.4871, 0.5029 }; // off the octree lattice
-const double kAround[3] = { -5, -5, -5 };               // the cube of gradedFieldWithAFloor's trees
+const double kAround[3] = { -5, -5, -5 };              // the cube of gradedFieldWithAFloor's trees
 
 SizingField capWithOneFeature()
 {
@@ -69,9 +69,8 @@ SizingField gradedFieldWithAFloor()
   SizingOptions options;
   options.gradation = 1.5;
   options.maxEdgeLength = 0.5;
-  EXPECT_TRUE(field.build(xyz.data(), static_cast<int32_t>(n), tris.data(), static_cast<int32_t>(tris.size() / 3),
-                          options)
-                .ok());
+  EXPECT_TRUE(
+    field.build(xyz.data(), static_cast<int32_t>(n), tris.data(), static_cast<int32_t>(tris.size() / 3), options).ok());
   return field;
 }
 
@@ -204,7 +203,8 @@ TEST(OctreeSizing, UnderACapTheThreadsGiveTheOneAtATimeOrder)
     double lo[3], size;
     size_t cap;
   };
-  Case cases[2] = { { capWithOneFeature(), { 0, 0, 0 }, 1.0, 50000 }, { gradedFieldWithAFloor(), { -5, -5, -5 }, 10.0, 0 } };
+  Case cases[2] = { { capWithOneFeature(), { 0, 0, 0 }, 1.0, 50000 },
+                    { gradedFieldWithAFloor(), { -5, -5, -5 }, 10.0, 0 } };
   OctreeSizing uncapped;
   uncapped.build(cases[1].field, cases[1].lo, cases[1].size, 18, size_t(1) << 22, nullptr, nullptr, 2);
   cases[1].cap = uncapped.cells() / 2;
