@@ -272,7 +272,7 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
   const bool speculative = request.speculative;
   ParallelScan parallelScan(mesh, constraints, resolveThreads(request.threads));
   TetEditor editor(mesh, constraints, labels); // builds its vertex map
-  const std::vector<uint8_t> locked = editor.lockedVertices();
+  const std::vector<uint8_t> locked = request.constrainedLocks ? *request.constrainedLocks : editor.lockedVertices();
   const double qT = std::sin(request.degrees * 3.14159265358979323846 / 180.0);
   auto quality = [&](int32_t t)
   {

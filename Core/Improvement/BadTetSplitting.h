@@ -41,10 +41,14 @@ struct SplitRequest
   int threads = 1;
   // Optional: asked every 64 bad tets whether to stop (the points inserted so far stay; the caller reports
   // the cancellation).
-  Progress* progress = nullptr;  // Optional: receives (appended) the slots of the tets the insertions created, some of them destroyed again
+  Progress* progress = nullptr;
+  // Optional: receives (appended) the slots of the tets the insertions created, some of them destroyed again
   // by later insertions of the call, so that the caller can find the tets under a target without a sweep
   // (MeshScan.h, collectSineBelowAmong).
   std::vector<int32_t>* created = nullptr;
+  // Optional: TetEditor::lockedVertices() of this mesh and constraints, when the caller keeps it (a vertex
+  // past its end is a point added since, unlocked): no sweep of the mesh for it.
+  const std::vector<uint8_t>* constrainedLocks = nullptr;
 };
 
 // Splits the bad tets of `request`; labels (per tet slot, optional) follow the new tets. Returns the number

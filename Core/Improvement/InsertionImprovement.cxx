@@ -142,7 +142,8 @@ private:
   {
     Entry e{ q, t, 0, 0 };
     const int32_t* v = mesh_.vertices(t);
-    quality::tetDihedralExtremes(mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]), e.lo, e.hi);
+    quality::tetDihedralExtremes(mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]), e.lo,
+                                 e.hi);
     return e;
   }
 
@@ -298,8 +299,9 @@ private:
     improveAround(qt);
     if (minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_)
       return true;
+    ed_.journal->changedSince(saved, restored_, moved_);
     ed_.journal->rollback(saved, m_, ed_.labels);
-    ed_.rebuildVertexMap();
+    ed_.refreshVertexMap(restored_);
     return false;
   }
 
@@ -521,6 +523,7 @@ private:
   bool isLocked(int32_t u) const { return static_cast<size_t>(u) < locked_.size() && locked_[u] != 0; }
 
   TetEditor& ed_;
+  std::vector<int32_t> restored_, moved_; // tryPosition()'s undo: the slots it restores
   TetMesh& m_;
   const std::vector<uint8_t>& locked_; // vertices that never move (points added later are free)
   const double floor_;
@@ -639,7 +642,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     if (!(rangeAfter.first > rangeBefore.first) && rangeAfter.second > rangeBefore.second)
     {
       journal.rollback(before, mesh, labels);
-      editor.rebuildVertexMap();
+      editor.refreshVertexMap(changed); // the slots the round changed: restored now
       kept = keptBefore;
       break;
     }

@@ -518,7 +518,9 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   if (options.summaries)
     report.before = summarizeDihedrals(mesh, options.threads);
   TetEditor editor(mesh, constraints, labels);
-  std::vector<uint8_t> lock = editor.lockedVertices();
+  std::vector<uint8_t> lock =
+    worklist && worklist->constrainedLocks ? *worklist->constrainedLocks : editor.lockedVertices();
+  lock.resize(static_cast<size_t>(mesh.numVertices()), 0);
   if (locked)
     for (size_t v = 0; v < lock.size() && v < locked->size(); ++v)
       lock[v] |= (*locked)[v];

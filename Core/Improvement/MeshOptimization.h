@@ -117,6 +117,9 @@ struct OptimizationWorklist
   // 1 for a vertex whose smoothing found no move and none of whose tets changed since: smoothing it again
   // would find none either (its outcome depends only on its star), so it is skipped.
   std::vector<uint8_t> unmoved;
+  // Optional: TetEditor::lockedVertices() of this mesh and constraints, kept by the caller from call to
+  // call (a vertex past its end is a point added since, unlocked), so that no call sweeps the mesh for it.
+  const std::vector<uint8_t>* constrainedLocks = nullptr;
 };
 
 // Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot

@@ -74,6 +74,7 @@ QualityRounds::QualityRounds(TetMesh& mesh_, const FaceConstraints& fc, const st
   one_.maxPasses = 1;
   one_.vertexRemoval = false; // a second attempt, withCollapseRerun
   one_.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
+  constrainedLocks_ = TetEditor(mesh, &fc_, nullptr).lockedVertices();
 }
 
 Status QualityRounds::run()
@@ -90,6 +91,7 @@ Status QualityRounds::run()
 Status QualityRounds::optimise(int maxPasses, std::vector<std::pair<double, int32_t>>* below)
 {
   OptimizationWorklist worklist; // one sweep for the series of calls below (nothing else edits between)
+  worklist.constrainedLocks = &constrainedLocks_;
   if (below && !below->empty())
   {
     worklist.valid = true;
@@ -134,6 +136,7 @@ SplitRequest QualityRounds::splitRequest(double degrees, int64_t maxPoints,
   request.below = below;
   request.threads = options.threads;
   request.progress = progress;
+  request.constrainedLocks = &constrainedLocks_;
   return request;
 }
 
@@ -149,44 +152,73 @@ int64_t QualityRounds::splitBelow(double degrees, int64_t maxPoints, std::vector
   return inserted;
 }
 
-Status QualityRounds::floorRounds()
+namespace
 {
-  std::vector<std::pair<double, int32_t>> low, below;
+// below restricted to the tets under `degrees` (exact when degrees <= below.degrees); false when that
+// is not known without a sweep.
+bool narrowBelow(QualityRounds::Below& below, double degrees)
+{
+  if (below.degrees < 0 || degrees > below.degrees)
+    return false;
+  const double q = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  below.tets.erase(std::find_if(below.tets.begin(), below.tets.end(), [&](const auto& t) { return !(t.first < q); }),
+                   below.tets.end());
+  below.degrees = degrees;
+  return true;
+}
+} // namespace
+
+Status QualityRounds::floorRounds(Below& below)
+{
+  std::vector<std::pair<double, int32_t>> low;
   double lastWorst = 0;
   for (int round = 0; round < options.floorRounds; ++round)
   {
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-    // One sweep for the round's start: the tets a little above the aim, from which the worst tet, the
-    // count under the aim and the optimisation's worklist follow (sweeps only when they do not).
-    const double lowDegrees = std::min(90.0, std::max(lastWorst + 2.0, options.optimization.targetDegrees) + 3.0);
-    collectSortedBelow(mesh, lowDegrees, options.threads, low);
-    const double worst =
-      low.empty() ? worstSineDegrees(mesh, options.threads) : sineQualityToDegrees(low.front().first);
+    // The worst tet and the tets under the aim a little above it: from the tets the last round left under its
+    // aim when there are some and the aim does not rise (the worst tet is among them), else from one sweep for
+    // the tets a little above the aim.
+    double worst = 0;
+    const bool carried = below.degrees >= 0 && !below.tets.empty();
+    if (carried)
+      worst = sineQualityToDegrees(below.tets.front().first);
+    else
+    {
+      const double lowDegrees = std::min(90.0, std::max(lastWorst + 2.0, options.optimization.targetDegrees) + 3.0);
+      collectSortedBelow(mesh, lowDegrees, options.threads, low);
+      worst = low.empty() ? worstSineDegrees(mesh, options.threads) : sineQualityToDegrees(low.front().first);
+      below.tets.swap(low);
+      below.degrees = below.tets.empty() ? -1 : lowDegrees;
+    }
     if (!(worst > 0) || worst >= 60)
       break;
     one_.targetDegrees = std::max(worst + 2.0, options.optimization.targetDegrees);
-    below.clear();
-    const double qAim = std::sin(one_.targetDegrees * 3.14159265358979323846 / 180.0);
-    const bool known = !low.empty() && one_.targetDegrees <= lowDegrees;
-    if (known)
-      for (const auto& t : low)
-        if (t.first < qAim)
-          below.push_back(t);
-    const int64_t count =
-      known ? static_cast<int64_t>(below.size()) : countBelow(mesh, one_.targetDegrees, options.threads);
+    if (!narrowBelow(below, one_.targetDegrees))
+    {
+      if (carried) // the aim rose above the carried tets: sweep for them
+      {
+        collectSortedBelow(mesh, one_.targetDegrees, options.threads, below.tets);
+        below.degrees = one_.targetDegrees;
+      }
+      else
+        below.tets.clear();
+    }
+    const int64_t count = below.degrees >= 0 ? static_cast<int64_t>(below.tets.size())
+                                             : countBelow(mesh, one_.targetDegrees, options.threads);
     // A plateau of many tets just above the worst (typically at the target) needs global work: not here.
     if (count > std::max<int64_t>(64, mesh.numTets() / 200))
       break;
-    Status fs = optimise(2, &below);
+    Status fs = optimise(2, &below.tets);
     if (!fs.ok())
       return fs;
-    stats.splitPoints += splitBelow(one_.targetDegrees, 64, below);
-    fs = optimise(1, &below);
+    stats.splitPoints += splitBelow(one_.targetDegrees, 64, below.tets);
+    fs = optimise(1, &below.tets);
     if (!fs.ok())
       return fs;
+    below.degrees = one_.targetDegrees; // optimise() and splitBelow() leave the tets under their target
     const double after =
-      below.empty() ? worstSineDegrees(mesh, options.threads) : sineQualityToDegrees(below.front().first);
+      below.tets.empty() ? worstSineDegrees(mesh, options.threads) : sineQualityToDegrees(below.tets.front().first);
     if (after < worst + 0.05)
       break;
     lastWorst = after;
@@ -195,11 +227,11 @@ Status QualityRounds::floorRounds()
 }
 
 // The stage: optimisation, splitting of what it cannot fix, floor rounds.
-Status QualityRounds::optimiseSplitFloor()
+Status QualityRounds::optimiseSplitFloor(Below& below)
 {
   one_.targetDegrees = options.optimization.targetDegrees;
-  std::vector<std::pair<double, int32_t>> below; // after each optimisation: the tets under the target
-  Status ps = optimise(options.optimization.maxPasses, &below);
+  below.tets.clear(); // after each optimisation: the tets under the target
+  Status ps = optimise(options.optimization.maxPasses, &below.tets);
   if (!ps.ok())
     return ps;
   // What optimisation cannot fix (slivers spanned by boundary vertices): split by a point inside, then
@@ -210,18 +242,19 @@ Status QualityRounds::optimiseSplitFloor()
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
     const int64_t n =
-      splitBelow(options.optimization.targetDegrees, std::max<int64_t>(200, mesh.numTets() / 20), below);
+      splitBelow(options.optimization.targetDegrees, std::max<int64_t>(200, mesh.numTets() / 20), below.tets);
     stats.splitPoints += n;
     if (n == 0)
       break;
     const double minBefore = stats.after.minDihedral;
-    Status ps = optimise(std::min(3, options.optimization.maxPasses), &below);
+    Status ps = optimise(std::min(3, options.optimization.maxPasses), &below.tets);
     if (!ps.ok())
       return ps;
     if (stats.after.minDihedral < minBefore + 0.1)
       break;
   }
-  return floorRounds();
+  below.degrees = options.optimization.targetDegrees;
+  return floorRounds(below);
 }
 
 // Vertex collapses (optimization.vertexRemoval) are a second attempt, from the same start, when the
@@ -233,15 +266,17 @@ Status QualityRounds::withCollapseRerun()
 {
   if (options.optimization.vertexRemoval && mesh.numTets() >= options.optimization.largeMeshTets)
     return withCollapsesThroughout();
+  Below below;
   if (!options.optimization.vertexRemoval)
-    return optimiseSplitFloor();
+    return optimiseSplitFloor(below);
   Rerun rerun(*this);
   if (resolveThreads(options.threads) > 1)
     return concurrentRerun(rerun);
-  Status s = optimiseSplitFloor();
+  Status s = optimiseSplitFloor(below);
   if (!s.ok() || !rerunPays())
     return s;
-  s = rerun.rounds.optimiseSplitFloor();
+  Below rerunBelow;
+  s = rerun.rounds.optimiseSplitFloor(rerunBelow);
   if (!s.ok())
     return s;
   keepTheBetter(rerun);
@@ -328,12 +363,14 @@ Status QualityRounds::concurrentRerun(Rerun& rerun)
                   // On the caller's thread when the pool was busy (the workers then run one after the other).
                   rerun.rounds.progress = std::this_thread::get_id() == caller ? callerProgress : &secondProgress;
                   secondStarted = true;
-                  second = rerun.rounds.optimiseSplitFloor();
+                  Below below;
+                  second = rerun.rounds.optimiseSplitFloor(below);
                   secondDone = true;
                   return;
                 }
                 progress = &firstProgress;
-                first = optimiseSplitFloor();
+                Below below;
+                first = optimiseSplitFloor(below);
                 progress = callerProgress;
                 pays = first.ok() && rerunPays();
                 if (!pays)
@@ -391,16 +428,20 @@ void QualityRounds::keepTheBetter(Rerun& rerun)
 Status QualityRounds::withCollapsesThroughout()
 {
   one_.vertexRemoval = true;
-  Status s = optimiseSplitFloor();
+  Below below;
+  Status s = optimiseSplitFloor(below);
   if (s.ok())
   {
     one_.targetDegrees = options.optimization.targetDegrees;
-    s = optimise(3);
+    if (!narrowBelow(below, one_.targetDegrees))
+      below.tets.clear(); // optimise() sweeps
+    s = optimise(3, &below.tets);
+    below.degrees = one_.targetDegrees;
   }
   one_.vertexRemoval = false;
   if (!s.ok())
     return s;
-  return floorRounds();
+  return floorRounds(below);
 }
 
 // Small meshes (a few boundary triangles, few or no field points) often end as a tie with any

@@ -37,8 +37,17 @@ public:
   // empty, the tets under the target in (quality, slot) order as a sweep would give them (no sweep then);
   // out, the tets under the target after the passes, in the same order.
   Status optimise(int maxPasses, std::vector<std::pair<double, int32_t>>* below = nullptr);
-  Status floorRounds();
-  Status optimiseSplitFloor();
+  // The tets under a quality, exactly, in (quality, slot) order: what a sweep would collect. degrees < 0:
+  // not known.
+  struct Below
+  {
+    std::vector<std::pair<double, int32_t>> tets;
+    double degrees = -1;
+  };
+  // below (in and out): the tets under below.degrees as the rounds before left them (in) and as these
+  // leave them (out), so that a round whose aim is no higher needs no sweep of the mesh.
+  Status floorRounds(Below& below);
+  Status optimiseSplitFloor(Below& below);
   Status withCollapseRerun();
   Status withCollapsesThroughout();
   Status speculativeRounds();
@@ -68,6 +77,9 @@ private:
   Progress* progress;
   OptimizationOptions one_; // the options of the next optimisation call (target, vertex removal)
   double worstKept_ = 0;    // the first run's worst tet (degrees), for withCollapseRerun
+  // TetEditor::lockedVertices() at the start (the rounds change no constrained face; the points they add
+  // are unlocked), for every call of the rounds instead of a sweep each.
+  std::vector<uint8_t> constrainedLocks_;
 };
 
 // withCollapseRerun's second run: its own copy of the stage's start and its own rounds (vertex collapses on).

@@ -2,6 +2,8 @@
 
 #include "PredicatesInline.h"
 
+#include <algorithm>
+
 namespace volgrid
 {
 
@@ -16,6 +18,9 @@ MeshNavigator::MeshNavigator(TetMesh& m, StaleEntries rule, VertexMap map)
 
 void MeshNavigator::rebuildVertexMap()
 {
+  for (int32_t v : written_)
+    writtenFlag_[static_cast<size_t>(v)] = 0;
+  written_.clear();
   vertTet_.assign(static_cast<size_t>(mesh.numVertices()), -1);
   mesh.forEachTet(
     [&](int32_t t)
@@ -25,6 +30,40 @@ void MeshNavigator::rebuildVertexMap()
         if (v[i] >= 0)
           vertTet_[static_cast<size_t>(v[i])] = t;
     });
+}
+
+void MeshNavigator::refreshVertexMap(const std::vector<int32_t>& hint)
+{
+  if (map_ == VertexMap::None)
+    return;
+  const size_t nv = static_cast<size_t>(mesh.numVertices());
+  vertTet_.resize(nv, -1); // as a rebuild: no entry past the last point
+  auto holds = [&](int32_t t, int32_t v)
+  { return t >= 0 && t < mesh.tetCapacity() && !mesh.isFree(t) && mesh.localIndex(t, v) >= 0; };
+  for (int32_t v : written_)
+    if (static_cast<size_t>(v) < nv && !holds(vertTet_[static_cast<size_t>(v)], v))
+      vertTet_[static_cast<size_t>(v)] = -1;
+  for (int32_t t : hint)
+  {
+    if (t < 0 || t >= mesh.tetCapacity() || mesh.isFree(t))
+      continue;
+    for (int i = 0; i < 4; ++i)
+    {
+      const size_t w = static_cast<size_t>(mesh.vertex(t, i));
+      if (w < nv && w < writtenFlag_.size() && writtenFlag_[w] && vertTet_[w] < 0)
+        vertTet_[w] = t;
+    }
+  }
+  std::vector<int32_t> starTets;
+  for (int32_t v : written_)
+  {
+    writtenFlag_[static_cast<size_t>(v)] = 0;
+    if (static_cast<size_t>(v) >= nv || vertTet_[static_cast<size_t>(v)] < 0)
+      continue;
+    star(v, starTets);
+    vertTet_[static_cast<size_t>(v)] = *std::max_element(starTets.begin(), starTets.end());
+  }
+  written_.clear();
 }
 
 int32_t MeshNavigator::tetOf(int32_t v)

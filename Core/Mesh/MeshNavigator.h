@@ -40,8 +40,14 @@ public:
   MeshNavigator(TetMesh& mesh, StaleEntries rule, VertexMap map = VertexMap::Kept);
   TetMesh& mesh;
 
-  // Vertex -> one incident live tet, rebuilt from scratch.
+  // Vertex -> one incident live tet, rebuilt from scratch: the highest live slot holding it.
   void rebuildVertexMap();
+  // What rebuildVertexMap() would give, without its sweep of the mesh: only the vertices whose entry an
+  // edit wrote or forgot since the last rebuild or refresh can differ from it (no other vertex had a tet
+  // made or removed), and each of them gets the highest slot of its star, started from its entry when that
+  // tet still holds it, else from a live tet of `hint` that holds it (after an undo: the slots it restored),
+  // else none (a vertex left in no tet). Costs the stars of those vertices.
+  void refreshVertexMap(const std::vector<int32_t>& hint);
   // The map's entry for v: -1 for a vertex in no tet or beyond the map.
   int32_t mappedTet(int32_t v) const
   {
@@ -53,7 +59,10 @@ public:
   void forgetVertex(int32_t v)
   {
     if (v >= 0 && static_cast<size_t>(v) < vertTet_.size())
+    {
       vertTet_[static_cast<size_t>(v)] = -1;
+      markWritten(v);
+    }
   }
 
   // All live tets incident to v (breadth first over the faces containing v, from tetOf(v)).
@@ -154,9 +163,21 @@ protected:
     if (static_cast<size_t>(v) >= vertTet_.size())
       vertTet_.resize(std::max(static_cast<size_t>(v) + 1, static_cast<size_t>(mesh.numVertices())), -1);
     vertTet_[static_cast<size_t>(v)] = t;
+    markWritten(v);
   }
 
 private:
+  // Notes v among the entries written since the last rebuild or refresh (refreshVertexMap()).
+  void markWritten(int32_t v)
+  {
+    if (static_cast<size_t>(v) >= writtenFlag_.size())
+      writtenFlag_.resize(std::max(static_cast<size_t>(v) + 1, vertTet_.size()), 0);
+    if (!writtenFlag_[static_cast<size_t>(v)])
+    {
+      writtenFlag_[static_cast<size_t>(v)] = 1;
+      written_.push_back(v);
+    }
+  }
   // replaceTets() once its faces matched: the mesh edit itself.
   void commitReplacement(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets);
   // replaceTets() scratch: a face by its sorted vertex triple; owner -1 for an old outer face (code: its
@@ -173,6 +194,8 @@ private:
   // replaceByCone(): side faces of the cone waiting for their partner, by edge key (empty between calls).
   FlatHashMap<uint64_t, int32_t, EdgeKeyHash> openSideFaces_;
   std::vector<int32_t> vertTet_;
+  std::vector<int32_t> written_;     // vertices whose entry changed since the last rebuild or refresh
+  std::vector<uint8_t> writtenFlag_; // 1 for those, per vertex
   std::vector<int32_t> findScratch_;
   StaleEntries stale_;
   VertexMap map_;

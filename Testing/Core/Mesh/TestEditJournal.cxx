@@ -127,3 +127,32 @@ TEST(EditJournal, ChangedSinceListsEveryChangedSlotAndMovedPoint)
   }
   EXPECT_GT(changed, 30);
 }
+
+// After an undo, MeshNavigator::refreshVertexMap() with the slots the undo restored gives every vertex the
+// entry a full rebuild would (the quality stage relies on it instead of a sweep per undone attempt: the
+// entries decide where stars start, and so the mesh), also when kept edits before it were never refreshed.
+TEST(EditJournal, RefreshAfterAnUndoGivesTheMapOfARebuild)
+{
+  TetMesh mesh;
+  randomDelaunay(mesh, 400);
+  TetEditor ed(mesh, nullptr, nullptr);
+  TetEditor rebuilt(mesh, nullptr, nullptr, TetEditor::VertexMap::None);
+  EditJournal journal;
+  ed.journal = &journal;
+  ASSERT_GT(edit(ed, 20, 0), 0); // kept, not refreshed
+  for (int32_t firstTet : { 100, 300, 50 })
+  {
+    const EditJournal::Mark mark = journal.mark(mesh, nullptr);
+    ASSERT_GT(edit(ed, 25, firstTet), 0);
+    std::vector<int32_t> slots, points;
+    journal.changedSince(mark, slots, points);
+    journal.rollback(mark, mesh, nullptr);
+    ed.refreshVertexMap(slots);
+    rebuilt.rebuildVertexMap();
+    int32_t differing = 0;
+    for (int32_t v = 0; v < mesh.numVertices() + 40; ++v)
+      differing += ed.mappedTet(v) != rebuilt.mappedTet(v);
+    EXPECT_EQ(differing, 0) << "after the undo of the edits from tet " << firstTet;
+    ASSERT_GT(edit(ed, 10, firstTet + 20), 0); // kept edits again before the next undo
+  }
+}
