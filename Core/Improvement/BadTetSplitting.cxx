@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 namespace volgrid
 {
@@ -271,7 +272,12 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
 {
   const bool speculative = request.speculative;
   ParallelScan parallelScan(mesh, constraints, resolveThreads(request.threads));
-  TetEditor editor(mesh, constraints, labels); // builds its vertex map
+  std::optional<TetEditor> ownEditor; // builds its vertex map
+  if (request.editor)
+    request.editor->refreshVertexMap({});
+  else
+    ownEditor.emplace(mesh, constraints, labels);
+  TetEditor& editor = ownEditor ? *ownEditor : *request.editor;
   const std::vector<uint8_t> locked = request.constrainedLocks ? *request.constrainedLocks : editor.lockedVertices();
   const double qT = std::sin(request.degrees * 3.14159265358979323846 / 180.0);
   auto quality = [&](int32_t t)

@@ -49,6 +49,10 @@ struct SplitRequest
   // Optional: TetEditor::lockedVertices() of this mesh and constraints, when the caller keeps it (a vertex
   // past its end is a point added since, unlocked): no sweep of the mesh for it.
   const std::vector<uint8_t>* constrainedLocks = nullptr;
+  // Optional: the caller's editor of this mesh with the same constraints and labels, through which every
+  // edit of the mesh since its vertex map was built went: refreshed (TetEditor::refreshVertexMap) instead
+  // of a new editor's sweep.
+  TetEditor* editor = nullptr;
 };
 
 // Splits the bad tets of `request`; labels (per tet slot, optional) follow the new tets. Returns the number

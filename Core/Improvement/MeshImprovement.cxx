@@ -203,6 +203,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     {
       OrthogonalitySmoothingOptions oo;
       oo.targetDegrees = options.optimization.targetDegrees;
+      oo.threads = options.threads;
       OrthogonalitySmoothingReport orep;
       s = smoothNonOrthogonalFaces(mesh, &fc, clusterLock.empty() ? nullptr : &clusterLock, oo, progress, &orep);
       if (!s.ok())

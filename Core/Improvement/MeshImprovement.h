@@ -102,10 +102,10 @@ struct ImprovementStatistics
   int64_t fieldPoints = 0; // field points inserted (and still in the mesh, see removedPoints)
   int fieldPasses = 0;
   int64_t fieldPointsInRegions = 0; // of those inserted, by the regions of large passes (FieldPointRegions.h)
-  int64_t clusterPoints = 0;  // clustering points inserted
-  int64_t clusterSkipped = 0; // outside, on the boundary, duplicates or too close
-  int64_t interfaceFaces = 0; // interior faces kept as constraints (region interfaces)
-  int64_t latticeNodes = 0;   // sizing nodes away from the boundary (size from the gradation)
+  int64_t clusterPoints = 0;        // clustering points inserted
+  int64_t clusterSkipped = 0;       // outside, on the boundary, duplicates or too close
+  int64_t interfaceFaces = 0;       // interior faces kept as constraints (region interfaces)
+  int64_t latticeNodes = 0;         // sizing nodes away from the boundary (size from the gradation)
   // The largest boundary spacing, within its depth limit, that the max-edge cap meets (the size grades
   // down from such triangles to the cap: CoarseBoundaryFloor.h); 0 when the cap holds everywhere.
   double coarseBoundaryFloor = 0;

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 namespace volgrid
 {
@@ -517,7 +518,12 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
   OptimizationReport& report = reportOut ? *reportOut : local;
   if (options.summaries)
     report.before = summarizeDihedrals(mesh, options.threads);
-  TetEditor editor(mesh, constraints, labels);
+  std::optional<TetEditor> ownEditor;
+  if (worklist && worklist->editor)
+    worklist->editor->refreshVertexMap({});
+  else
+    ownEditor.emplace(mesh, constraints, labels);
+  TetEditor& editor = ownEditor ? *ownEditor : *worklist->editor;
   std::vector<uint8_t> lock =
     worklist && worklist->constrainedLocks ? *worklist->constrainedLocks : editor.lockedVertices();
   lock.resize(static_cast<size_t>(mesh.numVertices()), 0);

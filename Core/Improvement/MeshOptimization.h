@@ -120,6 +120,10 @@ struct OptimizationWorklist
   // Optional: TetEditor::lockedVertices() of this mesh and constraints, kept by the caller from call to
   // call (a vertex past its end is a point added since, unlocked), so that no call sweeps the mesh for it.
   const std::vector<uint8_t>* constrainedLocks = nullptr;
+  // Optional: the caller's editor of this mesh with the same constraints and labels, through which every
+  // edit of the mesh since its vertex map was built went: its map is refreshed (TetEditor::refreshVertexMap,
+  // the map a new editor would build) instead of built by a sweep.
+  TetEditor* editor = nullptr;
 };
 
 // Improve the mesh in place. locked: optional extra per-vertex locks. labels: optional per-tet-slot

@@ -1,6 +1,7 @@
 #include "OrthogonalitySmoothing.h"
 
 #include "CompassSearch.h"
+#include "ParallelFor.h"
 #include "PredicatesInline.h"
 
 #include <algorithm>
@@ -224,22 +225,40 @@ Status smoothNonOrthogonalFaces(TetMesh& mesh, const FaceConstraints* constraint
     for (size_t v = 0; v < std::min(lock.size(), locked->size()); ++v)
       lock[v] |= (*locked)[v];
   auto severe = [&](int32_t t, int i) { return mesh.neighbor(t, i) >= 0 && faceCosine(mesh, t, i) < cosLimit; };
-  // The tets with a severe face, in slot order; then the stars of the moved vertices.
+  // The tets with a severe face, in slot order (a list per range of slots, joined in order); then the stars
+  // of the moved vertices.
   std::vector<int32_t> queue;
   int64_t count = 0;
-  mesh.forEachTet(
-    [&](int32_t t)
+  {
+    constexpr int64_t kMinSlotsPerThread = 1 << 16;
+    const int64_t n = mesh.tetCapacity();
+    const size_t ranges = static_cast<size_t>(parallelRanges(options.threads, n, kMinSlotsPerThread));
+    std::vector<std::vector<int32_t>> parts(ranges);
+    std::vector<int64_t> counts(ranges, 0);
+    parallelFor(options.threads, n, kMinSlotsPerThread,
+                [&](int r, int64_t begin, int64_t end)
+                {
+                  for (int32_t t = static_cast<int32_t>(begin); t < end; ++t)
+                  {
+                    if (mesh.isFree(t))
+                      continue;
+                    bool any = false;
+                    for (int i = 0; i < 4; ++i)
+                      if (severe(t, i))
+                      {
+                        any = true;
+                        counts[static_cast<size_t>(r)] += t < mesh.neighbor(t, i);
+                      }
+                    if (any)
+                      parts[static_cast<size_t>(r)].push_back(t);
+                  }
+                });
+    for (size_t r = 0; r < ranges; ++r)
     {
-      bool any = false;
-      for (int i = 0; i < 4; ++i)
-        if (severe(t, i))
-        {
-          any = true;
-          count += t < mesh.neighbor(t, i);
-        }
-      if (any)
-        queue.push_back(t);
-    });
+      queue.insert(queue.end(), parts[r].begin(), parts[r].end());
+      count += counts[r];
+    }
+  }
   report.severeBefore = count;
   StarSearch search(mesh, editor, cosLimit, std::sin(options.targetDegrees * kDegree));
   Vec at, bestAt;

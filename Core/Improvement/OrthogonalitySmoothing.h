@@ -40,6 +40,9 @@ struct OrthogonalitySmoothingOptions
   double severeDegrees = quality::kSevereNonOrthogonality;
   // The quality stage's target for min(theta_min, 180 - theta_max).
   double targetDegrees = option::targetAngle.defaultValue;
+  // The sweep for the severe faces runs on this many threads (ParallelFor.h's rule); the mesh is the same
+  // for any count.
+  int threads = 0;
 };
 
 struct OrthogonalitySmoothingReport

@@ -69,12 +69,13 @@ QualityRounds::QualityRounds(TetMesh& mesh_, const FaceConstraints& fc, const st
   , stats(stats_)
   , progress(progress_)
   , one_(options_.optimization)
+  , editor_(mesh_, &fc, &tetRegion_)
 {
   one_.threads = options.threads;
   one_.maxPasses = 1;
   one_.vertexRemoval = false; // a second attempt, withCollapseRerun
   one_.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
-  constrainedLocks_ = TetEditor(mesh, &fc_, nullptr).lockedVertices();
+  constrainedLocks_ = editor_.lockedVertices();
 }
 
 Status QualityRounds::run()
@@ -92,6 +93,7 @@ Status QualityRounds::optimise(int maxPasses, std::vector<std::pair<double, int3
 {
   OptimizationWorklist worklist; // one sweep for the series of calls below (nothing else edits between)
   worklist.constrainedLocks = &constrainedLocks_;
+  worklist.editor = &editor_;
   if (below && !below->empty())
   {
     worklist.valid = true;
@@ -128,7 +130,7 @@ Status QualityRounds::optimise(int maxPasses, std::vector<std::pair<double, int3
 // above the current worst (flips, smoothing and splitting touch only the tets below the aim and accept
 // strict improvements only), so a mesh already past the target still gets better where it is worst.
 SplitRequest QualityRounds::splitRequest(double degrees, int64_t maxPoints,
-                                         const std::vector<std::pair<double, int32_t>>* below) const
+                                         const std::vector<std::pair<double, int32_t>>* below)
 {
   SplitRequest request;
   request.degrees = degrees;
@@ -137,6 +139,7 @@ SplitRequest QualityRounds::splitRequest(double degrees, int64_t maxPoints,
   request.threads = options.threads;
   request.progress = progress;
   request.constrainedLocks = &constrainedLocks_;
+  request.editor = &editor_;
   return request;
 }
 
@@ -414,6 +417,7 @@ void QualityRounds::keepTheBetter(Rerun& rerun)
   if (worstSineDegrees(rerun.mesh, options.threads) > worstKept_)
   {
     mesh = std::move(rerun.mesh);
+    editor_.rebuildVertexMap();
     tetRegion = std::move(rerun.tetRegion);
     stats = rerun.stats;
   }
@@ -493,6 +497,7 @@ Status QualityRounds::speculativeRounds()
       continue;
     }
     mesh = savedMesh;
+    editor_.rebuildVertexMap();
     tetRegion = savedRegion;
     stats.after = savedAfter;
     if (countBelow(mesh, one_.targetDegrees, options.threads) <= ++skip)

@@ -61,8 +61,7 @@ private:
   void keepTheBetter(Rerun& rerun);
   const std::vector<uint8_t>* locked() const { return clusterLock_.empty() ? nullptr : &clusterLock_; }
   // A split of the tets below `degrees` with this stage's threads and progress.
-  SplitRequest splitRequest(double degrees, int64_t maxPoints,
-                            const std::vector<std::pair<double, int32_t>>* below) const;
+  SplitRequest splitRequest(double degrees, int64_t maxPoints, const std::vector<std::pair<double, int32_t>>* below);
   // Splits up to maxPoints of the tets under `degrees`, given exactly in `below` as optimise() leaves them;
   // afterwards `below` holds the tets under `degrees` again (no sweep: those left alone and those created).
   // Returns the number of points inserted.
@@ -80,6 +79,9 @@ private:
   // TetEditor::lockedVertices() at the start (the rounds change no constrained face; the points they add
   // are unlocked), for every call of the rounds instead of a sweep each.
   std::vector<uint8_t> constrainedLocks_;
+  // The editor of every optimisation and split call (its vertex map refreshed, not built, per call); rebuilt
+  // when the mesh is replaced as a whole (keepTheBetter, speculativeRounds).
+  TetEditor editor_;
 };
 
 // withCollapseRerun's second run: its own copy of the stage's start and its own rounds (vertex collapses on).
