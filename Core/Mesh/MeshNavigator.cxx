@@ -54,14 +54,13 @@ void MeshNavigator::refreshVertexMap(const std::vector<int32_t>& hint)
         vertTet_[w] = t;
     }
   }
-  std::vector<int32_t> starTets;
   for (int32_t v : written_)
   {
     writtenFlag_[static_cast<size_t>(v)] = 0;
     if (static_cast<size_t>(v) >= nv || vertTet_[static_cast<size_t>(v)] < 0)
       continue;
-    star(v, starTets);
-    vertTet_[static_cast<size_t>(v)] = *std::max_element(starTets.begin(), starTets.end());
+    star(v, findScratch_); // the scratch of findEdge/findFace, which this does not call
+    vertTet_[static_cast<size_t>(v)] = *std::max_element(findScratch_.begin(), findScratch_.end());
   }
   written_.clear();
 }
