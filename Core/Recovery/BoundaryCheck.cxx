@@ -41,14 +41,6 @@ double det3(const double* a, const double* b, const double* c, const double* d)
     e0[2] * (e1[0] * e2[1] - e1[1] * e2[0]);
 }
 
-bool sameCyclic(const int32_t* f, const int32_t* s)
-{
-  for (int r = 0; r < 3; ++r)
-    if (f[0] == s[r] && f[1] == s[(r + 1) % 3] && f[2] == s[(r + 2) % 3])
-      return true;
-  return false;
-}
-
 } // namespace
 
 std::string BoundaryCheckReport::summary() const
@@ -224,53 +216,63 @@ struct RangeMatch
   std::vector<std::pair<int32_t, int32_t>> sharedFaces; // the tets of each face that two tets share
 };
 
+// A face in its bucket: the other two vertices (sorted) as one key, its code, and the parity of the
+// permutation that sorts its three vertices as its tet lists them. Two listings of the same three distinct
+// vertices are cyclic rotations of each other exactly when their parities agree, so the orientation test
+// needs no second look at the tets.
+struct BucketFace
+{
+  uint64_t key;
+  uint32_t code;
+  uint8_t parity;
+  bool operator<(const BucketFace& o) const { return key != o.key ? key < o.key : code < o.code; }
+};
+
+BucketFace bucketFace(const std::vector<int32_t>& tets, uint32_t code)
+{
+  int32_t f[3];
+  faceOf(tets, code, f);
+  const int inversions = (f[0] > f[1]) + (f[0] > f[2]) + (f[1] > f[2]);
+  std::sort(f, f + 3);
+  return { (static_cast<uint64_t>(static_cast<uint32_t>(f[1])) << 32) | static_cast<uint32_t>(f[2]), code,
+           static_cast<uint8_t>(inversions & 1) };
+}
+
 // Groups the faces of the buckets [first, last) (equal faces together, in tet order) and counts badly
 // oriented and over-shared faces (noted in events), boundary faces and the input triangles' uses
 // (m.uses: each triangle is written by the range of its smallest vertex only).
 void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& start, const std::vector<uint32_t>& codes,
                 const InputTriangles& input, size_t first, size_t last, FaceMatch& m, RangeMatch& r)
 {
-  std::vector<std::pair<std::array<int32_t, 2>, uint32_t>> group; // (other two vertices sorted, code)
+  std::vector<BucketFace> group;
   for (size_t v = first; v < last; ++v)
   {
     group.clear();
     for (int64_t k = start[v]; k < start[v + 1]; ++k)
-    {
-      int32_t f[3];
-      faceOf(tets, codes[static_cast<size_t>(k)], f);
-      std::sort(f, f + 3);
-      group.push_back({ { f[1], f[2] }, codes[static_cast<size_t>(k)] });
-    }
+      group.push_back(bucketFace(tets, codes[static_cast<size_t>(k)]));
     std::sort(group.begin(), group.end()); // equal faces together, in tet order (as first seen)
     for (size_t k = 0; k < group.size();)
     {
       size_t e = k + 1;
-      while (e < group.size() && group[e].first == group[k].first)
+      while (e < group.size() && group[e].key == group[k].key)
         ++e;
       const int64_t count = static_cast<int64_t>(e - k);
-      if (count >= 2)
+      if (count >= 2 && group[k + 1].parity == group[k].parity)
       {
-        int32_t f0[3], f1[3];
-        faceOf(tets, group[k].second, f0);
-        faceOf(tets, group[k + 1].second, f1);
-        if (sameCyclic(f1, f0))
-        {
-          ++r.sameOrientationFaces;
-          r.events.push_back(8 * static_cast<int64_t>(group[k + 1].second >> 2) + 1 + (group[k + 1].second & 3));
-        }
+        ++r.sameOrientationFaces;
+        r.events.push_back(8 * static_cast<int64_t>(group[k + 1].code >> 2) + 1 + (group[k + 1].code & 3));
       }
       if (count == 2 && m.listSharedFaces)
         r.sharedFaces.push_back(
-          { static_cast<int32_t>(group[k].second >> 2), static_cast<int32_t>(group[k + 1].second >> 2) });
+          { static_cast<int32_t>(group[k].code >> 2), static_cast<int32_t>(group[k + 1].code >> 2) });
       if (count >= 3)
       {
         ++r.overSharedFaces;
-        r.events.push_back(8 * static_cast<int64_t>(group[k + 2].second >> 2) + 1 + (group[k + 2].second & 3));
+        r.events.push_back(8 * static_cast<int64_t>(group[k + 2].code >> 2) + 1 + (group[k + 2].code & 3));
       }
-      const bool maybeInput = m.onInput[v] && m.onInput[static_cast<size_t>(group[k].first[0])] &&
-        m.onInput[static_cast<size_t>(group[k].first[1])];
-      const auto it =
-        maybeInput ? input.find(TriKey(static_cast<int32_t>(v), group[k].first[0], group[k].first[1])) : input.end();
+      const int32_t b = static_cast<int32_t>(group[k].key >> 32), c = static_cast<int32_t>(group[k].key & 0xffffffffu);
+      const bool maybeInput = m.onInput[v] && m.onInput[static_cast<size_t>(b)] && m.onInput[static_cast<size_t>(c)];
+      const auto it = maybeInput ? input.find(TriKey(static_cast<int32_t>(v), b, c)) : input.end();
       if (it != input.end())
         m.uses[static_cast<size_t>(it->second)] = static_cast<int32_t>(std::min<int64_t>(count, 3));
       if (count == 1)
@@ -279,10 +281,9 @@ void matchFaces(const std::vector<int32_t>& tets, const std::vector<int64_t>& st
         if (it == input.end())
         {
           ++r.boundaryFacesNotInput;
-          r.boundaryNotes.push_back(group[k].second >> 2);
+          r.boundaryNotes.push_back(group[k].code >> 2);
         }
-        r.boundaryPoints.insert(r.boundaryPoints.end(),
-                                { static_cast<int32_t>(v), group[k].first[0], group[k].first[1] });
+        r.boundaryPoints.insert(r.boundaryPoints.end(), { static_cast<int32_t>(v), b, c });
       }
       k = e;
     }
