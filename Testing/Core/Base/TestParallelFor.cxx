@@ -69,3 +69,25 @@ TEST(ParallelFor, AnExceptionReachesTheCaller)
   parallelRun(3, [&](int) { ++n; });
   EXPECT_EQ(n.load(), 3);
 }
+
+// Calls in quick succession with a worker count that changes from call to call, as the candidate scoring of
+// a split makes them: the workers that watch for the next call instead of sleeping must still run each
+// call's body exactly once per worker, and never a worker the call did not ask for.
+TEST(ParallelFor, QuickCallsOfChangingWidthRunEachWorkerOnce)
+{
+  constexpr int kCalls = 20000, kMost = 6;
+  std::vector<std::atomic<int>> runs(static_cast<size_t>(kCalls) * kMost);
+  for (int call = 0; call < kCalls; ++call)
+  {
+    const int workers = 1 + (call * 7919) % kMost;
+    parallelRun(workers, [&](int w) { ++runs[static_cast<size_t>(call) * kMost + w]; });
+  }
+  int64_t wrong = 0;
+  for (int call = 0; call < kCalls; ++call)
+  {
+    const int workers = 1 + (call * 7919) % kMost;
+    for (int w = 0; w < kMost; ++w)
+      wrong += runs[static_cast<size_t>(call) * kMost + w].load() != (w < workers ? 1 : 0);
+  }
+  EXPECT_EQ(wrong, 0);
+}
