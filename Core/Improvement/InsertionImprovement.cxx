@@ -4,6 +4,7 @@
 #include "MeshOptimization.h"
 #include "MeshScan.h"
 #include "MeshSmoothing.h"
+#include "ParallelFor.h"
 #include "Predicates.h"
 #include "Quality.h"
 
@@ -200,13 +201,128 @@ std::array<double, 3> at(const Frame& f, const std::array<double, 3>& x)
   return p;
 }
 
+// Scores positions of the new vertex of an attempt for tet t: the worst new tet of the quality-driven
+// insertion at y (cavity holding t), -3 when none; best and bestAt keep the first best it scored. It
+// writes only the coordinates of its own vertex slot nv and its own editor's scratch, so scorers with
+// editors and slots of their own may score at once.
+struct PositionScorer
+{
+  TetEditor* editor;
+  int32_t nv;
+  int32_t t;
+  double best = -3;
+  std::array<double, 3> bestAt{};
+
+  double score(const std::array<double, 3>& y)
+  {
+    if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
+      return -3;
+    TetMesh& m = editor->mesh;
+    std::copy(y.begin(), y.end(), m.points.data() + 3 * static_cast<size_t>(nv));
+    const int32_t start = editor->locate(y.data(), t);
+    if (start < 0)
+      return -3;
+    const double q = editor->qualityInsertion(nv, start, t, nullptr, false, nullptr, 24, -3);
+    if (!(q > 0))
+      return -3;
+    if (q > best)
+    {
+      best = q;
+      bestAt = y;
+    }
+    return q;
+  }
+};
+
+// The scorers of an attempt: the attempt's own editor and vertex, and, on more threads, helper editors
+// (no vertex map: they only locate and try cavities) with vertex slots after it, which exist only while
+// they score (scoped()).
+class Scorers
+{
+public:
+  Scorers(TetMesh& mesh, const FaceConstraints* constraints, int threads)
+    : mesh_(mesh)
+  {
+    for (int w = 1; w < resolveThreads(threads); ++w)
+      helpers_.push_back(std::make_unique<TetEditor>(mesh, constraints, nullptr, TetEditor::VertexMap::None));
+  }
+  int count() const { return static_cast<int>(helpers_.size()) + 1; }
+
+  // Scores ys[k] into qs[k] (the score, best not kept), on up to count() threads; the same values for any
+  // count, since a score depends on the position alone. own: the attempt's scorer (its vertex is the
+  // mesh's last).
+  void scoreAll(const PositionScorer& own, const std::vector<std::array<double, 3>>& ys, std::vector<double>& qs)
+  {
+    qs.assign(ys.size(), -3);
+    const int ranges = parallelRanges(count(), static_cast<int64_t>(ys.size()), kMinPositionsPerThread);
+    withSlots(own, ranges,
+              [&](std::vector<PositionScorer>& scorers)
+              {
+                parallelFor(ranges, static_cast<int64_t>(ys.size()), kMinPositionsPerThread,
+                            [&](int r, int64_t begin, int64_t end)
+                            {
+                              for (int64_t k = begin; k < end; ++k)
+                                qs[static_cast<size_t>(k)] = scorers[static_cast<size_t>(r)].score(ys[k]);
+                            });
+              });
+  }
+
+  // Runs search(scorer, i) for i in [0, n) (n <= 2 searches, each scoring with its own scorer), at once on
+  // two threads when there are, and folds their bests into own in order: what the searches one after the
+  // other with own alone would leave there.
+  template<typename Search>
+  void searchEach(PositionScorer& own, int n, Search&& search)
+  {
+    const int ranges = std::min(n, count());
+    withSlots(own, ranges,
+              [&](std::vector<PositionScorer>& scorers)
+              {
+                for (PositionScorer& sc : scorers)
+                  sc.best = -3;
+                if (ranges <= 1)
+                  for (int i = 0; i < n; ++i)
+                    search(scorers[0], i);
+                else
+                  parallelRun(ranges, [&](int r) { search(scorers[static_cast<size_t>(r)], r); });
+                for (const PositionScorer& sc : scorers)
+                  if (sc.best > own.best)
+                  {
+                    own.best = sc.best;
+                    own.bestAt = sc.bestAt;
+                  }
+              });
+  }
+
+private:
+  static constexpr int64_t kMinPositionsPerThread = 16;
+
+  // body(scorers): scorers[0] scores with own's editor and vertex, scorers[r] with helper r - 1 and the slot
+  // own.nv + r, added for the call and removed after it.
+  template<typename Body>
+  void withSlots(const PositionScorer& own, int ranges, Body&& body)
+  {
+    const size_t nv = static_cast<size_t>(own.nv);
+    const size_t extra = static_cast<size_t>(std::max(ranges, 1) - 1);
+    mesh_.points.resize(3 * (nv + 1 + extra));
+    std::vector<PositionScorer> scorers{ own };
+    for (size_t r = 1; r <= extra; ++r)
+      scorers.push_back({ helpers_[r - 1].get(), static_cast<int32_t>(nv + r), own.t });
+    body(scorers);
+    mesh_.points.resize(3 * (nv + 1));
+  }
+
+  TetMesh& mesh_;
+  std::vector<std::unique_ptr<TetEditor>> helpers_;
+};
+
 class Attempt
 {
 public:
   // minDihedralFloor: the mesh's smallest dihedral angle; no new tet may go under it (the sine quality
   // also weighs the largest angle, so a better worst quality alone could still lower the minimum angle).
-  Attempt(TetEditor& editor, const std::vector<uint8_t>& locked, double minDihedralFloor)
+  Attempt(TetEditor& editor, Scorers& scorers, const std::vector<uint8_t>& locked, double minDihedralFloor)
     : ed_(editor)
+    , scorers_(scorers)
     , m_(editor.mesh)
     , locked_(locked)
     , floor_(minDihedralFloor)
@@ -243,14 +359,15 @@ private:
   // False when no position makes a valid cavity.
   bool searchPosition(int32_t t, const std::vector<double>& heights)
   {
-    best_ = -3;
+    PositionScorer own{ &ed_, nv_, t };
     struct Start
     {
       double q;
       int face;
       std::array<double, 3> x;
     };
-    std::vector<Start> starts;
+    std::vector<Start> grid, starts;
+    std::vector<std::array<double, 3>> ys;
     Frame frames[4];
     for (int i = 0; i < 4; ++i)
     {
@@ -265,24 +382,39 @@ private:
           {
             if (z < 0 && !bothSides)
               continue;
-            const std::array<double, 3> x3 = { x, y, z };
-            const double q = score(at(frames[i], x3));
-            if (q > -3)
-              starts.push_back({ q, i, x3 });
+            grid.push_back({ -3, i, { x, y, z } });
+            ys.push_back(at(frames[i], grid.back().x));
           }
+    }
+    // The grid's scores depend on the positions alone: scored at once, then taken in grid order.
+    std::vector<double> qs;
+    scorers_.scoreAll(own, ys, qs);
+    for (size_t k = 0; k < grid.size(); ++k)
+    {
+      if (qs[k] > own.best)
+      {
+        own.best = qs[k];
+        own.bestAt = ys[k];
+      }
+      if (qs[k] > -3)
+        starts.push_back({ qs[k], grid[k].face, grid[k].x });
     }
     std::sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.q > b.q; });
     if (starts.size() > 2)
       starts.resize(2);
-    for (const Start& st : starts)
-    {
-      const Frame& f = frames[st.face];
-      std::array<double, 3> x = st.x;
-      double q = st.q;
-      compassSearch(
-        x, q, 0.25, [&](const std::array<double, 3>& y) { return score(at(f, y)); },
-        [](double step, int, int evals) { return step > 1e-6 && evals < 200; });
-    }
+    // A pattern search from each of the best two (their paths do not depend on each other).
+    scorers_.searchEach(own, static_cast<int>(starts.size()),
+                        [&](PositionScorer& scorer, int i)
+                        {
+                          const Frame& f = frames[starts[static_cast<size_t>(i)].face];
+                          std::array<double, 3> x = starts[static_cast<size_t>(i)].x;
+                          double q = starts[static_cast<size_t>(i)].q;
+                          compassSearch(
+                            x, q, 0.25, [&](const std::array<double, 3>& y) { return scorer.score(at(f, y)); },
+                            [](double step, int, int evals) { return step > 1e-6 && evals < 200; });
+                        });
+    best_ = own.best;
+    bestAt_ = own.bestAt;
     return best_ > 0;
   }
 
@@ -303,26 +435,6 @@ private:
     ed_.journal->rollback(saved, m_, ed_.labels);
     ed_.refreshVertexMap(restored_);
     return false;
-  }
-
-  // The worst new tet of the quality-driven insertion at y (cavity holding t), -3 when none.
-  double score(const std::array<double, 3>& y)
-  {
-    if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]))
-      return -3;
-    std::copy(y.begin(), y.end(), m_.points.data() + 3 * static_cast<size_t>(nv_));
-    const int32_t start = ed_.locate(y.data(), t_);
-    if (start < 0)
-      return -3;
-    const double q = ed_.qualityInsertion(nv_, start, t_, nullptr, false, nullptr, 24, -3);
-    if (!(q > 0))
-      return -3;
-    if (q > best_)
-    {
-      best_ = q;
-      bestAt_ = y;
-    }
-    return q;
   }
 
   // The live tets created by this attempt (a freed slot is only reused by a later creation, also listed).
@@ -523,6 +635,7 @@ private:
   bool isLocked(int32_t u) const { return static_cast<size_t>(u) < locked_.size() && locked_[u] != 0; }
 
   TetEditor& ed_;
+  Scorers& scorers_;
   std::vector<int32_t> restored_, moved_; // tryPosition()'s undo: the slots it restores
   TetMesh& m_;
   const std::vector<uint8_t>& locked_; // vertices that never move (points added later are free)
@@ -544,6 +657,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
   InsertionImprovementReport& rep = report ? *report : local;
   TetEditor editor(mesh, constraints, labels);
   EditJournal journal; // undo of an attempt and of a round (no copy of the mesh)
+  Scorers scorers(mesh, constraints, options.threads);
   editor.journal = &journal;
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
@@ -618,7 +732,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
         rep.kept = kept;
         return kept;
       }
-      Attempt attempt(editor, lock, floor);
+      Attempt attempt(editor, scorers, lock, floor);
       ++rep.attempts;
       if (attempt.run(t))
         ++kept;
