@@ -334,7 +334,6 @@ public:
   {
     const double qt = tetQuality(m_, t);
     nv_ = m_.addPoint(m_.point(m_.vertex(t, 0))); // coordinates overwritten by each trial position
-    t_ = t;
     // Heights over t's faces of a hundredth of the face and less when the usual ones fail and t spans two
     // boundary triangles: folded onto each other, they leave a point room only in a wedge of a tenth of a
     // degree (a flat tet of four boundary vertices on cheburashka). For every failing tet they cost time
@@ -640,7 +639,7 @@ private:
   TetMesh& m_;
   const std::vector<uint8_t>& locked_; // vertices that never move (points added later are free)
   const double floor_;
-  int32_t nv_ = -1, t_ = -1;
+  int32_t nv_ = -1;
   double best_ = -3;
   std::array<double, 3> bestAt_{};
   std::vector<int32_t> created_, star_;
