@@ -2,6 +2,7 @@
 
 #include "CompassSearch.h"
 #include "ParallelFor.h"
+#include "ScoringHelpers.h"
 
 #include <algorithm>
 #include <array>
@@ -222,36 +223,40 @@ class ParallelScan
 public:
   ParallelScan(TetMesh& mesh, const FaceConstraints* constraints, int threads)
     : mesh_(mesh)
+    , helpers_(mesh, constraints, threads)
   {
-    // They only locate and try cavities (no commit): no vertex map, whose build is a sweep of the mesh.
-    for (int w = 1; w < threads; ++w)
-      editors_.push_back(std::make_unique<TetEditor>(mesh, constraints, nullptr, TetEditor::VertexMap::None));
   }
 
   // Scores `cand` for bad tet t into `search` (whose vertex nv is the last point of the mesh).
   void run(PositionSearch& search, const std::vector<Point>& cand)
   {
-    const int ranges =
-      parallelRanges(static_cast<int>(editors_.size()) + 1, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread);
+    const int ranges = parallelRanges(helpers_.count(), static_cast<int64_t>(cand.size()), kMinCandidatesPerThread);
     if (ranges <= 1)
       return search.scan(cand);
-    const size_t nv = static_cast<size_t>(search.nv);
-    mesh_.points.resize(3 * (nv + static_cast<size_t>(ranges))); // a slot per extra range, after nv
-    search.x = mesh_.points.data() + 3 * nv;
     std::vector<PositionSearch> parts;
-    for (int r = 0; r < ranges; ++r)
-    {
-      const int32_t slot = static_cast<int32_t>(nv) + r;
-      parts.push_back(r == 0 ? search
-                             : PositionSearch{ *editors_[static_cast<size_t>(r - 1)],
-                                               mesh_.points.data() + 3 * static_cast<size_t>(slot), slot, search.t,
-                                               search.speculative });
-    }
-    parallelFor(ranges, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread,
-                [&](int r, int64_t begin, int64_t end)
-                { parts[static_cast<size_t>(r)].scan(cand, static_cast<size_t>(begin), static_cast<size_t>(end)); });
-    mesh_.points.resize(3 * (nv + 1));
-    search.x = mesh_.points.data() + 3 * nv;
+    helpers_.withSlots(search.nv, ranges,
+                       [&]
+                       {
+                         for (int r = 0; r < ranges; ++r)
+                         {
+                           const int32_t slot = search.nv + r;
+                           double* x = mesh_.points.data() + 3 * static_cast<size_t>(slot);
+                           if (r == 0)
+                           {
+                             parts.push_back(search); // keeps the best so far, which prunes its range
+                             parts.back().x = x;
+                           }
+                           else
+                             parts.push_back(PositionSearch{ helpers_.helper(r), x, slot, search.t, search.speculative });
+                         }
+                         parallelFor(ranges, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread,
+                                     [&](int r, int64_t begin, int64_t end)
+                                     {
+                                       parts[static_cast<size_t>(r)].scan(cand, static_cast<size_t>(begin),
+                                                                          static_cast<size_t>(end));
+                                     });
+                       });
+    search.x = mesh_.points.data() + 3 * static_cast<size_t>(search.nv);
     for (const PositionSearch& part : parts)
       if (part.best > search.best)
       {
@@ -263,7 +268,7 @@ public:
 private:
   static constexpr int64_t kMinCandidatesPerThread = 8;
   TetMesh& mesh_;
-  std::vector<std::unique_ptr<TetEditor>> editors_;
+  ScoringHelpers helpers_;
 };
 } // namespace
 

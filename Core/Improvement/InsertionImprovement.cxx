@@ -7,6 +7,7 @@
 #include "ParallelFor.h"
 #include "Predicates.h"
 #include "Quality.h"
+#include "ScoringHelpers.h"
 
 #include <algorithm>
 #include <array>
@@ -234,19 +235,16 @@ struct PositionScorer
   }
 };
 
-// The scorers of an attempt: the attempt's own editor and vertex, and, on more threads, helper editors
-// (no vertex map: they only locate and try cavities) with vertex slots after it, which exist only while
-// they score (scoped()).
+// The scorers of an attempt: the attempt's own editor and vertex, and, on more threads, the helpers'
+// editors with vertex slots after it, which exist only while they score.
 class Scorers
 {
 public:
   Scorers(TetMesh& mesh, const FaceConstraints* constraints, int threads)
-    : mesh_(mesh)
+    : helpers_(mesh, constraints, threads)
   {
-    for (int w = 1; w < resolveThreads(threads); ++w)
-      helpers_.push_back(std::make_unique<TetEditor>(mesh, constraints, nullptr, TetEditor::VertexMap::None));
   }
-  int count() const { return static_cast<int>(helpers_.size()) + 1; }
+  int count() const { return helpers_.count(); }
 
   // Scores ys[k] into qs[k] (the score, best not kept), on up to count() threads; the same values for any
   // count, since a score depends on the position alone. own: the attempt's scorer (its vertex is the
@@ -255,16 +253,17 @@ public:
   {
     qs.assign(ys.size(), -3);
     const int ranges = parallelRanges(count(), static_cast<int64_t>(ys.size()), kMinPositionsPerThread);
-    withSlots(own, ranges,
-              [&](std::vector<PositionScorer>& scorers)
-              {
-                parallelFor(ranges, static_cast<int64_t>(ys.size()), kMinPositionsPerThread,
-                            [&](int r, int64_t begin, int64_t end)
-                            {
-                              for (int64_t k = begin; k < end; ++k)
-                                qs[static_cast<size_t>(k)] = scorers[static_cast<size_t>(r)].score(ys[k]);
-                            });
-              });
+    std::vector<PositionScorer> scorers = scorersFor(own, ranges);
+    helpers_.withSlots(own.nv, ranges,
+                       [&]
+                       {
+                         parallelFor(ranges, static_cast<int64_t>(ys.size()), kMinPositionsPerThread,
+                                     [&](int r, int64_t begin, int64_t end)
+                                     {
+                                       for (int64_t k = begin; k < end; ++k)
+                                         qs[static_cast<size_t>(k)] = scorers[static_cast<size_t>(r)].score(ys[k]);
+                                     });
+                       });
   }
 
   // Runs search(scorer, i) for i in [0, n) (n <= 2 searches, each scoring with its own scorer), at once on
@@ -274,45 +273,39 @@ public:
   void searchEach(PositionScorer& own, int n, Search&& search)
   {
     const int ranges = std::min(n, count());
-    withSlots(own, ranges,
-              [&](std::vector<PositionScorer>& scorers)
-              {
-                for (PositionScorer& sc : scorers)
-                  sc.best = -3;
-                if (ranges <= 1)
-                  for (int i = 0; i < n; ++i)
-                    search(scorers[0], i);
-                else
-                  parallelRun(ranges, [&](int r) { search(scorers[static_cast<size_t>(r)], r); });
-                for (const PositionScorer& sc : scorers)
-                  if (sc.best > own.best)
-                  {
-                    own.best = sc.best;
-                    own.bestAt = sc.bestAt;
-                  }
-              });
+    std::vector<PositionScorer> scorers = scorersFor(own, ranges);
+    for (PositionScorer& sc : scorers)
+      sc.best = -3;
+    helpers_.withSlots(own.nv, ranges,
+                       [&]
+                       {
+                         if (ranges <= 1)
+                           for (int i = 0; i < n; ++i)
+                             search(scorers[0], i);
+                         else
+                           parallelRun(ranges, [&](int r) { search(scorers[static_cast<size_t>(r)], r); });
+                       });
+    for (const PositionScorer& sc : scorers)
+      if (sc.best > own.best)
+      {
+        own.best = sc.best;
+        own.bestAt = sc.bestAt;
+      }
   }
 
 private:
   static constexpr int64_t kMinPositionsPerThread = 16;
 
-  // body(scorers): scorers[0] scores with own's editor and vertex, scorers[r] with helper r - 1 and the slot
-  // own.nv + r, added for the call and removed after it.
-  template<typename Body>
-  void withSlots(const PositionScorer& own, int ranges, Body&& body)
+  // scorers[0] scores with own's editor and vertex, scorers[r] with helper r and the slot own.nv + r.
+  std::vector<PositionScorer> scorersFor(const PositionScorer& own, int ranges)
   {
-    const size_t nv = static_cast<size_t>(own.nv);
-    const size_t extra = static_cast<size_t>(std::max(ranges, 1) - 1);
-    mesh_.points.resize(3 * (nv + 1 + extra));
     std::vector<PositionScorer> scorers{ own };
-    for (size_t r = 1; r <= extra; ++r)
-      scorers.push_back({ helpers_[r - 1].get(), static_cast<int32_t>(nv + r), own.t });
-    body(scorers);
-    mesh_.points.resize(3 * (nv + 1));
+    for (int r = 1; r < ranges; ++r)
+      scorers.push_back({ &helpers_.helper(r), own.nv + r, own.t });
+    return scorers;
   }
 
-  TetMesh& mesh_;
-  std::vector<std::unique_ptr<TetEditor>> helpers_;
+  ScoringHelpers helpers_;
 };
 
 class Attempt
