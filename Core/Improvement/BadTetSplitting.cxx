@@ -234,28 +234,27 @@ public:
     if (ranges <= 1)
       return search.scan(cand);
     std::vector<PositionSearch> parts;
-    helpers_.withSlots(search.nv, ranges,
-                       [&]
-                       {
-                         for (int r = 0; r < ranges; ++r)
-                         {
-                           const int32_t slot = search.nv + r;
-                           double* x = mesh_.points.data() + 3 * static_cast<size_t>(slot);
-                           if (r == 0)
-                           {
-                             parts.push_back(search); // keeps the best so far, which prunes its range
-                             parts.back().x = x;
-                           }
-                           else
-                             parts.push_back(PositionSearch{ helpers_.helper(r), x, slot, search.t, search.speculative });
-                         }
-                         parallelFor(ranges, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread,
-                                     [&](int r, int64_t begin, int64_t end)
-                                     {
-                                       parts[static_cast<size_t>(r)].scan(cand, static_cast<size_t>(begin),
-                                                                          static_cast<size_t>(end));
-                                     });
-                       });
+    helpers_.withSlots(
+      search.nv, ranges,
+      [&]
+      {
+        for (int r = 0; r < ranges; ++r)
+        {
+          const int32_t slot = search.nv + r;
+          double* x = mesh_.points.data() + 3 * static_cast<size_t>(slot);
+          if (r == 0)
+          {
+            parts.push_back(search); // keeps the best so far, which prunes its range
+            parts.back().x = x;
+          }
+          else
+            parts.push_back(PositionSearch{ helpers_.helper(r), x, slot, search.t, search.speculative });
+        }
+        parallelFor(ranges, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread,
+                    [&](int r, int64_t begin, int64_t end) {
+                      parts[static_cast<size_t>(r)].scan(cand, static_cast<size_t>(begin), static_cast<size_t>(end));
+                    });
+      });
     search.x = mesh_.points.data() + 3 * static_cast<size_t>(search.nv);
     for (const PositionSearch& part : parts)
       if (part.best > search.best)

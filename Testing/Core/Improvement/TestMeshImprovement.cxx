@@ -5,6 +5,7 @@
 #include "Enclosures.h"
 #include "MeshChecker.h"
 #include "MeshImprovement.h"
+#include "MeshTestFaces.h"
 #include "Mesher.h"
 #include "SizeRatio.h"
 #include "SurfaceReader.h"
@@ -22,6 +23,7 @@
 #include <vector>
 
 using namespace volgrid;
+using testmesh::hullFaces;
 
 namespace
 {
@@ -101,23 +103,6 @@ double meanEdge(const MesherResult& r, F&& in, int64_t* count = nullptr)
   return edges.empty() ? 0 : s / edges.size();
 }
 
-std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
-{
-  std::set<std::array<int32_t, 3>> faces;
-  m.forEachTet(
-    [&](int32_t t)
-    {
-      for (int i = 0; i < 4; ++i)
-        if (m.neighbor(t, i) < 0)
-        {
-          int32_t f[3];
-          m.faceVertices(t, i, f);
-          std::rotate(f, std::min_element(f, f + 3), f + 3);
-          faces.insert({ f[0], f[1], f[2] });
-        }
-    });
-  return faces;
-}
 // Meshes s with `options`, checks what every mesh must hold (valid, boundary == input, exact volume, no
 // inverted tet) and returns its dihedral angles; `what` names the case in failure messages.
 DihedralSummary meshAndCheck(const SurfaceMesh& s, const MesherOptions& options, MesherResult& r,

@@ -7,6 +7,7 @@
 #include "MeshImprovement.h"
 #include "MeshOptimization.h"
 #include "MeshSmoothing.h"
+#include "MeshTestFaces.h"
 #include "Predicates.h"
 #include "Quality.h"
 #include "SizingField.h"
@@ -20,6 +21,7 @@
 #include <vector>
 
 using namespace volgrid;
+using testmesh::hullFaces;
 
 namespace
 {
@@ -38,24 +40,6 @@ void fieldMesh(EnclosureShape shape, double edge, TetMesh& mesh)
   ASSERT_TRUE(
     f.build(s.points.data(), s.numberOfPoints(), s.triangles.data(), s.numberOfTriangles(), SizingOptions()).ok());
   ASSERT_TRUE(insertFieldPoints(mesh, f, FieldPointOptions()).ok());
-}
-
-std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
-{
-  std::set<std::array<int32_t, 3>> faces;
-  m.forEachTet(
-    [&](int32_t t)
-    {
-      for (int i = 0; i < 4; ++i)
-        if (m.neighbor(t, i) < 0)
-        {
-          int32_t f[3];
-          m.faceVertices(t, i, f);
-          std::rotate(f, std::min_element(f, f + 3), f + 3);
-          faces.insert({ f[0], f[1], f[2] });
-        }
-    });
-  return faces;
 }
 
 std::vector<double> boundaryCoordinates(const TetMesh& m, const std::set<std::array<int32_t, 3>>& faces)

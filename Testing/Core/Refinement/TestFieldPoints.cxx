@@ -4,6 +4,7 @@
 #include "Enclosures.h"
 #include "FieldPoints.h"
 #include "MeshChecker.h"
+#include "MeshTestFaces.h"
 #include "SizingField.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 #include <vector>
 
 using namespace volgrid;
+using testmesh::hullFaces;
 
 namespace
 {
@@ -45,24 +47,6 @@ void makeDomain(Domain& d, EnclosureShape shape, double edge, const SizingOption
                 .build(d.surface.points.data(), d.surface.numberOfPoints(), d.surface.triangles.data(),
                        d.surface.numberOfTriangles(), so)
                 .ok());
-}
-
-std::set<std::array<int32_t, 3>> hullFaces(const TetMesh& m)
-{
-  std::set<std::array<int32_t, 3>> faces;
-  m.forEachTet(
-    [&](int32_t t)
-    {
-      for (int i = 0; i < 4; ++i)
-        if (m.neighbor(t, i) < 0)
-        {
-          int32_t f[3];
-          m.faceVertices(t, i, f);
-          std::rotate(f, std::min_element(f, f + 3), f + 3); // keep the orientation
-          faces.insert({ f[0], f[1], f[2] });
-        }
-    });
-  return faces;
 }
 
 // Pairs of vertices closer than eq. 5 allows, a field point (number n0 on) being one of them: beta x its size
