@@ -176,7 +176,7 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       {
         if (progress && progress->cancelled()) // each whole-mesh step in between is a few tenths of a second at 10M
           return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
-        const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint);
+        const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint, options.threads);
         renumberTetArray(renumbering, tetRegion, -1);
         renumberVertexArray(renumbering, clusterLock, uint8_t{ 0 });
       }

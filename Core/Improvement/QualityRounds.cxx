@@ -76,6 +76,7 @@ QualityRounds::QualityRounds(TetMesh& mesh_, const FaceConstraints& fc, const st
   one_.vertexRemoval = false; // a second attempt, withCollapseRerun
   one_.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
   constrainedLocks_ = editor_.lockedVertices();
+  editor_.refreshThreads = options.threads;
 }
 
 Status QualityRounds::run()

@@ -48,6 +48,9 @@ public:
   // tet still holds it, else from a live tet of `hint` that holds it (after an undo: the slots it restored),
   // else none (a vertex left in no tet). Costs the stars of those vertices.
   void refreshVertexMap(const std::vector<int32_t>& hint);
+  // The threads refreshVertexMap() uses for the stars (the rule of ParallelFor.h; the map is the same for
+  // any count).
+  int refreshThreads = 1;
   // The map's entry for v: -1 for a vertex in no tet or beyond the map.
   int32_t mappedTet(int32_t v) const
   {
@@ -167,6 +170,9 @@ protected:
   }
 
 private:
+  static constexpr int64_t kMinRefreshesPerThread = 4096;
+  // The highest slot of v's star, walked from t0 (a live tet holding v) with starTets as scratch.
+  int32_t highestSlotOfStar(int32_t v, int32_t t0, std::vector<int32_t>& starTets) const;
   // Notes v among the entries written since the last rebuild or refresh (refreshVertexMap()).
   void markWritten(int32_t v)
   {

@@ -1,8 +1,10 @@
 #include "SpatialReorder.h"
 
+#include "ParallelFor.h"
 #include "SpatialSort.h"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 
 namespace volgrid
@@ -25,70 +27,101 @@ std::vector<int32_t> vertexOrder(const TetMesh& mesh, int32_t firstVertex)
   return oldToNew;
 }
 
+constexpr int64_t kMinPerThread = 1 << 16;
+
 // New tet slots: the live tets by the new number of their highest vertex (ties by old slot), free slots
 // -1. The vertices from firstVertex on are in Hilbert order and every tet but those spanned by earlier
-// vertices has its highest vertex among them, so the tets follow the curve too, at 8 bytes per tet of
-// scratch (centroids would cost 24).
-std::vector<int32_t> tetOrder(const TetMesh& mesh, const std::vector<int32_t>& vertexOldToNew)
+// vertices has its highest vertex among them, so the tets follow the curve too. The keys are vertex
+// numbers: a counting sort (tets per key, then the slots in order) gives the order of the sorted
+// (key, slot) pairs in linear time, at 4 bytes per slot and per vertex of scratch.
+std::vector<int32_t> tetOrder(const TetMesh& mesh, const std::vector<int32_t>& vertexOldToNew, int threads)
 {
-  std::vector<std::pair<int32_t, int32_t>> keyed; // (highest new vertex, old slot)
-  keyed.reserve(static_cast<size_t>(mesh.numTets()));
-  mesh.forEachTet(
-    [&](int32_t t)
-    {
-      const int32_t* v = mesh.vertices(t);
-      keyed.emplace_back(std::max(std::max(vertexOldToNew[v[0]], vertexOldToNew[v[1]]),
-                                  std::max(vertexOldToNew[v[2]], vertexOldToNew[v[3]])),
-                         t);
-    });
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<int32_t> oldToNew(static_cast<size_t>(mesh.tetCapacity()), -1);
-  for (size_t k = 0; k < keyed.size(); ++k)
-    oldToNew[static_cast<size_t>(keyed[k].second)] = static_cast<int32_t>(k);
+  const int64_t slots = mesh.tetCapacity();
+  std::vector<int32_t> oldToNew(static_cast<size_t>(slots), -1); // the key first, then the new slot
+  parallelFor(threads, slots, kMinPerThread,
+              [&](int, int64_t begin, int64_t end)
+              {
+                for (int64_t t = begin; t < end; ++t)
+                {
+                  if (mesh.isFree(static_cast<int32_t>(t)))
+                    continue;
+                  const int32_t* v = mesh.vertices(static_cast<int32_t>(t));
+                  oldToNew[static_cast<size_t>(t)] = std::max(std::max(vertexOldToNew[v[0]], vertexOldToNew[v[1]]),
+                                                              std::max(vertexOldToNew[v[2]], vertexOldToNew[v[3]]));
+                }
+              });
+  std::vector<int32_t> next(vertexOldToNew.size() + 1, 0); // per key: the first new slot of its tets
+  for (const int32_t key : oldToNew)
+    if (key >= 0)
+      ++next[static_cast<size_t>(key) + 1];
+  std::partial_sum(next.begin(), next.end(), next.begin());
+  for (int32_t& n : oldToNew)
+    if (n >= 0)
+      n = next[static_cast<size_t>(n)]++;
   return oldToNew;
 }
 
-// Applies the maps one array at a time (the extra memory is one array, not a second mesh).
-void permute(TetMesh& mesh, const SpatialRenumbering& r)
+// Applies the maps one array at a time (the extra memory is one array, not a second mesh); each array on
+// the threads (every entry goes to its own new place).
+void permute(TetMesh& mesh, const SpatialRenumbering& r, int threads)
 {
   std::vector<double> points(mesh.points.size());
-  for (size_t v = 0; v < r.vertexOldToNew.size(); ++v)
-    std::copy_n(mesh.points.data() + 3 * v, 3, points.data() + 3 * static_cast<size_t>(r.vertexOldToNew[v]));
+  parallelFor(threads, static_cast<int64_t>(r.vertexOldToNew.size()), kMinPerThread,
+              [&](int, int64_t begin, int64_t end)
+              {
+                for (int64_t v = begin; v < end; ++v)
+                  std::copy_n(mesh.points.data() + 3 * v, 3,
+                              points.data() + 3 * static_cast<size_t>(r.vertexOldToNew[static_cast<size_t>(v)]));
+              });
   mesh.points.swap(points);
   std::vector<double>().swap(points);
-  const size_t live = static_cast<size_t>(mesh.numTets()), slots = static_cast<size_t>(mesh.tetCapacity());
+  const size_t live = static_cast<size_t>(mesh.numTets());
+  const int64_t slots = mesh.tetCapacity();
+  // For each live slot t: its new slot n = tetOldToNew[t].
+  auto overLiveSlots = [&](const std::function<void(size_t t, size_t n)>& body)
+  {
+    parallelFor(threads, slots, kMinPerThread,
+                [&](int, int64_t begin, int64_t end)
+                {
+                  for (int64_t t = begin; t < end; ++t)
+                    if (r.tetOldToNew[static_cast<size_t>(t)] >= 0)
+                      body(static_cast<size_t>(t), static_cast<size_t>(r.tetOldToNew[static_cast<size_t>(t)]));
+                });
+  };
   std::vector<int32_t> words(4 * live);
-  for (size_t t = 0; t < slots; ++t)
-    if (r.tetOldToNew[t] >= 0)
+  overLiveSlots(
+    [&](size_t t, size_t n)
+    {
       for (int i = 0; i < 4; ++i)
-        words[4 * static_cast<size_t>(r.tetOldToNew[t]) + i] = r.vertexOldToNew[mesh.tetVertices[4 * t + i]];
+        words[4 * n + i] = r.vertexOldToNew[static_cast<size_t>(mesh.tetVertices[4 * t + i])];
+    });
   mesh.tetVertices.swap(words);
   words.assign(4 * live, TetMesh::kNoNeighbor);
-  for (size_t t = 0; t < slots; ++t)
-    if (r.tetOldToNew[t] >= 0)
+  overLiveSlots(
+    [&](size_t t, size_t n)
+    {
       for (int i = 0; i < 4; ++i)
       {
         const int32_t c = mesh.tetNeighbors[4 * t + i];
         if (c >= 0)
-          words[4 * static_cast<size_t>(r.tetOldToNew[t]) + i] = TetMesh::encode(r.tetOldToNew[c >> 2], c & 3);
+          words[4 * n + i] = TetMesh::encode(r.tetOldToNew[static_cast<size_t>(c >> 2)], c & 3);
       }
+    });
   mesh.tetNeighbors.swap(words);
   std::vector<uint8_t> flags(live);
-  for (size_t t = 0; t < slots; ++t)
-    if (r.tetOldToNew[t] >= 0)
-      flags[static_cast<size_t>(r.tetOldToNew[t])] = mesh.tetFlags[t];
+  overLiveSlots([&](size_t t, size_t n) { flags[n] = mesh.tetFlags[t]; });
   mesh.tetFlags.swap(flags);
 }
 } // namespace
 
-SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex)
+SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex, int threads)
 {
   SpatialRenumbering r;
   if (mesh.numGhostTets() > 0 || mesh.numTets() == 0)
     return r;
   r.vertexOldToNew = vertexOrder(mesh, firstVertex);
-  r.tetOldToNew = tetOrder(mesh, r.vertexOldToNew);
-  permute(mesh, r);
+  r.tetOldToNew = tetOrder(mesh, r.vertexOldToNew, threads);
+  permute(mesh, r, threads);
   mesh.restoreBookkeeping({ -1, 0, 0 }); // compact: no free slot, no ghost
   return r;
 }

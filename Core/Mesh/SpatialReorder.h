@@ -12,7 +12,8 @@
 // dropped, so the mesh is compact). The arrays are rewritten one at a time: the extra memory at the peak
 // is one array, not a second mesh.
 // The mesh is the same (same points, same tets with the same vertex order, same adjacency): only the
-// numbers change. Deterministic (no randomness, ties by old number).
+// numbers change. Deterministic (no randomness, ties by old number), the same for any thread count
+// (`threads`: the rule of ParallelFor.h).
 #pragma once
 
 #include "TetMesh.h"
@@ -32,7 +33,7 @@ struct SpatialRenumbering
 
 // Renumbers mesh (see above); the returned maps let the caller carry per-vertex and per-tet arrays over.
 // A mesh with ghost tets is left as it is (empty maps).
-SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex);
+SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex, int threads = 1);
 
 // Carries a per-tet-slot array over (entries of free slots dropped, the array sized to the new slots).
 template<typename T>

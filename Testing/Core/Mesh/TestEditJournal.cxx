@@ -156,3 +156,21 @@ TEST(EditJournal, RefreshAfterAnUndoGivesTheMapOfARebuild)
     ASSERT_GT(edit(ed, 10, firstTet + 20), 0); // kept edits again before the next undo
   }
 }
+
+// With refreshThreads > 1 and enough written entries, refreshVertexMap() walks the stars on the threads
+// without the shared stamps: the map must still be the one a full rebuild gives.
+TEST(EditJournal, RefreshOnThreadsGivesTheMapOfARebuild)
+{
+  TetMesh mesh;
+  randomDelaunay(mesh, 20000);
+  TetEditor ed(mesh, nullptr, nullptr);
+  ed.refreshThreads = 4;
+  TetEditor rebuilt(mesh, nullptr, nullptr, TetEditor::VertexMap::None);
+  ASSERT_GT(edit(ed, 6000, 0), 5000); // more written entries than one thread's share of the refresh
+  ed.refreshVertexMap({});
+  rebuilt.rebuildVertexMap();
+  int32_t differing = 0;
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    differing += ed.mappedTet(v) != rebuilt.mappedTet(v);
+  EXPECT_EQ(differing, 0);
+}

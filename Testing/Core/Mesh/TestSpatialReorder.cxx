@@ -175,3 +175,19 @@ TEST(SpatialReorder, GhostMeshLeftAlone)
   EXPECT_TRUE(r.vertexOldToNew.empty());
   EXPECT_EQ(mesh.tetVertices, copy.tetVertices);
 }
+
+// On several threads (counting sort of the tets, arrays permuted in parallel) the renumbering is the one
+// thread's, array for array.
+TEST(SpatialReorder, SameOnAnyThreadCount)
+{
+  TetMesh one = scatteredMesh(30000, 11);
+  TetMesh four = one;
+  const SpatialRenumbering r1 = reorderSpatially(one, 100, 1);
+  const SpatialRenumbering r4 = reorderSpatially(four, 100, 4);
+  EXPECT_EQ(r1.vertexOldToNew, r4.vertexOldToNew);
+  EXPECT_EQ(r1.tetOldToNew, r4.tetOldToNew);
+  EXPECT_EQ(one.points, four.points);
+  EXPECT_EQ(one.tetVertices, four.tetVertices);
+  EXPECT_EQ(one.tetNeighbors, four.tetNeighbors);
+  EXPECT_EQ(one.tetFlags, four.tetFlags);
+}
