@@ -415,7 +415,8 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
   st.tetVolume = compensatedTetVolume(result);
   if (options.verify)
   {
-    BoundaryCheckReport br = checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume);
+    BoundaryCheckReport br = checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume,
+                                                     nullptr, options.threads);
     const bool boundaryOk =
       options.regionRule == RegionRule::EvenOdd ? br.boundaryEqualsInput() : br.inputTrianglesNotFaces == 0;
     if (!br.meshValid() || !boundaryOk || (options.checkSurface && br.relativeVolumeError > 1e-9))
