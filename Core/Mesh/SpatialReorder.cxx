@@ -4,7 +4,6 @@
 #include "SpatialSort.h"
 
 #include <algorithm>
-#include <functional>
 #include <numeric>
 
 namespace volgrid
@@ -77,8 +76,9 @@ void permute(TetMesh& mesh, const SpatialRenumbering& r, int threads)
   std::vector<double>().swap(points);
   const size_t live = static_cast<size_t>(mesh.numTets());
   const int64_t slots = mesh.tetCapacity();
-  // For each live slot t: its new slot n = tetOldToNew[t].
-  auto overLiveSlots = [&](const std::function<void(size_t t, size_t n)>& body)
+  // body(t, n) for each live slot t and its new slot n = tetOldToNew[t] (a template: no call through a
+  // std::function per slot).
+  auto overLiveSlots = [&](const auto& body)
   {
     parallelFor(threads, slots, kMinPerThread,
                 [&](int, int64_t begin, int64_t end)
