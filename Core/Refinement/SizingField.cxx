@@ -303,41 +303,68 @@ std::vector<double> pointDistributionFunction(const double* points, int32_t numP
   return sum;
 }
 
+namespace
+{
+// The vertex adjacency of the finite tets' edges, as CSR: the neighbours of v are adj[start[v], start[v + 1]),
+// each once. Each tet's six edges are bucketed under their lower vertex (a counting pass, no global sort),
+// each bucket made unique, then mirrored under the upper vertex.
+void edgeAdjacency(const TetMesh& mesh, std::vector<int32_t>& start, std::vector<int32_t>& adj)
+{
+  const int32_t nv = mesh.numVertices();
+  std::vector<int32_t> upStart(static_cast<size_t>(nv) + 1, 0);
+  auto forEachEdge = [&](auto&& f)
+  {
+    mesh.forEachFiniteTet(
+      [&](int32_t t)
+      {
+        const int32_t* v = mesh.vertices(t);
+        for (int i = 0; i < 4; ++i)
+          for (int j = i + 1; j < 4; ++j)
+            f(std::min(v[i], v[j]), std::max(v[i], v[j]));
+      });
+  };
+  forEachEdge([&](int32_t a, int32_t) { ++upStart[a + 1]; });
+  for (int32_t v = 0; v < nv; ++v)
+    upStart[v + 1] += upStart[v];
+  std::vector<int32_t> up(static_cast<size_t>(upStart[nv])), fill(upStart.begin(), upStart.end() - 1);
+  forEachEdge([&](int32_t a, int32_t b) { up[fill[a]++] = b; });
+  // Unique upper neighbours of each vertex, compacted in place; then the degrees of both ends.
+  start.assign(static_cast<size_t>(nv) + 1, 0);
+  std::vector<int32_t> upEnd(static_cast<size_t>(nv));
+  for (int32_t v = 0, kept = 0; v < nv; ++v)
+  {
+    const auto first = up.begin() + upStart[v], last = up.begin() + upStart[v + 1];
+    std::sort(first, last);
+    const auto uniqueEnd = std::unique(first, last);
+    upStart[v] = kept; // bucket v now starts where the kept entries end
+    for (auto it = first; it != uniqueEnd; ++it)
+    {
+      up[static_cast<size_t>(kept++)] = *it;
+      ++start[v + 1];
+      ++start[*it + 1];
+    }
+    upEnd[v] = kept;
+  }
+  for (int32_t v = 0; v < nv; ++v)
+    start[v + 1] += start[v];
+  adj.assign(static_cast<size_t>(start[nv]), 0);
+  std::vector<int32_t> pos(start.begin(), start.end() - 1);
+  for (int32_t v = 0; v < nv; ++v)
+    for (int32_t k = upStart[v]; k < upEnd[v]; ++k)
+    {
+      adj[static_cast<size_t>(pos[v]++)] = up[static_cast<size_t>(k)];
+      adj[static_cast<size_t>(pos[up[static_cast<size_t>(k)]]++)] = v;
+    }
+}
+} // namespace
+
 void limitGradation(const TetMesh& mesh, double slope, std::vector<double>& sizes)
 {
   const int32_t nv = mesh.numVertices();
   if (!(slope >= 0) || sizes.size() < static_cast<size_t>(nv))
     return;
-  // Edge lists (CSR) from the finite tets.
-  std::vector<std::pair<int32_t, int32_t>> edges;
-  edges.reserve(7 * static_cast<size_t>(mesh.numFiniteTets()));
-  mesh.forEachFiniteTet(
-    [&](int32_t t)
-    {
-      const int32_t* v = mesh.vertices(t);
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-        {
-          const int32_t a = std::min(v[i], v[j]), b = std::max(v[i], v[j]);
-          edges.emplace_back(a, b);
-        }
-    });
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::vector<int32_t> start(static_cast<size_t>(nv) + 1, 0), adj(2 * edges.size());
-  for (const auto& e : edges)
-  {
-    ++start[e.first + 1];
-    ++start[e.second + 1];
-  }
-  for (int32_t v = 0; v < nv; ++v)
-    start[v + 1] += start[v];
-  std::vector<int32_t> pos(start.begin(), start.end() - 1);
-  for (const auto& e : edges)
-  {
-    adj[pos[e.first]++] = e.second;
-    adj[pos[e.second]++] = e.first;
-  }
+  std::vector<int32_t> start, adj;
+  edgeAdjacency(mesh, start, adj);
   using Item = std::pair<double, int32_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
   for (int32_t v = 0; v < nv; ++v)

@@ -91,11 +91,12 @@ TEST(SizingField, InterpolatesBoundarySizesIntoTheVolume)
     EXPECT_NEAR(f.evaluate(s.point(i)), pdf[i], 1e-9 * pdf[i]);
 }
 
-TEST(SizingField, GradationBoundHoldsBetweenNeighbours)
+namespace
 {
-  // A very fine small sphere close inside a coarse sphere: the raw sizes jump, the graded ones not.
-  SurfaceMesh s = sphere(0.4, 0.02, 0.0);
-  s.append(sphere(1, 1.0));
+// The gradation limit on surface s: it lowers sizes only, until every background edge holds the bound,
+// and no further (a lowered node's size is reached from a neighbour along one edge).
+void expectGradedAlongEdges(const SurfaceMesh& s)
+{
   for (double g : { 1.2, 1.5, 1.8 })
   {
     SizingField raw, graded;
@@ -106,10 +107,38 @@ TEST(SizingField, GradationBoundHoldsBetweenNeighbours)
     o.gradation = g;
     ASSERT_TRUE(graded.build(s.points.data(), s.numberOfPoints(), s.triangles.data(), s.numberOfTriangles(), o).ok());
     EXPECT_LE(worstGradation(graded.nodes(), g - 1), 1e-12) << "gradation " << g;
-    // Grading only lowers sizes.
-    for (size_t i = 0; i < raw.nodes().values().size(); ++i)
-      EXPECT_LE(graded.nodes().values()[i], raw.nodes().values()[i] * (1 + 1e-15));
+    const std::vector<double>& hRaw = raw.nodes().values();
+    const std::vector<double>& h = graded.nodes().values();
+    for (size_t i = 0; i < hRaw.size(); ++i)
+      EXPECT_LE(h[i], hRaw[i] * (1 + 1e-15));
+    const TetMesh& m = graded.nodes().mesh();
+    std::vector<uint8_t> tight(h.size(), 0);
+    m.forEachFiniteTet(
+      [&](int32_t t)
+      {
+        const int32_t* v = m.vertices(t);
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            if (i != j && std::abs(h[v[i]] + (g - 1) * dist(m.point(v[i]), m.point(v[j])) - h[v[j]]) <= 1e-12 * h[v[j]])
+              tight[v[j]] = 1;
+      });
+    int64_t loose = 0;
+    for (size_t i = 0; i < h.size(); ++i)
+      loose += h[i] < hRaw[i] * (1 - 1e-12) && !tight[i];
+    EXPECT_EQ(loose, 0) << "gradation " << g;
   }
+}
+} // namespace
+
+TEST(SizingField, GradationBoundHoldsBetweenNeighbours)
+{
+  // A very fine small sphere close inside a coarse sphere: the raw sizes jump, the graded ones not. Both
+  // orders of the spheres' points: the grading runs along the edges both ways.
+  SurfaceMesh fineFirst = sphere(0.4, 0.02, 0.0), coarseFirst = sphere(1, 1.0);
+  fineFirst.append(sphere(1, 1.0));
+  coarseFirst.append(sphere(0.4, 0.02, 0.0));
+  expectGradedAlongEdges(fineFirst);
+  expectGradedAlongEdges(coarseFirst);
 }
 
 TEST(SizingField, CapsAndUserFunction)
