@@ -2,7 +2,9 @@
 #pragma once
 
 #include "OptionTable.h"
+#include "Progress.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -48,6 +50,33 @@ public:
 
 private:
   std::chrono::steady_clock::time_point start_;
+};
+
+// A Progress that never stops the run and measures how long a user's stop would wait: the longest time
+// between two questions (cancelled()), from construction to finish(). The filter's abort is honoured at
+// the next question, so this is the worst delay of an abort in the run (--json: longest_abort_gap_seconds).
+class AbortGapWatch final : public Progress
+{
+public:
+  void report(double, const char*) override {}
+  bool cancelled() override
+  {
+    lap();
+    return false;
+  }
+  // The gap from the last question to the end of the run.
+  void finish() { lap(); }
+  double longestGapSeconds() const { return longest_; }
+
+private:
+  void lap()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    longest_ = std::max(longest_, std::chrono::duration<double>(now - last_).count());
+    last_ = now;
+  }
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+  double longest_ = 0;
 };
 } // namespace cli
 } // namespace volgrid

@@ -343,9 +343,11 @@ bool writeOutputs(const Arguments& args, volgrid::MeshFormat format, bool vtkOut
 }
 
 // The run's summary on stdout (--json: one JSON line): counts, Steiner points, the output's dihedral
-// angles and size ratios, the boundary and volume check, the stage times.
+// angles and size ratios, the boundary and volume check, the stage times, the longest wait an abort would
+// have had (AbortGapWatch).
 void printReport(const Arguments& args, const volgrid::MesherStatistics& s, const OutputSummary& output,
-                 const volgrid::BoundaryCheckReport& boundary, bool boundaryPreserved, double seconds)
+                 const volgrid::BoundaryCheckReport& boundary, bool boundaryPreserved, double seconds,
+                 double longestAbortGap)
 {
   const volgrid::DihedralSummary& dihedral = output.dihedral;
   const volgrid::SizeRatioSummary& ratio = output.ratio;
@@ -366,7 +368,7 @@ void printReport(const Arguments& args, const volgrid::MesherStatistics& s, cons
       "%.6f, "
       "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
       "\"field_points\": %.6f, \"optimization\": %.6f}, "
-      "\"seconds\": %.6f, "
+      "\"longest_abort_gap_seconds\": %.3f, \"seconds\": %.6f, "
       "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
       static_cast<long long>(s.mergedPoints), static_cast<long long>(s.inputTriangles),
@@ -382,7 +384,8 @@ void printReport(const Arguments& args, const volgrid::MesherStatistics& s, cons
       static_cast<long long>(s.improvement.severeFacesBefore), static_cast<long long>(s.improvement.orthogonalityMoves),
       json(s.improvement.coarseBoundaryFloor, "%.6g").c_str(), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
       s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
-      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, seconds, volgrid::cli::peakResidentMiB());
+      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, longestAbortGap, seconds,
+      volgrid::cli::peakResidentMiB());
   }
   else
   {
@@ -471,7 +474,9 @@ int runMeshCommand(int argc, char** argv)
   }
   volgrid::MesherResult result;
   const volgrid::cli::Stopwatch watch;
-  const volgrid::Status status = volgrid::meshSurface(surface, args.options, result);
+  volgrid::cli::AbortGapWatch abortGaps;
+  const volgrid::Status status = volgrid::meshSurface(surface, args.options, result, &abortGaps);
+  abortGaps.finish();
   const double seconds = watch.seconds();
   if (!status.ok())
   {
@@ -502,7 +507,7 @@ int runMeshCommand(int argc, char** argv)
   if (!checkFailed && !writeOutputs(args, format, vtkOutput, exportRequest, result, std::move(solverMesh)))
     return 1;
 
-  printReport(args, result.stats, output, boundary, boundaryPreserved, seconds);
+  printReport(args, result.stats, output, boundary, boundaryPreserved, seconds, abortGaps.longestGapSeconds());
   if (checkFailed)
   {
     std::fprintf(stderr, "volgrid mesh: check failed (nothing written): %s\n", boundary.summary().c_str());

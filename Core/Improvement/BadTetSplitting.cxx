@@ -278,7 +278,10 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
   ParallelScan parallelScan(mesh, constraints, resolveThreads(request.threads));
   std::optional<TetEditor> ownEditor; // builds its vertex map
   if (request.editor)
-    request.editor->refreshVertexMap({});
+  {
+    if (!request.editor->refreshVertexMap({}, request.progress))
+      return 0; // cancelled: the caller asks again
+  }
   else
     ownEditor.emplace(mesh, constraints, labels);
   TetEditor& editor = ownEditor ? *ownEditor : *request.editor;

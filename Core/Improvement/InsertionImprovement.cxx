@@ -656,6 +656,18 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     for (size_t v = 0; v < std::min(lock.size(), locked->size()); ++v)
       lock[v] |= (*locked)[v];
   int64_t kept = 0;
+  // The editor's map, the locks and the first list of low tets are each a sweep of the mesh (a tenth of a
+  // second at 5M tets): asked between them.
+  auto stop = [&]
+  {
+    if (!progress || !progress->cancelled())
+      return false;
+    rep.cancelled = true;
+    rep.kept = kept;
+    return true;
+  };
+  if (stop())
+    return 0;
   double floor = -1; // the mesh's smallest dihedral angle, once a round runs
   std::vector<std::pair<double, int32_t>> worst;
   std::vector<std::array<int32_t, 4>> quads;
@@ -673,7 +685,11 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     // worst tet improves at least every second round (two equal worst tets need a round each when the first point
     // pushes into the second's).
     if (!low)
+    {
       low = std::make_unique<LowTets>(mesh, lowLimit, options.threads);
+      if (stop())
+        return kept;
+    }
     const double q0 = low->worstQuality();
     stale = q0 > previousWorst ? 0 : stale + 1;
     if (!(q0 > 0) || sineQualityToDegrees(q0) >= 60 || stale >= 2)
@@ -718,12 +734,8 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
       std::sort(key.begin(), key.end());
       if (key != quads[k])
         continue; // replaced by an earlier attempt
-      if (progress && progress->cancelled())
-      {
-        rep.cancelled = true;
-        rep.kept = kept;
+      if (stop())
         return kept;
-      }
       Attempt attempt(editor, scorers, lock, floor);
       ++rep.attempts;
       if (attempt.run(t))

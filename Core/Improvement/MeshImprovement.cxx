@@ -72,6 +72,43 @@ std::vector<uint8_t> usedVertices(const TetMesh& mesh)
   return used;
 }
 
+// Tets below 10 degrees whose four vertices lie on constrained faces: their shape is set by the boundary
+// triangles (no flip or move can change it without touching the boundary).
+int64_t countBoundaryForcedBelow10(TetMesh& mesh, const FaceConstraints& fc)
+{
+  TetEditor probe(mesh, &fc, nullptr); // builds its vertex map
+  const std::vector<uint8_t> lock = probe.lockedVertices();
+  const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
+  int64_t n = 0;
+  mesh.forEachTet(
+    [&](int32_t t)
+    {
+      const int32_t* v = mesh.vertices(t);
+      if (lock[v[0]] && lock[v[1]] && lock[v[2]] && lock[v[3]] &&
+          tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q10)
+        ++n;
+    });
+  return n;
+}
+
+// Points removed by vertex collapses: recovery's (below nv0), field points (below nvField), split points.
+void countRemovedPoints(const TetMesh& mesh, const std::vector<uint8_t>& usedBefore, int32_t nv0, int32_t nvField,
+                        ImprovementStatistics& stats)
+{
+  const std::vector<uint8_t> usedAfter = usedVertices(mesh);
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+  {
+    const bool before = v < nvField ? usedBefore[v] != 0 : true; // split points: inserted in use
+    if (!before || usedAfter[v])
+      continue;
+    ++stats.removedPoints;
+    if (v >= nvField)
+      --stats.splitPoints;
+    else if (v >= nv0)
+      --stats.fieldPoints;
+  }
+}
+
 } // namespace
 
 ImprovementOptions::ImprovementOptions()
@@ -176,7 +213,9 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       {
         if (progress && progress->cancelled()) // each whole-mesh step in between is a few tenths of a second at 10M
           return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
-        const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint, options.threads);
+        const SpatialRenumbering renumbering = reorderSpatially(mesh, firstFieldPoint, options.threads, progress);
+        if (progress && progress->cancelled())
+          return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
         renumberTetArray(renumbering, tetRegion, -1);
         renumberVertexArray(renumbering, clusterLock, uint8_t{ 0 });
       }
@@ -214,43 +253,19 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     }
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
-    stats.after = summarizeDihedrals(mesh, options.threads);
+    stats.after = summarizeDihedrals(mesh, options.threads, progress);
     stats.secondsOptimization = since(t0);
   }
   else
-    stats.after = summarizeDihedrals(mesh, options.threads);
+    stats.after = summarizeDihedrals(mesh, options.threads, progress);
+  // Each whole-mesh step from here on is a tenth of a second or more at 5M tets: asked between them.
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
 
-  // Tets below 10 degrees whose four vertices lie on constrained faces: their shape is set by the
-  // boundary triangles (no flip or move can change it without touching the boundary).
-  {
-    TetEditor probe(mesh, &fc, nullptr); // builds its vertex map
-    const std::vector<uint8_t> lock = probe.lockedVertices();
-    const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
-    mesh.forEachTet(
-      [&](int32_t t)
-      {
-        const int32_t* v = mesh.vertices(t);
-        if (lock[v[0]] && lock[v[1]] && lock[v[2]] && lock[v[3]] &&
-            tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q10)
-          ++stats.boundaryForcedBelow10;
-      });
-  }
-
-  // Points removed by vertex collapses: recovery's (below nv0), field points (below nvField), split points.
-  {
-    const std::vector<uint8_t> usedAfter = usedVertices(mesh);
-    for (int32_t v = 0; v < mesh.numVertices(); ++v)
-    {
-      const bool before = v < nvField ? usedBefore[v] != 0 : true; // split points: inserted in use
-      if (!before || usedAfter[v])
-        continue;
-      ++stats.removedPoints;
-      if (v >= nvField)
-        --stats.splitPoints;
-      else if (v >= nv0)
-        --stats.fieldPoints;
-    }
-  }
+  stats.boundaryForcedBelow10 += countBoundaryForcedBelow10(mesh, fc);
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+  countRemovedPoints(mesh, usedBefore, nv0, nvField, stats);
   if (mesh.numVertices() > nv0)
     kinds.resize(static_cast<size_t>(mesh.numVertices()), VertexKind::SteinerInterior);
   if (tetRegion.size() < static_cast<size_t>(mesh.tetCapacity()))

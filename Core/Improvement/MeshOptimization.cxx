@@ -72,14 +72,14 @@ void minMaxDihedral(const double* p0, const double* p1, const double* p2, const 
 }
 } // namespace
 
-DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads)
+DihedralSummary summarizeDihedrals(const TetMesh& mesh, int threads, Progress* progress)
 {
   return summarizeDihedrals(mesh.points.data(), mesh.tetVertices.data(), mesh.tetFlags.data(), mesh.tetCapacity(),
-                            threads);
+                            threads, progress);
 }
 
 DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVertices, const uint8_t* tetFlags, int64_t n,
-                                   int threads)
+                                   int threads, Progress* progress)
 {
   // Runs over the whole mesh several times per optimisation and insertion round (a tenth of a second per
   // 800,000 tets): the tet slots are split between threads, the partial summaries merged (min, max and
@@ -105,19 +105,28 @@ DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVerti
       s.inverted += predicates::orient3dInline(a, b, c, d) <= 0;
     }
   };
-  constexpr int64_t kMinPerThread = 25000;
-  std::vector<DihedralSummary> parts(static_cast<size_t>(parallelRanges(threads, n, kMinPerThread)));
-  parallelFor(threads, n, kMinPerThread,
-              [&](int k, int64_t begin, int64_t end) { summarize(begin, end, parts[static_cast<size_t>(k)]); });
+  constexpr int64_t kMinPerThread = 25000, kSlotsPerQuestion = int64_t{ 1 } << 20;
+  const int64_t block = progress ? kSlotsPerQuestion : std::max<int64_t>(n, 1);
   DihedralSummary s;
-  for (const DihedralSummary& p : parts)
+  std::vector<DihedralSummary> parts;
+  for (int64_t first = 0; first < n; first += block)
   {
-    s.tets += p.tets;
-    s.minDihedral = std::min(s.minDihedral, p.minDihedral);
-    s.maxDihedral = std::max(s.maxDihedral, p.maxDihedral);
-    s.below10 += p.below10;
-    s.above170 += p.above170;
-    s.inverted += p.inverted;
+    if (first > 0 && progress->cancelled())
+      break;
+    const int64_t count = std::min(block, n - first);
+    parts.assign(static_cast<size_t>(parallelRanges(threads, count, kMinPerThread)), DihedralSummary());
+    parallelFor(threads, count, kMinPerThread,
+                [&](int k, int64_t begin, int64_t end)
+                { summarize(first + begin, first + end, parts[static_cast<size_t>(k)]); });
+    for (const DihedralSummary& p : parts) // min, max and counts: the same for any split
+    {
+      s.tets += p.tets;
+      s.minDihedral = std::min(s.minDihedral, p.minDihedral);
+      s.maxDihedral = std::max(s.maxDihedral, p.maxDihedral);
+      s.below10 += p.below10;
+      s.above170 += p.above170;
+      s.inverted += p.inverted;
+    }
   }
   return s;
 }
@@ -279,10 +288,12 @@ double smallestDihedral(const TetMesh& mesh, const std::vector<std::pair<double,
 
 // The smoothing step of a pass on all threads (ColouredSmoothing.h): the unlocked vertices of `verts`
 // not known to be unmoved, then those that a move of the first sweep touched (as the one-by-one order
-// retries a vertex after a neighbour moved). moved(v) is called for each move, in vertex order.
-template<typename Moved>
+// retries a vertex after a neighbour moved). moved(v) is called for each move, in vertex order. stop() is
+// asked before each sweep (each up to a tenth of a second in a first pass at 5M tets).
+template<typename Moved, typename Stop>
 void smoothInColourClasses(TetEditor& editor, const std::vector<int32_t>& verts, const std::vector<uint8_t>& lock,
-                           std::vector<uint8_t>& unmoved, const OptimizationOptions& options, Moved&& moved)
+                           std::vector<uint8_t>& unmoved, const OptimizationOptions& options, Moved&& moved,
+                           Stop&& stop)
 {
   std::vector<int32_t> sweep, skipped;
   std::vector<SmoothMove> moves;
@@ -291,6 +302,8 @@ void smoothInColourClasses(TetEditor& editor, const std::vector<int32_t>& verts,
       (unmoved[v] ? skipped : sweep).push_back(v);
   for (int round = 0; round < 2; ++round)
   {
+    if (stop())
+      return;
     if (round == 1)
     {
       sweep.clear();
@@ -456,7 +469,7 @@ struct OptimizationPasses
       changed(star);
     };
     if (mesh.numTets() >= options.largeMeshTets)
-      smoothInColourClasses(editor, verts, lock, unmoved, options, moved);
+      smoothInColourClasses(editor, verts, lock, unmoved, options, moved, [&] { return askedToStop(1023); });
     else
       for (size_t k = 0; k < verts.size() && !askedToStop(k); ++k)
       {
@@ -520,10 +533,16 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     report.before = summarizeDihedrals(mesh, options.threads);
   std::optional<TetEditor> ownEditor;
   if (worklist && worklist->editor)
-    worklist->editor->refreshVertexMap({});
+  {
+    if (!worklist->editor->refreshVertexMap({}, progress))
+      return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
+  }
   else
     ownEditor.emplace(mesh, constraints, labels);
   TetEditor& editor = ownEditor ? *ownEditor : *worklist->editor;
+  // The map's refresh and the sweep below each take a tenth of a second or more at 5M tets.
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
   std::vector<uint8_t> lock =
     worklist && worklist->constrainedLocks ? *worklist->constrainedLocks : editor.lockedVertices();
   lock.resize(static_cast<size_t>(mesh.numVertices()), 0);
@@ -542,6 +561,8 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     collectSineBelow(mesh, qT, options.threads, p.bad);
     std::sort(p.bad.begin(), p.bad.end());
     p.unmoved.clear();
+    if (progress && progress->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
   }
   p.unmoved.resize(static_cast<size_t>(mesh.numVertices()), 0);
   p.uncollapsible.assign(options.vertexRemoval ? p.unmoved.size() : 0, 0);
@@ -563,10 +584,13 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
     p.flipBadTets(qT);
     if (options.smoothing && !p.stopped)
       p.smoothBadTets(qT);
-    if (p.stopped)
+    // Coloured smoothing and the collapses each take up to 0.2 s in a first pass at 5M tets.
+    if (p.stopped || (progress && progress->cancelled()))
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
     if (options.vertexRemoval)
       p.collapseWorst();
+    if (progress && progress->cancelled())
+      return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
     report.passes = pass + 1;
     p.collectBelow(qT, p.bad);
     if (p.changes == 0)

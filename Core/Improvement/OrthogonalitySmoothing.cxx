@@ -219,11 +219,15 @@ Status smoothNonOrthogonalFaces(TetMesh& mesh, const FaceConstraints* constraint
   OrthogonalitySmoothingReport local;
   OrthogonalitySmoothingReport& report = reportOut ? *reportOut : local;
   const double cosLimit = std::cos(options.severeDegrees * kDegree);
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
   TetEditor editor(mesh, constraints, nullptr); // builds its vertex map
   std::vector<uint8_t> lock = editor.lockedVertices();
   if (locked)
     for (size_t v = 0; v < std::min(lock.size(), locked->size()); ++v)
       lock[v] |= (*locked)[v];
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
   auto severe = [&](int32_t t, int i) { return mesh.neighbor(t, i) >= 0 && faceCosine(mesh, t, i) < cosLimit; };
   // The tets with a severe face, in slot order (a list per range of slots, joined in order); then the stars
   // of the moved vertices.
@@ -260,6 +264,10 @@ Status smoothNonOrthogonalFaces(TetMesh& mesh, const FaceConstraints* constraint
     }
   }
   report.severeBefore = count;
+  report.severeAfter = count;
+  // The editor's map, the locks and the sweep above are each about a tenth of a second at 5M tets.
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
   StarSearch search(mesh, editor, cosLimit, std::sin(options.targetDegrees * kDegree));
   Vec at, bestAt;
   // Vertices whose last search found nothing, until a move nearby.

@@ -33,10 +33,10 @@ void MeshNavigator::rebuildVertexMap()
     });
 }
 
-void MeshNavigator::refreshVertexMap(const std::vector<int32_t>& hint)
+bool MeshNavigator::refreshVertexMap(const std::vector<int32_t>& hint, Progress* progress)
 {
   if (map_ == VertexMap::None)
-    return;
+    return true;
   const size_t nv = static_cast<size_t>(mesh.numVertices());
   vertTet_.resize(nv, -1); // as a rebuild: no entry past the last point
   auto holds = [&](int32_t t, int32_t v)
@@ -60,28 +60,45 @@ void MeshNavigator::refreshVertexMap(const std::vector<int32_t>& hint)
   // Each entry from its own star. After the first quality pass on a 5M-tet mesh these are the stars of
   // about 500,000 vertices (0.4 s on one thread): on several threads they are walked without the shared
   // stamps (read only, in any order; the same entries).
-  const int ranges = parallelRanges(refreshThreads, static_cast<int64_t>(written_.size()), kMinRefreshesPerThread);
-  if (ranges <= 1)
-    for (int32_t v : written_)
+  const size_t block = progress ? kRefreshesPerQuestion : std::max<size_t>(written_.size(), 1);
+  for (size_t first = 0; first < written_.size(); first += block)
+  {
+    if (first > 0 && progress->cancelled())
     {
+      written_.erase(written_.begin(), written_.begin() + static_cast<std::ptrdiff_t>(first));
+      return false;
+    }
+    refreshStars(first, std::min(written_.size(), first + block));
+  }
+  written_.clear();
+  return true;
+}
+
+void MeshNavigator::refreshStars(size_t begin, size_t end)
+{
+  const size_t nv = static_cast<size_t>(mesh.numVertices());
+  const int ranges = parallelRanges(refreshThreads, static_cast<int64_t>(end - begin), kMinRefreshesPerThread);
+  if (ranges <= 1)
+    for (size_t k = begin; k < end; ++k)
+    {
+      const int32_t v = written_[k];
       if (static_cast<size_t>(v) >= nv || vertTet_[static_cast<size_t>(v)] < 0)
         continue;
       star(v, findScratch_); // the scratch of findEdge/findFace, which this does not call
       vertTet_[static_cast<size_t>(v)] = *std::max_element(findScratch_.begin(), findScratch_.end());
     }
   else
-    parallelFor(ranges, static_cast<int64_t>(written_.size()), kMinRefreshesPerThread,
-                [&](int, int64_t begin, int64_t end)
+    parallelFor(ranges, static_cast<int64_t>(end - begin), kMinRefreshesPerThread,
+                [&](int, int64_t from, int64_t to)
                 {
                   std::vector<int32_t> starTets;
-                  for (int64_t k = begin; k < end; ++k)
+                  for (int64_t k = from; k < to; ++k)
                   {
-                    const size_t v = static_cast<size_t>(written_[static_cast<size_t>(k)]);
+                    const size_t v = static_cast<size_t>(written_[begin + static_cast<size_t>(k)]);
                     if (v < nv && vertTet_[v] >= 0)
                       vertTet_[v] = highestSlotOfStar(static_cast<int32_t>(v), vertTet_[v], starTets);
                   }
                 });
-  written_.clear();
 }
 
 int32_t MeshNavigator::highestSlotOfStar(int32_t v, int32_t t0, std::vector<int32_t>& starTets) const

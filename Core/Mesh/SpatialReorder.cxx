@@ -114,13 +114,18 @@ void permute(TetMesh& mesh, const SpatialRenumbering& r, int threads)
 }
 } // namespace
 
-SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex, int threads)
+SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex, int threads, Progress* progress)
 {
   SpatialRenumbering r;
   if (mesh.numGhostTets() > 0 || mesh.numTets() == 0)
     return r;
+  auto stop = [&] { return progress && progress->cancelled(); };
   r.vertexOldToNew = vertexOrder(mesh, firstVertex);
+  if (stop())
+    return SpatialRenumbering();
   r.tetOldToNew = tetOrder(mesh, r.vertexOldToNew, threads);
+  if (stop())
+    return SpatialRenumbering();
   permute(mesh, r, threads);
   mesh.restoreBookkeeping({ -1, 0, 0 }); // compact: no free slot, no ghost
   return r;

@@ -260,7 +260,7 @@ Status recoverDomain(const SurfaceMesh& surf, const MesherOptions& options, Prog
 // Step 6: the domain's tets and the points they use into `result` (input points first, with their ids),
 // the Forced flags, and the input triangles that are faces of the mesh with their patch.
 Status emitResult(const TetMesh& mesh, const SurfaceMesh& surf, const std::vector<VertexKind>& kinds,
-                  const std::vector<int32_t>& tetRegion, MesherResult& result)
+                  const std::vector<int32_t>& tetRegion, MesherResult& result, Progress* pr)
 {
   MesherStatistics& st = result.stats;
   const int32_t N = surf.numberOfPoints();
@@ -300,7 +300,13 @@ Status emitResult(const TetMesh& mesh, const SurfaceMesh& surf, const std::vecto
         result.tets.push_back(outId[mesh.vertex(t, i)]);
       result.tetRegion.push_back(tetRegion[t]);
     });
+  // Each step here is about a tenth of a second at 10M tets.
+  const Status cancelled = Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+  if (pr->cancelled())
+    return cancelled;
   markForcedTets(result);
+  if (pr->cancelled())
+    return cancelled;
   // Boundary triangles: input triangles that are faces of the mesh (all of them unless keep-all
   // interfaces... which are faces too), found by one sweep over the tets.
   BoundaryCensus inputFaces;
@@ -404,15 +410,31 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     return s;
   st.secondsImprovement = since(t0);
 
-  // 6. Output.
-  s = emitResult(mesh, surf, kinds, regions.tetRegion, result);
+  // 6. Output (a few tenths of a second at 5M tets: the user is asked between its steps).
+  auto cancelled = [&]
+  {
+    if (!pr->cancelled())
+      return false;
+    result = MesherResult();
+    return true;
+  };
+  if (pr->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+  s = emitResult(mesh, surf, kinds, regions.tetRegion, result, pr);
   if (!s.ok())
+  {
+    result = MesherResult();
     return s;
+  }
+  if (cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
   st.steinerInterior -= st.improvement.fieldPoints + st.improvement.clusterPoints + st.improvement.splitPoints;
   st.points = static_cast<int64_t>(result.points.size() / 3);
   st.tets = static_cast<int64_t>(result.tets.size() / 4);
   st.enclosedVolume = enclosedVolume(surf.points, surf.triangles, result.triangleShell, shellDepth, options.regionRule);
   st.tetVolume = compensatedTetVolume(result);
+  if (cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
   if (options.verify)
   {
     BoundaryCheckReport br = checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume,

@@ -314,6 +314,9 @@ Status FieldPointRegions::insertPass(const FieldPointPass& pass, int regions, Pr
                 for (int64_t k = from; k < to; ++k)
                   todoRegion[static_cast<size_t>(k)] = tetRegion(mesh, vertexRegion, todo[static_cast<size_t>(k)]);
               });
+  // The boxes and the two labellings above take a few tenths of a second at 10M tets; nothing is changed yet.
+  if (progress && progress->cancelled())
+    return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
   for (size_t k = 0; k < todo.size(); ++k)
     (todoRegion[k] == kSpansRegions ? outcome.deferred : works[todoRegion[k]].todo).push_back(k);
   for (RegionWork& w : works)

@@ -176,6 +176,8 @@ Status insertFieldPoints(TetMesh& mesh, const SizingField& sizing, const FieldPo
   int64_t total = 0;
   for (int pass = 1; pass <= options.maxPasses; ++pass)
   {
+    if (progress && progress->cancelled()) // the next pass's list, its sort and its regions' set-up follow
+      return Status::failure(ErrorKind::Cancelled, "Field point creation was cancelled.");
     // Many tets in the first pass (largeMeshTets): along the Hilbert curve, so that consecutive insertions work
     // in the same part of the mesh, whose tets are still in the caches (slot order jumps across the domain).
     // The later passes keep that order (tetsBornIn).

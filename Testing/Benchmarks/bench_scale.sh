@@ -16,7 +16,8 @@
 # boundary (volgrid_bench_mesh_stats), the size ratio between face neighbours (99th percentile and
 # maximum; Core/SizeRatio.h), checkMesh's maximum non-orthogonality and its faces above 70 deg
 # (Core/CfdQuality.h, the same figures as OpenFOAM's checkMesh), and for VolGrid the share of tets it reports as forced by the surface
-# (forced_tets / tets: the cell array Forced of its output).
+# (forced_tets / tets: the cell array Forced of its output) and the longest time between two of its checks
+# for a stop (longest_abort_gap_seconds: the longest a user's abort would wait).
 #
 #   Testing/Benchmarks/bench_scale.sh [BUILD_DIR] [--cases m6-default,sis,...] [--timeout S]
 # Default: every case (hours on 2 cores: not part of `make test`). Output: a table in
@@ -136,7 +137,8 @@ def bench_volgrid(surface, cap, threads):
     d = json.loads(r.stdout.strip().splitlines()[-1])
     res = {"engine": name, "seconds": d["seconds"], "boundary_preserved": d["boundary_preserved"],
            "volume_relative_error": d["volume_relative_error"], "volume": d["volume"],
-           "forced_share": d.get("forced_tets", 0) / d["tets"] if d["tets"] else 0.0}
+           "forced_share": d.get("forced_tets", 0) / d["tets"] if d["tets"] else 0.0,
+           "abort_gap_seconds": d.get("longest_abort_gap_seconds")}
     return finish(res, mesh, wall, peak)
 
 def node_ele_to_vtk(stem, vtk):
@@ -246,7 +248,7 @@ COLS = [("engine", "%-18s"), ("tets", "%10s"), ("wall_seconds", "%9s"), ("tets_p
         ("share_below_10", "%9s"), ("interior_min_dihedral", "%8s"), ("interior_max_dihedral", "%8s"),
         ("interior_share_below_10", "%9s"), ("forced_share", "%9s"), ("size_ratio_p99", "%7s"),
         ("size_ratio_max", "%8s"), ("max_non_orthogonality", "%8s"),
-        ("severe_non_orthogonal_faces", "%7s")]
+        ("severe_non_orthogonal_faces", "%7s"), ("abort_gap_seconds", "%6s")]
 lines = ["| case | " + " | ".join(c for c, _ in COLS) + " |", "|" + " --- |" * (len(COLS) + 1)]
 for case in cases:
     if case not in CASES:

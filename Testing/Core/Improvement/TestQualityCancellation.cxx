@@ -51,7 +51,7 @@ TEST(QualityCancellation, InsertionRoundsStopBetweenAttempts)
   EXPECT_TRUE(none.cancelled);
   EXPECT_EQ(none.attempts, 0);
 
-  CancelFrom afterOne(2);
+  CancelFrom afterOne(4); // the set-up asks twice (after the locks, after the list of low tets), each attempt once
   InsertionImprovementReport one;
   improveWorstByInsertion(once, nullptr, nullptr, nullptr, InsertionImprovementOptions(), &one, &afterOne);
   EXPECT_TRUE(one.cancelled);
@@ -113,10 +113,12 @@ TEST(QualityCancellation, OptimisationStopsWithinAPass)
   OptimizationReport onePass, stopped;
   ASSERT_TRUE(optimizeMesh(full, nullptr, nullptr, nullptr, options, nullptr, &onePass).ok());
   ASSERT_GT(onePass.belowTargetBefore, 2048); // the pass has more than 1024 bad tets to go through
-  CancelFrom progress(2);                     // the pass's start asks first, its 1024th bad tet second
+  // The set-up asks twice (after the editor's map, after the sweep for the bad tets), the pass's start third,
+  // its 1024th bad tet fourth.
+  CancelFrom progress(4);
   const Status s = optimizeMesh(cancelled, nullptr, nullptr, nullptr, options, &progress, &stopped);
   EXPECT_EQ(s.kind, ErrorKind::Cancelled);
-  EXPECT_EQ(progress.questions, 2);
+  EXPECT_EQ(progress.questions, 4);
   EXPECT_GT(stopped.flips23 + stopped.edgeRemovals, 0);                                      // it had begun,
   EXPECT_LT(stopped.flips23 + stopped.edgeRemovals, onePass.flips23 + onePass.edgeRemovals); // not finished
   expectValid(cancelled);
