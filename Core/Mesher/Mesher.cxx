@@ -300,7 +300,7 @@ Status emitResult(const TetMesh& mesh, const SurfaceMesh& surf, const std::vecto
         result.tets.push_back(outId[mesh.vertex(t, i)]);
       result.tetRegion.push_back(tetRegion[t]);
     });
-  // Each step here is about a tenth of a second at 10M tets.
+  // Each step here is about a tenth of a second at 10M tets (the caller empties a cancelled result).
   const Status cancelled = Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
   if (pr->cancelled())
     return cancelled;
@@ -410,31 +410,29 @@ Status meshSurface(const SurfaceMesh& input, const MesherOptions& options, Meshe
     return s;
   st.secondsImprovement = since(t0);
 
-  // 6. Output (a few tenths of a second at 5M tets: the user is asked between its steps).
-  auto cancelled = [&]
-  {
-    if (!pr->cancelled())
-      return false;
-    result = MesherResult();
-    return true;
-  };
+  // 6. Output (a few tenths of a second at 5M tets: the user is asked between its steps; a result left
+  //    unfinished is emptied).
+  const Status cancelled = Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
   if (pr->cancelled())
-    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+    return cancelled;
   s = emitResult(mesh, surf, kinds, regions.tetRegion, result, pr);
+  if (s.ok() && pr->cancelled())
+    s = cancelled;
   if (!s.ok())
   {
     result = MesherResult();
     return s;
   }
-  if (cancelled())
-    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
   st.steinerInterior -= st.improvement.fieldPoints + st.improvement.clusterPoints + st.improvement.splitPoints;
   st.points = static_cast<int64_t>(result.points.size() / 3);
   st.tets = static_cast<int64_t>(result.tets.size() / 4);
   st.enclosedVolume = enclosedVolume(surf.points, surf.triangles, result.triangleShell, shellDepth, options.regionRule);
   st.tetVolume = compensatedTetVolume(result);
-  if (cancelled())
-    return Status::failure(ErrorKind::Cancelled, "Meshing was cancelled.");
+  if (pr->cancelled())
+  {
+    result = MesherResult();
+    return cancelled;
+  }
   if (options.verify)
   {
     BoundaryCheckReport br = checkBoundaryConformity(result.points, N, result.tets, surf.triangles, st.enclosedVolume,
