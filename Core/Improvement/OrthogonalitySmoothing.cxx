@@ -35,15 +35,7 @@ double orthogonalityCosine(const TetMesh& m, int32_t t, int i, const Vec& c1, co
 {
   int32_t f[3];
   m.faceVertices(t, i, f);
-  const double *a = m.point(f[0]), *b = m.point(f[1]), *c = m.point(f[2]);
-  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
-  const double d[3] = { c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2] };
-  const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  const double dd = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  if (!(nn > 0) || !(dd > 0))
-    return 0;
-  return std::abs(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / (nn * dd);
+  return quality::triangleLineCosine(m.point(f[0]), m.point(f[1]), m.point(f[2]), c1.data(), c2.data());
 }
 
 double faceCosine(const TetMesh& m, int32_t t, int i)

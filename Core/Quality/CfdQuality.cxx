@@ -133,6 +133,17 @@ double faceNonOrthogonality(const double owner[3], const double neighbour[3], co
   return std::acos(std::max(-1.0, std::min(1.0, cosine))) * kRadToDeg;
 }
 
+double triangleLineCosine(const double* a, const double* b, const double* c, const double c1[3], const double c2[3])
+{
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+  const double d[3] = { c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2] };
+  const double nn = std::sqrt(dot(n, n)), dd = std::sqrt(dot(d, d));
+  if (!(nn > 0) || !(dd > 0))
+    return 0;
+  return std::abs(dot(n, d)) / (nn * dd);
+}
+
 double internalFaceSkewness(const double* a, const double* b, const double* c, const double owner[3],
                             const double neighbour[3])
 {
@@ -212,7 +223,10 @@ class MixedGeometry
 {
 public:
   MixedGeometry(const std::vector<double>& points, const std::vector<int32_t>& tets, const MixedCellFaces& cells)
-    : points_(points), tets_(tets), cells_(cells), numLayer_(cells.numberOfCells() - static_cast<int64_t>(tets.size() / 4))
+    : points_(points)
+    , tets_(tets)
+    , cells_(cells)
+    , numLayer_(cells.numberOfCells() - static_cast<int64_t>(tets.size() / 4))
   {
   }
 

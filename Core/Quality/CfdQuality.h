@@ -49,6 +49,10 @@ struct CfdCellMetrics
 // Non-orthogonality in degrees of a face with area vector `area` between cells centred at `owner` and
 // `neighbour`.
 double faceNonOrthogonality(const double owner[3], const double neighbour[3], const double area[3]);
+// |cos| of the angle between the normal of triangle (a, b, c) and the line from c1 to c2: 1 when they are
+// parallel (an orthogonal face), under cos(kSevereNonOrthogonality) for a severe one, 0 when the triangle
+// or the line is degenerate.
+double triangleLineCosine(const double* a, const double* b, const double* c, const double c1[3], const double c2[3]);
 // Skewness of the triangle (a, b, c) between cell centres `owner` and `neighbour`.
 double internalFaceSkewness(const double* a, const double* b, const double* c, const double owner[3],
                             const double neighbour[3]);
