@@ -1,5 +1,6 @@
 #include "TetEditor.h"
 
+#include "CfdQuality.h"
 #include "Predicates.h"
 #include "PredicatesInline.h"
 
@@ -501,6 +502,101 @@ double TetEditor::growByQuality(int32_t v, int maxCavity, double mustBeat)
   }
   cavity_.release();
   return bestQ;
+}
+
+namespace
+{
+void tetCentroid(const TetMesh& m, const int32_t* w, double c[3])
+{
+  for (int k = 0; k < 3; ++k)
+    c[k] = (m.point(w[0])[k] + m.point(w[1])[k] + m.point(w[2])[k] + m.point(w[3])[k]) / 4;
+}
+
+// Whether the triangle (a, b, c) between cells centred at c1 and c2 is further from orthogonal than
+// severeCosine allows.
+bool severeFace(const double* a, const double* b, const double* c, const double* c1, const double* c2,
+                double severeCosine)
+{
+  return quality::triangleLineCosine(a, b, c, c1, c2) < severeCosine;
+}
+} // namespace
+
+void TetEditor::countBelowInLastCavity(int32_t v, double q, int& newBelow, int& oldBelow)
+{
+  auto quality = [&](const int32_t* w)
+  { return tetSineQuality(mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3])); };
+  oldBelow = 0;
+  for (int32_t t : bestCavity_)
+    oldBelow += quality(mesh.vertices(t)) < q;
+  cavity_.start(bestCavity_.data(), bestCavity_.size());
+  buildCone(v, nullptr);
+  cavity_.release();
+  newBelow = 0;
+  for (const auto& c : coneTets_.tets)
+    newBelow += quality(c.data()) < q;
+}
+
+int TetEditor::severeChangeOfLastCavity(int32_t v, double severeCosine)
+{
+  auto inCavity = [&](int32_t u) { return std::find(bestCavity_.begin(), bestCavity_.end(), u) != bestCavity_.end(); };
+  int before = 0;
+  for (int32_t t : bestCavity_)
+  {
+    double ct[3], cu[3];
+    tetCentroid(mesh, mesh.vertices(t), ct);
+    for (int i = 0; i < 4; ++i)
+    {
+      const int32_t u = mesh.neighbor(t, i);
+      if (u < 0 || (u < t && inCavity(u))) // a face between two cavity tets counts once
+        continue;
+      tetCentroid(mesh, mesh.vertices(u), cu);
+      int32_t f[3];
+      mesh.faceVertices(t, i, f);
+      before += severeFace(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), ct, cu, severeCosine);
+    }
+  }
+  // The cone: each tet's base is a cavity boundary face, towards the tet beyond; its three sides through v
+  // pair up at the cavity's boundary edges (the cavity is star-shaped from v, its boundary a sphere).
+  cavity_.start(bestCavity_.data(), bestCavity_.size());
+  buildCone(v, nullptr);
+  cavity_.release();
+  const size_t n = coneTets_.tets.size();
+  coneCentroids_.resize(n);
+  coneSides_.clear();
+  int after = 0;
+  for (size_t k = 0; k < n; ++k)
+  {
+    const std::array<int32_t, 4>& q = coneTets_.tets[k];
+    tetCentroid(mesh, q.data(), coneCentroids_[k].data());
+    int32_t base[3];
+    for (int j = 0, m = 0; j < 4; ++j)
+      if (j != coneTets_.apexAt[k])
+        base[m++] = q[static_cast<size_t>(j)];
+    const int32_t code = coneTets_.outerCode[k];
+    if (code >= 0)
+    {
+      double cu[3];
+      tetCentroid(mesh, mesh.vertices(code >> 2), cu);
+      after += severeFace(mesh.point(base[0]), mesh.point(base[1]), mesh.point(base[2]), coneCentroids_[k].data(), cu,
+                          severeCosine);
+    }
+    for (int e = 0; e < 3; ++e)
+    {
+      const int32_t a = std::min(base[e], base[(e + 1) % 3]), b = std::max(base[e], base[(e + 1) % 3]);
+      coneSides_.emplace_back((static_cast<int64_t>(a) << 32) | static_cast<uint32_t>(b), static_cast<int32_t>(k));
+    }
+  }
+  std::sort(coneSides_.begin(), coneSides_.end());
+  for (size_t i = 0; i + 1 < coneSides_.size(); ++i)
+    if (coneSides_[i].first == coneSides_[i + 1].first)
+    {
+      const auto a = static_cast<int32_t>(coneSides_[i].first >> 32);
+      const auto b = static_cast<int32_t>(coneSides_[i].first & 0xffffffff);
+      after += severeFace(mesh.point(v), mesh.point(a), mesh.point(b), coneCentroids_[coneSides_[i].second].data(),
+                          coneCentroids_[coneSides_[i + 1].second].data(), severeCosine);
+      ++i;
+    }
+  return after - before;
 }
 
 double TetEditor::qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,

@@ -151,6 +151,15 @@ public:
   double qualityInsertion(int32_t v, int32_t start, int32_t mustReplace, double* replacedQuality, bool commit,
                           std::vector<int32_t>* created = nullptr, int maxCavity = 24, double mustBeat = -3);
 
+  // After qualityInsertion(v, ..., commit = false) found a cavity (nothing edited since): how many of the
+  // tets it would create (newBelow) and of the tets it would replace (oldBelow) have a sine quality under q.
+  void countBelowInLastCavity(int32_t v, double q, int& newBelow, int& oldBelow);
+  // The same cavity: the interior faces whose centroid line and normal are further apart than severeCosine
+  // allows (|cos| under it: a solver's severely non-orthogonal faces), among the faces of the tets it would
+  // create less those among the faces of the tets it would replace. Both include the cavity's boundary
+  // faces, towards the tets beyond, so the difference is the mesh's change.
+  int severeChangeOfLastCavity(int32_t v, double severeCosine);
+
   uint64_t replacements = 0;
 
 private:
@@ -188,6 +197,9 @@ private:
   };
   std::vector<ConeFace> cone_;
   Cone coneTets_;
+  // severeChangeOfLastCavity()'s scratch: the cone's centroids and its side faces (base edge, cone tet).
+  std::vector<std::array<double, 3>> coneCentroids_;
+  std::vector<std::pair<int64_t, int32_t>> coneSides_;
 };
 
 } // namespace volgrid
