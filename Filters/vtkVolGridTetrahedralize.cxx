@@ -56,6 +56,7 @@ vtkVolGridTetrahedralize::vtkVolGridTetrahedralize()
   this->TargetMinDihedral = defaults.optimization.targetDegrees;
   this->MaxPasses = defaults.optimization.maxPasses;
   this->Smoothing = defaults.optimization.smoothing;
+  this->OrthogonalityFirst = defaults.orthogonalityFirst;
   const volgrid::LayerOptions layerDefaults;
   this->NumberOfLayers = layerDefaults.layers;
   this->FirstLayerHeight = layerDefaults.firstHeight;
@@ -293,6 +294,7 @@ volgrid::MesherOptions vtkVolGridTetrahedralize::MakeMesherOptions() const
   im.optimization.targetDegrees = this->TargetMinDihedral;
   im.optimization.maxPasses = this->MaxPasses;
   im.optimization.smoothing = this->Smoothing;
+  im.orthogonalityFirst = this->OrthogonalityFirst;
   return options;
 }
 
@@ -595,6 +597,7 @@ void vtkVolGridTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetMinDihedral: " << this->TargetMinDihedral << "\n";
   os << indent << "MaxPasses: " << this->MaxPasses << "\n";
   os << indent << "Smoothing: " << this->Smoothing << "\n";
+  os << indent << "OrthogonalityFirst: " << this->OrthogonalityFirst << "\n";
   os << indent << "NumberOfLayers: " << this->NumberOfLayers << "\n";
   os << indent << "FirstLayerHeight: " << this->FirstLayerHeight << "\n";
   os << indent << "LayerGrowthRatio: " << this->LayerGrowthRatio << "\n";

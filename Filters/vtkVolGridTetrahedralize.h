@@ -251,6 +251,17 @@ public:
 
   ///@{
   /**
+   * Quality for finite-volume solvers: the quality stage adds no face that checkMesh finds severely
+   * non-orthogonal (> 70 deg) and no tet under the target where it edits, except to fix tets under 2 deg
+   * (Core's OrthogonalityFirst.h): fewer severe faces, a smaller worst dihedral angle. Default off.
+   */
+  vtkSetMacro(OrthogonalityFirst, bool);
+  vtkGetMacro(OrthogonalityFirst, bool);
+  vtkBooleanMacro(OrthogonalityFirst, bool);
+  ///@}
+
+  ///@{
+  /**
    * Boundary layers: the number of prism layers grown from the wall patches (0, the default: none).
    * With layers, output 0 holds VTK_WEDGE cells in the layers (VTK_PYRAMID and VTK_TETRA where a column
    * collapsed onto the wall) and VTK_TETRA cells elsewhere (cell arrays LayerIndex, ThinnedReason, Region) and output 1
@@ -343,6 +354,7 @@ protected:
   double TargetMinDihedral = 0; // the default: the constructor, from Core
   int MaxPasses = 0;            // the default: the constructor, from Core
   bool Smoothing = true;
+  bool OrthogonalityFirst = false;
   int NumberOfLayers = 0;         // the default: the constructor, from Core
   double FirstLayerHeight = 0;    // the default: the constructor, from Core
   double LayerGrowthRatio = 0;    // the default: the constructor, from Core

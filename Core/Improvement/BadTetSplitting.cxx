@@ -174,6 +174,11 @@ struct PositionSearch
   int32_t nv;
   int32_t t;
   bool speculative;
+  // Positive: |cos| limit of a severely non-orthogonal face. Positions adding such faces score -3, or with
+  // preferOrthogonal (a nearly flat tet, which is split anyway) less the more they add: 3 (1 - 1 / (1 + n))
+  // for n faces, so that any position adding none beats one adding some.
+  double severeCosine = 0;
+  bool preferOrthogonal = false;
   double best = -3; // best score so far: positions that cannot beat it are pruned
   Point at{};
 
@@ -187,6 +192,23 @@ struct PositionSearch
       return -3.0;
     double replaced = 2;
     const double q = editor.qualityInsertion(nv, start, t, &replaced, false, nullptr, 24, best);
+    if (!(q > replaced || (speculative && q > 0)))
+      return -3.0;
+    if (!(severeCosine > 0))
+      return q;
+    const int added = editor.severeChangeOfLastCavity(nv, severeCosine);
+    if (added <= 0)
+      return q;
+    return preferOrthogonal ? q - 3.0 * (1.0 - 1.0 / (1.0 + added)) : -3.0;
+  }
+
+  // The quality the insertion at `at` gives when it counts (as score() without the penalty), else -3.
+  double rawQuality()
+  {
+    std::copy(at.begin(), at.end(), x);
+    const int32_t start = editor.locate(x, t);
+    double replaced = 2;
+    const double q = start < 0 ? -3 : editor.qualityInsertion(nv, start, t, &replaced, false);
     return q > replaced || (speculative && q > 0) ? q : -3.0;
   }
 
@@ -213,6 +235,17 @@ struct PositionSearch
   }
 };
 
+// Whether inserting nv (at its coordinates) in the quality-driven cavity from `start` holding t leaves more
+// tets under q than the cavity held.
+bool addsTetsUnder(TetEditor& editor, int32_t nv, int32_t start, int32_t t, double q)
+{
+  if (!(editor.qualityInsertion(nv, start, t, nullptr, false) > -3))
+    return false; // the insertion below fails the same way
+  int after = 0, before = 0;
+  editor.countBelowInLastCavity(nv, q, after, before);
+  return after > before;
+}
+
 // Candidate scoring on several threads. Each worker has an editor (stamps, cavity) and a vertex slot of
 // its own and only reads the mesh. The candidates are cut into contiguous ranges, one per worker; each
 // range keeps its first best, and the first best of the ranges in order is what PositionSearch::scan
@@ -234,27 +267,28 @@ public:
     if (ranges <= 1)
       return search.scan(cand);
     std::vector<PositionSearch> parts;
-    helpers_.withSlots(
-      search.nv, ranges,
-      [&]
-      {
-        for (int r = 0; r < ranges; ++r)
-        {
-          const int32_t slot = search.nv + r;
-          double* x = mesh_.points.data() + 3 * static_cast<size_t>(slot);
-          if (r == 0)
-          {
-            parts.push_back(search); // keeps the best so far, which prunes its range
-            parts.back().x = x;
-          }
-          else
-            parts.push_back(PositionSearch{ helpers_.helper(r), x, slot, search.t, search.speculative });
-        }
-        parallelFor(ranges, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread,
-                    [&](int r, int64_t begin, int64_t end) {
-                      parts[static_cast<size_t>(r)].scan(cand, static_cast<size_t>(begin), static_cast<size_t>(end));
-                    });
-      });
+    helpers_.withSlots(search.nv, ranges,
+                       [&]
+                       {
+                         for (int r = 0; r < ranges; ++r)
+                         {
+                           const int32_t slot = search.nv + r;
+                           double* x = mesh_.points.data() + 3 * static_cast<size_t>(slot);
+                           if (r == 0)
+                           {
+                             parts.push_back(search); // keeps the best so far, which prunes its range
+                             parts.back().x = x;
+                           }
+                           else
+                             parts.push_back(PositionSearch{ helpers_.helper(r), x, slot, search.t, search.speculative,
+                                                             search.severeCosine, search.preferOrthogonal });
+                         }
+                         parallelFor(ranges, static_cast<int64_t>(cand.size()), kMinCandidatesPerThread,
+                                     [&](int r, int64_t begin, int64_t end) {
+                                       parts[static_cast<size_t>(r)].scan(cand, static_cast<size_t>(begin),
+                                                                          static_cast<size_t>(end));
+                                     });
+                       });
     search.x = mesh_.points.data() + 3 * static_cast<size_t>(search.nv);
     for (const PositionSearch& part : parts)
       if (part.best > search.best)
@@ -318,15 +352,20 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
       addEdgeOffsets(p, cand);
     const int32_t nv = mesh.addPoint(cand[0].data()); // coordinates overwritten below (p may move)
     double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
-    PositionSearch search{ editor, x, nv, t, speculative };
+    const OrthogonalityFirst& rule = request.orthogonalityFirst;
+    const bool orthogonal = rule.binds(qt);
+    PositionSearch search{ editor, x, nv, t, speculative, rule.enabled ? rule.severeCosine : 0, !orthogonal };
     parallelScan.run(search, cand);
     if (search.best > -3)
       search.refine(lmean);
+    if (search.preferOrthogonal && search.best > -3)
+      search.best = search.rawQuality(); // the score less its penalty, for the test below
     if (search.best > 0 && (search.best > qt || speculative))
     {
       std::copy(search.at.begin(), search.at.end(), search.x);
       const int32_t start = editor.locate(search.x, t);
-      if (start >= 0 && editor.qualityInsertion(nv, start, t, nullptr, true, &created) > -3) // inserted
+      if (start >= 0 && !(orthogonal && !speculative && addsTetsUnder(editor, nv, start, t, qT)) &&
+          editor.qualityInsertion(nv, start, t, nullptr, true, &created) > -3) // inserted
       {
         ++inserted;
         if (request.created)

@@ -13,8 +13,13 @@
 //
 // speculative: the worst tet gets the best point found even when that does not improve it at once (the
 // caller optimises around it and keeps the result only if the mesh's worst tet got better).
+//
+// With SplitRequest::orthogonalityFirst, a position also scores -3 when its insertion would add faces a
+// solver finds severely non-orthogonal, and the best position goes in only when it leaves no more tets
+// under `degrees` than it replaces (for tets that are not nearly flat: OrthogonalityFirst.h).
 #pragma once
 
+#include "OrthogonalityFirst.h"
 #include "Progress.h"
 #include "TetEditor.h"
 #include "TetMesh.h"
@@ -53,6 +58,10 @@ struct SplitRequest
   // edit of the mesh since its vertex map was built went: refreshed (TetEditor::refreshVertexMap) instead
   // of a new editor's sweep.
   TetEditor* editor = nullptr;
+  // Off by default. On (OrthogonalityFirst.h), for a bad tet not nearly flat: no position whose insertion
+  // adds severely non-orthogonal faces, and no insertion that leaves more tets under `degrees` than it
+  // replaces.
+  OrthogonalityFirst orthogonalityFirst;
 };
 
 // Splits the bad tets of `request`; labels (per tet slot, optional) follow the new tets. Returns the number

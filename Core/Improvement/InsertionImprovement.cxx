@@ -1,5 +1,6 @@
 #include "InsertionImprovement.h"
 
+#include "CfdQuality.h"
 #include "CompassSearch.h"
 #include "MeshOptimization.h"
 #include "MeshScan.h"
@@ -313,12 +314,14 @@ class Attempt
 public:
   // minDihedralFloor: the mesh's smallest dihedral angle; no new tet may go under it (the sine quality
   // also weighs the largest angle, so a better worst quality alone could still lower the minimum angle).
-  Attempt(TetEditor& editor, Scorers& scorers, const std::vector<uint8_t>& locked, double minDihedralFloor)
+  Attempt(TetEditor& editor, Scorers& scorers, const std::vector<uint8_t>& locked, double minDihedralFloor,
+          const OrthogonalityFirst& rule)
     : ed_(editor)
     , scorers_(scorers)
     , m_(editor.mesh)
     , locked_(locked)
     , floor_(minDihedralFloor)
+    , rule_(rule)
   {
   }
 
@@ -415,18 +418,92 @@ private:
   bool tryPosition(int32_t t, double qt)
   {
     const EditJournal::Mark saved = ed_.journal->mark(m_, ed_.labels);
+    if (!insertAndImprove(t, qt))
+      return false;
+    const bool improved = minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_;
+    if (improved && !rule_.binds(qt))
+      return true;
+    ed_.journal->changedSince(saved, restored_, moved_);
+    const RegionCounts after = improved ? countRegion(created_) : RegionCounts{};
+    ed_.journal->rollback(saved, m_, ed_.labels);
+    ed_.refreshVertexMap(restored_);
+    if (!improved)
+      return false;
+    // The rule: the same tets as before the attempt (the slots it wrote and still alive, the stars of the
+    // points it moved) against what it left. Kept: done again, which gives the same mesh (each step is a
+    // function of the mesh, which the rollback restored slot for slot).
+    const RegionCounts before = countRegion(restored_);
+    if (after.below > before.below || after.severe > before.severe)
+      return false;
+    if (insertAndImprove(t, qt) && minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_)
+      return true;
+    ed_.journal->changedSince(saved, restored_, moved_); // not reached while each step is deterministic
+    ed_.journal->rollback(saved, m_, ed_.labels);
+    ed_.refreshVertexMap(restored_);
+    return false;
+  }
+
+  // The attempt's edits: nv_ at bestAt_ with the quality-driven cavity holding t, then the improvement of
+  // its neighbourhood. False (nothing changed) when the insertion fails.
+  bool insertAndImprove(int32_t t, double qt)
+  {
     std::copy(bestAt_.begin(), bestAt_.end(), m_.points.data() + 3 * static_cast<size_t>(nv_));
     const int32_t start = ed_.locate(m_.point(nv_), t);
     created_.clear();
     if (start < 0 || !(ed_.qualityInsertion(nv_, start, t, nullptr, true, &created_) > -3))
       return false;
     improveAround(qt);
-    if (minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_)
-      return true;
-    ed_.journal->changedSince(saved, restored_, moved_);
-    ed_.journal->rollback(saved, m_, ed_.labels);
-    ed_.refreshVertexMap(restored_);
-    return false;
+    return true;
+  }
+
+  // Under the rule's target, and faces a solver finds severely non-orthogonal (each interior face of the
+  // region's tets once, towards the tets beyond too), among the live tets of `slots` and the stars of the
+  // points moved_ lists.
+  struct RegionCounts
+  {
+    int64_t below = 0, severe = 0;
+  };
+  // Whether face i of tet c, towards tet u, is severely non-orthogonal.
+  bool isSevere(int32_t c, int i, int32_t u) const
+  {
+    double cc[3] = { 0, 0, 0 }, cu[3] = { 0, 0, 0 };
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 3; ++k)
+      {
+        cc[k] += m_.point(m_.vertex(c, j))[k] / 4;
+        cu[k] += m_.point(m_.vertex(u, j))[k] / 4;
+      }
+    int32_t f[3];
+    m_.faceVertices(c, i, f);
+    return quality::triangleLineCosine(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), cc, cu) < rule_.severeCosine;
+  }
+  RegionCounts countRegion(const std::vector<int32_t>& slots)
+  {
+    region_.clear();
+    for (int32_t c : slots)
+      if (c < m_.tetCapacity() && !m_.isFree(c))
+        region_.push_back(c);
+    for (int32_t p : moved_)
+      if (p < m_.numVertices() && ed_.tetOf(p) >= 0)
+      {
+        ed_.star(p, star_);
+        region_.insert(region_.end(), star_.begin(), star_.end());
+      }
+    std::sort(region_.begin(), region_.end());
+    region_.erase(std::unique(region_.begin(), region_.end()), region_.end());
+    auto inRegion = [&](int32_t u) { return std::binary_search(region_.begin(), region_.end(), u); };
+    RegionCounts counts;
+    for (int32_t c : region_)
+    {
+      counts.below += tetQuality(m_, c) < rule_.targetQuality;
+      for (int i = 0; i < 4; ++i)
+      {
+        const int32_t u = m_.neighbor(c, i);
+        if (u >= 0 && !(u < c && inRegion(u)))
+          counts.severe += isSevere(c, i, u);
+      }
+    }
+    return counts;
   }
 
   // The live tets created by this attempt (a freed slot is only reused by a later creation, also listed).
@@ -580,9 +657,9 @@ private:
         bool done = false;
         for (int i = 0; i < 4 && !done; ++i)
           for (int j = i + 1; j < 4 && !done; ++j)
-            done = tryEdgeRemoval(ed_, c, cv[i], cv[j], 9, &made);
+            done = tryEdgeRemoval(ed_, c, cv[i], cv[j], 9, &made, &rule_);
         for (int f = 0; f < 4 && !done; ++f)
-          done = tryFlip23(ed_, c, f, &made);
+          done = tryFlip23(ed_, c, f, &made, &rule_);
         if (done)
         {
           created_.insert(created_.end(), made.begin(), made.end());
@@ -632,6 +709,8 @@ private:
   TetMesh& m_;
   const std::vector<uint8_t>& locked_; // vertices that never move (points added later are free)
   const double floor_;
+  const OrthogonalityFirst& rule_;
+  std::vector<int32_t> region_; // countRegion()'s
   int32_t nv_ = -1;
   double best_ = -3;
   std::array<double, 3> bestAt_{};
@@ -736,7 +815,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
         continue; // replaced by an earlier attempt
       if (stop())
         return kept;
-      Attempt attempt(editor, scorers, lock, floor);
+      Attempt attempt(editor, scorers, lock, floor, options.orthogonalityFirst);
       ++rep.attempts;
       if (attempt.run(t))
         ++kept;

@@ -25,6 +25,7 @@
 // are never crossed, so the boundary stays exactly the input triangles. Labels (per tet slot) follow.
 #pragma once
 
+#include "OrthogonalityFirst.h"
 #include "Progress.h"
 #include "TetEditor.h"
 #include "TetMesh.h"
@@ -45,6 +46,10 @@ struct InsertionImprovementOptions
   double plateauDegrees = 18.0;
   int64_t plateauTets = 64;
   int threads = 0; // for the whole-mesh summaries (ParallelFor.h rule; same result for any value)
+  // Off by default. On (OrthogonalityFirst.h), an attempt for a tet that is not nearly flat is also undone
+  // when the tets it changed hold more tets under the rule's target, or more severely non-orthogonal
+  // faces, than before; its flips keep the rule too.
+  OrthogonalityFirst orthogonalityFirst;
 };
 
 struct InsertionImprovementReport

@@ -131,7 +131,26 @@ DihedralSummary summarizeDihedrals(const double* points, const int32_t* tetVerti
   return s;
 }
 
-bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created)
+namespace
+{
+// Whether rule refuses replacing the tets `old` (worst quality qOld) by `replacement`: it binds and the
+// replacement holds more tets under its target.
+bool addsTetsUnderTarget(const TetMesh& m, const OrthogonalityFirst* rule, double qOld, const std::vector<int32_t>& old,
+                         const std::vector<std::array<int32_t, 4>>& replacement)
+{
+  if (!rule || !rule->binds(qOld))
+    return false;
+  int64_t before = 0, after = 0;
+  for (int32_t u : old)
+    before += tetQ(m, u) < rule->targetQuality;
+  for (const auto& q : replacement)
+    after += tetQ(m, q[0], q[1], q[2], q[3]) < rule->targetQuality;
+  return after > before;
+}
+} // namespace
+
+bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created,
+                    const OrthogonalityFirst* rule)
 {
   Scratch& s = scratch();
   TetMesh& m = editor.mesh;
@@ -159,10 +178,12 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
   for (const auto& q : s.newTets)
     if (!positive(m, q))
       return false;
+  if (addsTetsUnderTarget(m, rule, qOld, s.tets, s.newTets))
+    return false;
   return editor.replace(s.tets, s.newTets, created); // replace() does not touch this scratch
 }
 
-bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created)
+bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created, const OrthogonalityFirst* rule)
 {
   TetMesh& m = editor.mesh;
   if (editor.isConstrainedFace(t, face))
@@ -188,6 +209,8 @@ bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* cre
       return false;
   std::vector<int32_t>& old = scratch().tets;
   old.assign({ t, u });
+  if (addsTetsUnderTarget(m, rule, qOld, old, nt))
+    return false;
   return editor.replace(old, nt, created);
 }
 
@@ -335,7 +358,8 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
     const int32_t* w = mesh.vertices(t);
     const int32_t vv[4] = { w[0], w[1], w[2], w[3] };
     for (int e = 0; e < 6; ++e)
-      if (tryEdgeRemoval(editor, t, vv[kEdge[order[e]][0]], vv[kEdge[order[e]][1]], options.maxRing, &created))
+      if (tryEdgeRemoval(editor, t, vv[kEdge[order[e]][0]], vv[kEdge[order[e]][1]], options.maxRing, &created,
+                         &options.orthogonalityFirst))
       {
         ++report.edgeRemovals;
         report.flips32 += created.size() == 2;
@@ -344,7 +368,7 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
   }
   if (options.flips)
     for (int f = 0; f < 4; ++f)
-      if (tryFlip23(editor, t, f, &created))
+      if (tryFlip23(editor, t, f, &created, &options.orthogonalityFirst))
       {
         ++report.flips23;
         return true;

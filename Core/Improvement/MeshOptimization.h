@@ -32,6 +32,7 @@
 
 #include "MeshSmoothing.h"
 #include "OptionTable.h"
+#include "OrthogonalityFirst.h"
 #include "Progress.h"
 #include "Status.h"
 #include "TetEditor.h"
@@ -72,6 +73,9 @@ struct OptimizationOptions
   // Threads for the whole-mesh sweeps (ParallelFor.h: 0 = all cores); the result is the same for any value.
   int threads = 0;
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
+  // Off by default. On: no flip or edge removal leaves more tets under its target than it removes,
+  // unless its worst replaced tet is nearly flat (OrthogonalityFirst.h).
+  OrthogonalityFirst orthogonalityFirst;
 };
 
 // Dihedral-angle summary of the finite tets (degrees).
@@ -136,9 +140,12 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
                     OptimizationReport* report = nullptr, OptimizationWorklist* worklist = nullptr);
 
 // Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
-// of the worst tet of the affected region; created receives the new tets.
-bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created);
-bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created);
+// of the worst tet of the affected region; created receives the new tets. rule (optional): refused when it
+// binds and the new tets hold more under its target than the old ones (OrthogonalityFirst.h).
+bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created,
+                    const OrthogonalityFirst* rule = nullptr);
+bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created,
+               const OrthogonalityFirst* rule = nullptr);
 // Removes unlocked vertex v (no constrained face through it) by collapsing it onto the neighbour w whose
 // collapse gives the best worst tet: the star's tets holding w go, the others get w for v. Only when every
 // new tet is strictly positive (exact orient3d) and the worst tet of the star strictly improves. v is then

@@ -73,8 +73,10 @@ QualityRounds::QualityRounds(TetMesh& mesh_, const FaceConstraints& fc, const st
 {
   one_.threads = options.threads;
   one_.maxPasses = 1;
-  one_.vertexRemoval = false; // a second attempt, withCollapseRerun
-  one_.summaries = false;     // the rounds decide on the smallest angle only; one summary at the end
+  one_.vertexRemoval = false;     // a second attempt, withCollapseRerun
+  one_.summaries = false;         // the rounds decide on the smallest angle only; one summary at the end
+  if (options.orthogonalityFirst) // aimed at the stage's target throughout, also in the floor rounds
+    one_.orthogonalityFirst = OrthogonalityFirst::forTarget(options.optimization.targetDegrees);
   constrainedLocks_ = editor_.lockedVertices();
   editor_.refreshThreads = options.threads;
 }
@@ -141,6 +143,7 @@ SplitRequest QualityRounds::splitRequest(double degrees, int64_t maxPoints,
   request.progress = progress;
   request.constrainedLocks = &constrainedLocks_;
   request.editor = &editor_;
+  request.orthogonalityFirst = one_.orthogonalityFirst;
   return request;
 }
 
@@ -518,6 +521,7 @@ Status QualityRounds::insertionRounds()
   io.rounds = options.insertionRounds;
   io.plateauDegrees = options.optimization.targetDegrees;
   io.threads = options.threads;
+  io.orthogonalityFirst = one_.orthogonalityFirst;
   InsertionImprovementReport report;
   stats.splitPoints += improveWorstByInsertion(mesh, &fc_, locked(), &tetRegion, io, &report, progress);
   if (report.cancelled)

@@ -1,6 +1,6 @@
 """OpenFOAM checkMesh's CFD figures (max non-orthogonality, faces above 70 deg, max skewness, verdict) for
-the ONERA M6 half-sphere domain meshed by VolGrid at default settings, TetGen -pYq1.414 and Gmsh HXT, each
-mesh turned into an OpenFOAM case by `volgrid convert`. A report, not a test (nothing asserted).
+the ONERA M6 half-sphere domain meshed by VolGrid at default settings and with --orthogonality-first,
+TetGen -pYq1.414 and Gmsh HXT, each mesh turned into an OpenFOAM case by `volgrid convert`. A report, not a test (nothing asserted).
 Usage: python3 bench_checkmesh.py VOLGRID WORKDIR DOMAIN.mesh"""
 import os
 import shutil
@@ -25,7 +25,7 @@ def must(*cmd):
 def report(engine, case):
     write_potential_case(case)
     f = R.check_mesh(case)
-    print("%-22s %s points %d cells %d patches %s | max non-orthogonality %s, faces > 70 deg %d, max skewness %s"
+    print("%-30s %s points %d cells %d patches %s | max non-orthogonality %s, faces > 70 deg %d, max skewness %s"
           % (engine, "Mesh OK    " if f["ok"] else "Mesh NOT OK", f["points"], f["cells"], f["patches"],
              f["max_non_orthogonality"], f["severe_faces"], f["max_skewness"]))
 
@@ -38,6 +38,8 @@ def main():
     shutil.copyfile(domain, w("dom.mesh"))
     must(volgrid, "mesh", w("dom.mesh"), w("volgrid"), "--format", "openfoam", *PATCHES)
     report("VolGrid (default)", w("volgrid"))
+    must(volgrid, "mesh", w("dom.mesh"), w("volgrid_orth"), "--format", "openfoam", "--orthogonality-first", *PATCHES)
+    report("VolGrid --orthogonality-first", w("volgrid_orth"))
     # TetGen keeps the Medit refs as face markers.
     must("tetgen", "-pYq1.414", w("dom.mesh"))
     must(volgrid, "convert", w("dom.1.node"), w("tetgen"), "--format", "openfoam", *PATCHES)

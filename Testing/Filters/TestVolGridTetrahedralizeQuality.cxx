@@ -13,6 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "CfdQuality.h"
 #include "Enclosures.h"
 #include "MeshChecker.h"
 #include "MeshImprovement.h"
@@ -22,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <vector>
 
@@ -49,10 +51,35 @@ vtkNew<vtkPolyData> sphereInSphere(double bodyEdge)
   return poly;
 }
 
+// A thin plate (6 x 4 x 0.04, whose edges force bad tets) inside a far-field sphere (r = 10).
+vtkNew<vtkPolyData> plateInSphere()
+{
+  volgrid::SurfaceMesh far, plate;
+  volgrid::EnclosureOptions o;
+  o.dimensions[0] = 10;
+  o.targetEdgeLength = 2.0;
+  EXPECT_TRUE(volgrid::makeEnclosure(o, far).ok());
+  o.shape = volgrid::EnclosureShape::Box;
+  o.dimensions[0] = 6;
+  o.dimensions[1] = 4;
+  o.dimensions[2] = 0.04;
+  o.targetEdgeLength = 0.5;
+  EXPECT_TRUE(volgrid::makeEnclosure(o, plate).ok());
+  const int32_t off = far.numberOfPoints();
+  far.points.insert(far.points.end(), plate.points.begin(), plate.points.end());
+  for (int32_t v : plate.triangles)
+    far.triangles.push_back(v + off);
+  far.patchIds.clear();
+  vtkNew<vtkPolyData> poly;
+  VolGridSurfaceMeshToPolyData(far, poly);
+  return poly;
+}
+
 struct Summary
 {
   vtkIdType tets = 0, points = 0, boundaryTriangles = 0;
   volgrid::DihedralSummary dihedral;
+  int64_t severeFaces = 0; // checkMesh's severely non-orthogonal faces (CfdQuality.h)
   bool valid = false;
 };
 
@@ -86,6 +113,7 @@ Summary summarize(vtkVolGridTetrahedralize* f)
     const volgrid::MeshCheckReport r = volgrid::checkMesh(m, co);
     s.valid = r.badVertices + r.invertedTets + r.badNeighbors + r.asymmetricNeighbors + r.faceMismatches == 0;
     s.dihedral = volgrid::summarizeDihedrals(m);
+    s.severeFaces = volgrid::quality::cfdMetrics(xyz, tets, nullptr).severelyNonOrthogonalFaces;
   }
   return s;
 }
@@ -287,4 +315,29 @@ TEST(VolGridTetrahedralizeQuality, OptimisationRaisesTheMinimumAngle)
   EXPECT_EQ(a.points, b.points); // optimisation adds no point
   EXPECT_GT(b.dihedral.minDihedral, a.dihedral.minDihedral);
   EXPECT_EQ(a.boundaryTriangles, b.boundaryTriangles);
+}
+
+// OrthogonalityFirst (off by default) reaches Core: on a plate whose edges force bad tets, the mesh has fewer
+// faces a finite-volume solver finds severely non-orthogonal, with the boundary kept exactly.
+TEST(VolGridTetrahedralizeQuality, OrthogonalityFirstGivesFewerSevereFaces)
+{
+  vtkNew<vtkPolyData> input = plateInSphere();
+  vtkNew<vtkVolGridTetrahedralize> plain;
+  EXPECT_FALSE(plain->GetOrthogonalityFirst());
+  plain->SetInputData(input);
+  plain->CheckOutputOn();
+  plain->Update();
+  vtkNew<vtkVolGridTetrahedralize> orthogonal;
+  orthogonal->SetInputData(input);
+  orthogonal->CheckOutputOn();
+  orthogonal->OrthogonalityFirstOn();
+  orthogonal->Update();
+  const Summary a = summarize(plain), b = summarize(orthogonal);
+  EXPECT_TRUE(a.valid && b.valid);
+  EXPECT_EQ(a.boundaryTriangles, input->GetNumberOfPolys());
+  EXPECT_EQ(b.boundaryTriangles, input->GetNumberOfPolys());
+  std::printf("severe faces: %lld default, %lld orthogonality first\n", static_cast<long long>(a.severeFaces),
+              static_cast<long long>(b.severeFaces));
+  EXPECT_GT(a.severeFaces, 0);
+  EXPECT_LT(b.severeFaces, a.severeFaces);
 }
