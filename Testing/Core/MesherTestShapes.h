@@ -224,5 +224,16 @@ inline void addSphere(SurfaceMesh& s, const double c[3], double r, int levels, b
       s.addTriangle(base + tr[0], base + tr[1], base + tr[2]);
 }
 
+// A thin plate (6 x 4 x 0.04) inside a sphere (r = 10, icosphere level 2): the plate's edges force tets under
+// 5 degrees after a first run of the quality stage, and severely non-orthogonal faces.
+inline SurfaceMesh plateInSphere()
+{
+  SurfaceMesh s;
+  const double c[3] = { 0, 0, 0 }, lo[3] = { -3, -2, -0.02 }, hi[3] = { 3, 2, 0.02 };
+  addSphere(s, c, 10.0, 2);
+  addBox(s, lo, hi, true, true);
+  return s;
+}
+
 } // namespace testshapes
 } // namespace volgrid

@@ -29,6 +29,19 @@
 
 namespace
 {
+// The far field's and the body's triangles as one vtkPolyData.
+vtkNew<vtkPolyData> joined(volgrid::SurfaceMesh far, const volgrid::SurfaceMesh& body)
+{
+  const int32_t off = far.numberOfPoints();
+  far.points.insert(far.points.end(), body.points.begin(), body.points.end());
+  for (int32_t v : body.triangles)
+    far.triangles.push_back(v + off);
+  far.patchIds.clear();
+  vtkNew<vtkPolyData> poly;
+  VolGridSurfaceMeshToPolyData(far, poly);
+  return poly;
+}
+
 // Body sphere (r = 1) inside a far-field sphere (r = 6), as one vtkPolyData.
 vtkNew<vtkPolyData> sphereInSphere(double bodyEdge)
 {
@@ -41,14 +54,7 @@ vtkNew<vtkPolyData> sphereInSphere(double bodyEdge)
   o.dimensions[0] = 1;
   o.targetEdgeLength = bodyEdge;
   EXPECT_TRUE(volgrid::makeEnclosure(o, body).ok());
-  const int32_t off = far.numberOfPoints();
-  far.points.insert(far.points.end(), body.points.begin(), body.points.end());
-  for (int32_t v : body.triangles)
-    far.triangles.push_back(v + off);
-  far.patchIds.clear();
-  vtkNew<vtkPolyData> poly;
-  VolGridSurfaceMeshToPolyData(far, poly);
-  return poly;
+  return joined(far, body);
 }
 
 // A thin plate (6 x 4 x 0.04, whose edges force bad tets) inside a far-field sphere (r = 10).
@@ -65,14 +71,7 @@ vtkNew<vtkPolyData> plateInSphere()
   o.dimensions[2] = 0.04;
   o.targetEdgeLength = 0.5;
   EXPECT_TRUE(volgrid::makeEnclosure(o, plate).ok());
-  const int32_t off = far.numberOfPoints();
-  far.points.insert(far.points.end(), plate.points.begin(), plate.points.end());
-  for (int32_t v : plate.triangles)
-    far.triangles.push_back(v + off);
-  far.patchIds.clear();
-  vtkNew<vtkPolyData> poly;
-  VolGridSurfaceMeshToPolyData(far, poly);
-  return poly;
+  return joined(far, plate);
 }
 
 struct Summary

@@ -213,10 +213,7 @@ TEST(OrthogonalityFirst, SplitsAddNoSevereFaceAndNoTetUnderTheirAim)
 // definition, cfdMetrics) on a thin plate in a sphere, whose edges force bad tets.
 TEST(OrthogonalityFirst, MesherKeepsTheBoundaryAndTheThreadRuleWithFewerSevereFaces)
 {
-  SurfaceMesh s;
-  const double c[3] = { 0, 0, 0 }, lo[3] = { -3, -2, -0.02 }, hi[3] = { 3, 2, 0.02 };
-  testshapes::addSphere(s, c, 10.0, 2);
-  testshapes::addBox(s, lo, hi, true, true);
+  const SurfaceMesh s = testshapes::plateInSphere();
   MesherOptions plain;
   plain.threads = 2;
   const MesherResult reference = meshAndCheck(s, plain);

@@ -211,10 +211,7 @@ TEST(Mesher, SameMeshForAnyThreadCount)
 // must be those of one run after the other.
 TEST(Mesher, CollapseRerunIsTheSameOnAnyThreadCount)
 {
-  SurfaceMesh s;
-  const double c[3] = { 0, 0, 0 }, lo[3] = { -3, -2, -0.02 }, hi[3] = { 3, 2, 0.02 };
-  testshapes::addSphere(s, c, 10.0, 2);
-  testshapes::addBox(s, lo, hi, true, true);
+  const SurfaceMesh s = testshapes::plateInSphere();
   MesherOptions opt;
   opt.threads = 1;
   const MesherResult one = meshAndCheck(s, opt);
