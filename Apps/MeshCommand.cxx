@@ -116,7 +116,8 @@ void declareFlags(volgrid::cli::FlagParser& p, Arguments& args, long long& threa
   p.add("--orthogonality-first", im.orthogonalityFirst, true,
         "  --orthogonality-first  for finite-volume solvers: the quality stage adds no severely non-orthogonal\n"
         "                       face (checkMesh: > 70 deg) and no tet under the target where it edits, except\n"
-        "                       to fix tets under 2 deg; fewer severe faces, a smaller worst dihedral angle\n");
+        "                       to fix tets under 2 deg; a quarter to a half of the severe faces, a smaller\n"
+        "                       worst dihedral angle\n");
   p.add("--max-tets", args.maxTets,
         "Limits:\n"
         "  --max-tets N         refuse before any work when the mesh is estimated to exceed N tets (default:\n"

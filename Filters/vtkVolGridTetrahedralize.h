@@ -253,7 +253,8 @@ public:
   /**
    * Quality for finite-volume solvers: the quality stage adds no face that checkMesh finds severely
    * non-orthogonal (> 70 deg) and no tet under the target where it edits, except to fix tets under 2 deg
-   * (Core's OrthogonalityFirst.h): fewer severe faces, a smaller worst dihedral angle. Default off.
+   * (Core's OrthogonalityFirst.h): a quarter to a half of the severe faces, a smaller worst dihedral
+   * angle. Default off.
    */
   vtkSetMacro(OrthogonalityFirst, bool);
   vtkGetMacro(OrthogonalityFirst, bool);

@@ -3,6 +3,7 @@
 #include "ParallelFor.h"
 
 #include <algorithm>
+#include <array>
 
 namespace volgrid
 {
@@ -59,14 +60,41 @@ std::vector<std::vector<int32_t>> colourClasses(const std::vector<int32_t>& vert
 } // namespace
 
 void smoothColoured(TetEditor& editor, const std::vector<int32_t>& vertices, const SmoothingOptions& options,
-                    int threads, std::vector<SmoothMove>& moves)
+                    int threads, std::vector<SmoothMove>& moves, const OrthogonalityFirst* rule)
 {
   moves.assign(vertices.size(), SmoothMove::None);
   if (vertices.empty())
     return;
   const Stars s = collectStars(editor, vertices);
   TetMesh& mesh = editor.mesh;
+  const bool ruled = rule && rule->enabled;
+  std::vector<RegionCounts> before;
+  std::vector<std::array<double, 3>> from;
+  // The rule's counts over member i's star (its slots ascending), on the thread that asks.
+  auto counts = [&](int32_t i)
+  {
+    thread_local std::vector<int32_t> star;
+    star.assign(s.star.begin() + s.starOff[i], s.star.begin() + s.starOff[i + 1]);
+    std::sort(star.begin(), star.end());
+    return countRegion(mesh, star, *rule);
+  };
   for (const std::vector<int32_t>& members : colourClasses(vertices, s, mesh.numVertices()))
+  {
+    if (ruled)
+    {
+      before.resize(members.size());
+      from.resize(members.size());
+      parallelFor(threads, static_cast<int64_t>(members.size()), 32,
+                  [&](int, int64_t begin, int64_t end)
+                  {
+                    for (int64_t k = begin; k < end; ++k)
+                    {
+                      before[k] = counts(members[k]);
+                      const double* x = mesh.point(vertices[members[k]]);
+                      from[k] = { x[0], x[1], x[2] };
+                    }
+                  });
+    }
     parallelFor(threads, static_cast<int64_t>(members.size()), 32,
                 [&](int, int64_t begin, int64_t end)
                 {
@@ -79,6 +107,23 @@ void smoothColoured(TetEditor& editor, const std::vector<int32_t>& vertices, con
                                                   static_cast<size_t>(s.nbrOff[i + 1] - s.nbrOff[i]), options);
                   }
                 });
+    if (!ruled)
+      continue;
+    std::vector<uint8_t> undo(members.size(), 0);
+    parallelFor(threads, static_cast<int64_t>(members.size()), 32,
+                [&](int, int64_t begin, int64_t end)
+                {
+                  for (int64_t k = begin; k < end; ++k)
+                    undo[k] = moves[members[k]] != SmoothMove::None && rule->binds(before[k].worst) &&
+                      counts(members[k]).worseThan(before[k]);
+                });
+    for (size_t k = 0; k < members.size(); ++k)
+      if (undo[k])
+      {
+        std::copy(from[k].begin(), from[k].end(), mesh.points.data() + 3 * static_cast<size_t>(vertices[members[k]]));
+        moves[members[k]] = SmoothMove::None;
+      }
+  }
 }
 
 } // namespace volgrid

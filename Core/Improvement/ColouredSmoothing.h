@@ -8,6 +8,7 @@
 #pragma once
 
 #include "MeshSmoothing.h"
+#include "OrthogonalityFirst.h"
 
 #include <cstdint>
 #include <vector>
@@ -18,7 +19,10 @@ namespace volgrid
 // Smooths `vertices` (distinct, unlocked, in the order that decides the colouring) on `threads`
 // (ParallelFor.h rule). moves[i] receives the move of vertices[i]. The editor's vertex map must be
 // current; smoothing changes no tet, so it stays current.
+// rule (optional, OrthogonalityFirst.h): once a class has moved, a move whose star the rule binds and now
+// holds more tets under the target or more severe faces is undone (in list order; the counts are taken
+// with the whole class moved, so they do not depend on the threads either).
 void smoothColoured(TetEditor& editor, const std::vector<int32_t>& vertices, const SmoothingOptions& options,
-                    int threads, std::vector<SmoothMove>& moves);
+                    int threads, std::vector<SmoothMove>& moves, const OrthogonalityFirst* rule = nullptr);
 
 } // namespace volgrid

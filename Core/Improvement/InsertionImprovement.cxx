@@ -1,6 +1,5 @@
 #include "InsertionImprovement.h"
 
-#include "CfdQuality.h"
 #include "CompassSearch.h"
 #include "MeshOptimization.h"
 #include "MeshScan.h"
@@ -424,7 +423,7 @@ private:
     if (improved && !rule_.binds(qt))
       return true;
     ed_.journal->changedSince(saved, restored_, moved_);
-    const RegionCounts after = improved ? countRegion(created_) : RegionCounts{};
+    const RegionCounts after = improved ? countRegionOf(created_) : RegionCounts{};
     ed_.journal->rollback(saved, m_, ed_.labels);
     ed_.refreshVertexMap(restored_);
     if (!improved)
@@ -432,8 +431,8 @@ private:
     // The rule: the same tets as before the attempt (the slots it wrote and still alive, the stars of the
     // points it moved) against what it left. Kept: done again, which gives the same mesh (each step is a
     // function of the mesh, which the rollback restored slot for slot).
-    const RegionCounts before = countRegion(restored_);
-    if (after.below > before.below || after.severe > before.severe)
+    const RegionCounts before = countRegionOf(restored_);
+    if (after.worseThan(before))
       return false;
     if (insertAndImprove(t, qt) && minOverCreated(tetQuality, 2) > qt && minOverCreated(minDihedral, 180) >= floor_)
       return true;
@@ -456,28 +455,8 @@ private:
     return true;
   }
 
-  // Under the rule's target, and faces a solver finds severely non-orthogonal (each interior face of the
-  // region's tets once, towards the tets beyond too), among the live tets of `slots` and the stars of the
-  // points moved_ lists.
-  struct RegionCounts
-  {
-    int64_t below = 0, severe = 0;
-  };
-  // Whether face i of tet c, towards tet u, is severely non-orthogonal.
-  bool isSevere(int32_t c, int i, int32_t u) const
-  {
-    double cc[3] = { 0, 0, 0 }, cu[3] = { 0, 0, 0 };
-    for (int j = 0; j < 4; ++j)
-      for (int k = 0; k < 3; ++k)
-      {
-        cc[k] += m_.point(m_.vertex(c, j))[k] / 4;
-        cu[k] += m_.point(m_.vertex(u, j))[k] / 4;
-      }
-    int32_t f[3];
-    m_.faceVertices(c, i, f);
-    return quality::triangleLineCosine(m_.point(f[0]), m_.point(f[1]), m_.point(f[2]), cc, cu) < rule_.severeCosine;
-  }
-  RegionCounts countRegion(const std::vector<int32_t>& slots)
+  // OrthogonalityFirst.h's counts over the live tets of `slots` and the stars of the points moved_ lists.
+  RegionCounts countRegionOf(const std::vector<int32_t>& slots)
   {
     region_.clear();
     for (int32_t c : slots)
@@ -491,19 +470,7 @@ private:
       }
     std::sort(region_.begin(), region_.end());
     region_.erase(std::unique(region_.begin(), region_.end()), region_.end());
-    auto inRegion = [&](int32_t u) { return std::binary_search(region_.begin(), region_.end(), u); };
-    RegionCounts counts;
-    for (int32_t c : region_)
-    {
-      counts.below += tetQuality(m_, c) < rule_.targetQuality;
-      for (int i = 0; i < 4; ++i)
-      {
-        const int32_t u = m_.neighbor(c, i);
-        if (u >= 0 && !(u < c && inRegion(u)))
-          counts.severe += isSevere(c, i, u);
-      }
-    }
-    return counts;
+    return countRegion(m_, region_, rule_);
   }
 
   // The live tets created by this attempt (a freed slot is only reused by a later creation, also listed).

@@ -92,9 +92,9 @@ struct ImprovementOptions
   // After the rounds: vertex moves for the faces a finite-volume solver finds severely non-orthogonal,
   // never making a tet worse than the rounds left it below the target (OrthogonalitySmoothing.h).
   bool orthogonalitySmoothing = true;
-  // Off by default. On: the flips, splits and insertion rounds keep what a finite-volume solver sees
-  // first, adding no tets under the target and no severely non-orthogonal faces where they edit, except
-  // for nearly flat tets (OrthogonalityFirst.h). Fewer severe faces, a smaller worst dihedral angle.
+  // Off by default. On: the flips, splits, insertion rounds and smoothing moves keep what a finite-volume
+  // solver sees first, adding no tets under the target and no severely non-orthogonal faces where they
+  // edit, except for nearly flat tets (OrthogonalityFirst.h). Fewer severe faces, a smaller worst angle.
   bool orthogonalityFirst = false;
   // Threads for the stage's threaded steps (ParallelFor.h rule: 0 = all cores; meshSurface sets it from
   // MesherOptions::threads). The result is the same for any value.

@@ -334,7 +334,7 @@ void smoothInColourClasses(TetEditor& editor, const std::vector<int32_t>& verts,
         if (!unmoved[v])
           sweep.push_back(v);
     }
-    smoothColoured(editor, sweep, options.smoothingOptions, options.threads, moves);
+    smoothColoured(editor, sweep, options.smoothingOptions, options.threads, moves, &options.orthogonalityFirst);
     for (size_t i = 0; i < sweep.size(); ++i)
       unmoved[sweep[i]] = moves[i] == SmoothMove::None;
     for (size_t i = 0; i < sweep.size(); ++i)
@@ -500,11 +500,29 @@ struct OptimizationPasses
         const int32_t v = verts[k];
         if (lock[v] || unmoved[v])
           continue;
+        // The orthogonality-first rule, when it binds the star: no more tets under the target nor severe faces.
+        const RegionCounts before = countStar(v);
+        const std::array<double, 3> at = { mesh.point(v)[0], mesh.point(v)[1], mesh.point(v)[2] };
         if (smoothVertex(editor, v, options.smoothingOptions) == SmoothMove::None)
           unmoved[v] = 1;
+        else if (options.orthogonalityFirst.binds(before.worst) && countStar(v).worseThan(before))
+        {
+          std::copy(at.begin(), at.end(), mesh.points.data() + 3 * static_cast<size_t>(v));
+          unmoved[v] = 1;
+        }
         else
           moved(v);
       }
+  }
+
+  // OrthogonalityFirst.h's counts over v's star (empty when the rule is off).
+  RegionCounts countStar(int32_t v)
+  {
+    if (!options.orthogonalityFirst.enabled)
+      return RegionCounts{};
+    editor.star(v, star);
+    std::sort(star.begin(), star.end());
+    return countRegion(mesh, star, options.orthogonalityFirst);
   }
 
   // Last resort, after flips and moves: collapse an unlocked vertex of the tets still far below the

@@ -73,8 +73,9 @@ struct OptimizationOptions
   // Threads for the whole-mesh sweeps (ParallelFor.h: 0 = all cores); the result is the same for any value.
   int threads = 0;
   SmoothingOptions smoothingOptions = SmoothingOptions{ 1, true, 12, 90.0 };
-  // Off by default. On: no flip or edge removal leaves more tets under its target than it removes,
-  // unless its worst replaced tet is nearly flat (OrthogonalityFirst.h).
+  // Off by default. On (OrthogonalityFirst.h), unless the worst tet it changes is nearly flat: no flip or
+  // edge removal leaves more tets under its target than it removes, and no smoothing move leaves more of
+  // them or more severely non-orthogonal faces in the moved vertex's star.
   OrthogonalityFirst orthogonalityFirst;
 };
 

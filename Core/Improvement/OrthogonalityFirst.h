@@ -14,13 +14,17 @@
 // it leaves no more tets under the target than there were, and (splits and insertion rounds, which add a
 // point) no more severe faces, among the faces of the tets it changes. Edits for tets under
 // kDegenerateDegrees (nearly flat cells, which a solver cannot use either) are made as without the rule.
-// The price is dihedral angle. On the same domain (checkMesh): 370 severe faces instead of 854, the
-// worst angle 5.3 instead of 8.1 degrees, 0.12% of the tets under 10 degrees instead of 0.05%.
+// Smoothing moves keep the rule too (no more tets under the target nor severe faces in the moved vertex's
+// star). The price is dihedral angle. On the same domain (checkMesh): 208 severe faces instead of 854, the
+// worst angle 2.4 instead of 8.1 degrees, 0.18% of the tets under 10 degrees instead of 0.05%.
 #pragma once
 
 #include "CfdQuality.h"
+#include "TetMesh.h"
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace volgrid
 {
@@ -48,5 +52,17 @@ struct OrthogonalityFirst
   // Whether an edit whose worst replaced tet has sine quality qWorst must keep the rule.
   bool binds(double qWorst) const { return enabled && !(qWorst < degenerateQuality); }
 };
+
+// What the rule compares before and after an edit, over the tets it changes: how many are under the target,
+// how many of their faces are severely non-orthogonal (each interior face once, the faces towards the
+// tets beyond included), and the worst tet's sine quality.
+struct RegionCounts
+{
+  int64_t below = 0, severe = 0;
+  double worst = 2;
+  bool worseThan(const RegionCounts& before) const { return below > before.below || severe > before.severe; }
+};
+// region: distinct live tets of `mesh`, ascending.
+RegionCounts countRegion(const TetMesh& mesh, const std::vector<int32_t>& region, const OrthogonalityFirst& rule);
 
 } // namespace volgrid
