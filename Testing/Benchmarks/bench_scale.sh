@@ -7,7 +7,8 @@
 #   sis          sphere-in-sphere: an icosphere body (r = 1) inside an icosphere far field (r = 10);
 #   pypan-10M    the swept wing and tail of ../shared/data/real/aero-pypan in a sphere far field (10x),
 #                about 10M tets.
-# Engines: VolGrid with --threads 1 and --threads 0 (all cores); TetGen 1.5 -pYq1.414 with an -a bound
+# Engines: VolGrid with --threads 1 and --threads 0 (all cores), and on all cores with --orthogonality-first
+# (engine volgrid-allthreads-orth); TetGen 1.5 -pYq1.414 with an -a bound
 # (volume of the domain / VolGrid's tets x 1.4, about the same count; none on m6-default and sis, as in
 # the issue); Gmsh HXT (-algo hxt) with -clmax the same size cap (none on the default cases).
 # Per run: tets, wall seconds of the whole command (reading and writing included, for every engine),
@@ -125,13 +126,17 @@ def finish(res, mesh, wall, peak):
             os.remove(os.path.join(work, f))
     return res
 
-def bench_volgrid(surface, cap, threads):
+def bench_volgrid(surface, cap, threads, orthogonality_first=False):
     mesh = os.path.join(work, "out.vtk")  # legacy: read back by the stats tool
     cmd = [volgrid, "mesh", surface, mesh, "--json", "--threads", str(threads)]
     if cap:
         cmd += ["--max-edge", str(cap)]
+    if orthogonality_first:
+        cmd += ["--orthogonality-first"]
     r, wall, peak = run(cmd)
     name = "volgrid-%s" % ("1thread" if threads == 1 else "allthreads")
+    if orthogonality_first:
+        name += "-orth"  # --orthogonality-first
     if r.returncode != 0:
         return {"engine": name, "error": (r.stderr or r.stdout).strip()[-200:]}
     d = json.loads(r.stdout.strip().splitlines()[-1])
@@ -243,7 +248,7 @@ def bench_gmsh(surface, cap):
         return {"engine": "gmsh-hxt", "error": " / ".join(errors)[:200] or "failed"}
     return finish({"engine": "gmsh-hxt", "seconds": float(m.group(1))}, vtk, wall, peak)
 
-COLS = [("engine", "%-18s"), ("tets", "%10s"), ("wall_seconds", "%9s"), ("tets_per_second", "%9s"),
+COLS = [("engine", "%-24s"), ("tets", "%10s"), ("wall_seconds", "%9s"), ("tets_per_second", "%9s"),
         ("peak_mb", "%8s"), ("bytes_per_tet", "%7s"), ("min_dihedral", "%8s"), ("max_dihedral", "%8s"),
         ("share_below_10", "%9s"), ("interior_min_dihedral", "%8s"), ("interior_max_dihedral", "%8s"),
         ("interior_share_below_10", "%9s"), ("forced_share", "%9s"), ("size_ratio_p99", "%7s"),
@@ -260,6 +265,7 @@ for case in cases:
     cap = CASES[case]["cap"]
     results = [bench_volgrid(surface, cap, 1), bench_volgrid(surface, cap, 0)]
     vg = results[-1]
+    results.append(bench_volgrid(surface, cap, 0, orthogonality_first=True))
     bound = None
     if cap and vg.get("tets"):
         bound = 1.4 * vg["volume"] / vg["tets"]
