@@ -82,6 +82,22 @@ double sineOf(double degrees)
   return std::sin(degrees * 3.14159265358979323846 / 180);
 }
 
+// Prints the counts of a sweep of `edits`, which must have edited; with the rule, no count may have risen.
+void expectNoMoreUnderTheRule(bool withRule, const char* edits, int64_t count, const MeshCounts& before,
+                              const MeshCounts& after)
+{
+  std::printf("%s: %lld %s; severe faces %lld -> %lld, tets under 18 deg %lld -> %lld\n", withRule ? "rule" : "no rule",
+              static_cast<long long>(count), edits, static_cast<long long>(before.severe),
+              static_cast<long long>(after.severe), static_cast<long long>(before.below),
+              static_cast<long long>(after.below));
+  EXPECT_GT(count, 0) << edits << (withRule ? " with the rule" : " without it");
+  if (withRule)
+  {
+    EXPECT_LE(after.severe, before.severe) << edits;
+    EXPECT_LE(after.below, before.below) << edits;
+  }
+}
+
 // meshSurface, then the independent check: a valid mesh whose boundary is the input and whose volume is the
 // enclosed one.
 MesherResult meshAndCheck(const SurfaceMesh& s, const MesherOptions& options)
@@ -195,17 +211,8 @@ TEST(OrthogonalityFirst, SplitsAddNoSevereFaceAndNoTetUnderTheirAim)
       request.orthogonalityFirst = everyEditBound(18);
     const int64_t inserted = splitBadTets(mesh, nullptr, nullptr, request);
     const MeshCounts after = countMesh(mesh, sineOf(18));
-    std::printf("%s: %lld points; severe faces %lld -> %lld, tets under 18 deg %lld -> %lld\n",
-                withRule ? "rule" : "no rule", static_cast<long long>(inserted), static_cast<long long>(before.severe),
-                static_cast<long long>(after.severe), static_cast<long long>(before.below),
-                static_cast<long long>(after.below));
-    EXPECT_GT(inserted, 0) << withRule;
-    if (withRule)
-    {
-      EXPECT_LE(after.severe, before.severe);
-      EXPECT_LE(after.below, before.below);
-    }
-    else
+    expectNoMoreUnderTheRule(withRule, "points", inserted, before, after);
+    if (!withRule)
       without = MeshCounts{ after.severe - before.severe, after.below - before.below };
   }
   EXPECT_GT(without.severe, 0); // the rule is what holds the count
@@ -234,16 +241,7 @@ TEST(OrthogonalityFirst, ColouredSmoothingUndoesTheMovesTheRuleRefuses)
     smoothColoured(editor, vertices, options, 2, moves, withRule ? &rule : nullptr);
     const MeshCounts after = countMesh(mesh, rule.targetQuality);
     const int64_t moved = std::count_if(moves.begin(), moves.end(), [](SmoothMove m) { return m != SmoothMove::None; });
-    std::printf("%s: %lld moves; severe faces %lld -> %lld, tets under 18 deg %lld -> %lld\n",
-                withRule ? "rule" : "no rule", static_cast<long long>(moved), static_cast<long long>(before.severe),
-                static_cast<long long>(after.severe), static_cast<long long>(before.below),
-                static_cast<long long>(after.below));
-    EXPECT_GT(moved, 0) << withRule;
-    if (withRule)
-    {
-      EXPECT_LE(after.severe, before.severe);
-      EXPECT_LE(after.below, before.below);
-    }
+    expectNoMoreUnderTheRule(withRule, "moves", moved, before, after);
     (withRule ? movedWith : movedWithout) = moved;
   }
   EXPECT_LT(movedWith, movedWithout);
