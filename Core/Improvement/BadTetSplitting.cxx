@@ -354,7 +354,9 @@ int64_t splitBadTets(TetMesh& mesh, const FaceConstraints* constraints, std::vec
     double* x = mesh.points.data() + 3 * static_cast<size_t>(nv);
     const OrthogonalityFirst& rule = request.orthogonalityFirst;
     const bool orthogonal = rule.binds(qt);
-    PositionSearch search{ editor, x, nv, t, speculative, rule.enabled ? rule.severeCosine : 0, !orthogonal };
+    PositionSearch search{
+      editor, x, nv, t, speculative, rule.enabled ? rule.severeCosine : 0, rule.enabled && !orthogonal
+    };
     parallelScan.run(search, cand);
     if (search.best > -3)
       search.refine(lmean);
