@@ -1,5 +1,6 @@
 #include "FieldPointRegions.h"
 
+#include "MeshRegions.h"
 #include "ParallelFor.h"
 #include "TetSlotPool.h"
 
@@ -14,92 +15,12 @@ namespace
 {
 constexpr int64_t kTodoTetsPerRegion = 32768; // a smaller region is mostly border
 constexpr int kMaxRegions = 64;
-constexpr uint8_t kSpansRegions = 255;
 constexpr size_t kTestBlock = 4096;                       // tets whose sizes are asked ahead of their insertions
 constexpr size_t kPrefetchTets = 16, kPrefetchPoints = 8; // how far ahead their loads start
-constexpr size_t kBoxSample = 32768;
 // New slots a region sets aside per tet of the pass: about one tet in 20 gets a point, and an insertion adds
 // about 6.5 tets net (a Delaunay mesh has about 6.5 tets per vertex).
 constexpr double kSlotsPerTodoTet = 0.5;
 constexpr double kPointsPerTodoTet = 0.125; // numbers set aside per tet of the pass (about one in 20 gets a point)
-
-void centroidOf(const TetMesh& mesh, int32_t t, double* c)
-{
-  const int32_t* v = mesh.vertices(t);
-  const double *a = mesh.point(v[0]), *b = mesh.point(v[1]), *d = mesh.point(v[2]), *e = mesh.point(v[3]);
-  for (int k = 0; k < 3; ++k)
-    c[k] = (a[k] + b[k] + d[k] + e[k]) / 4;
-}
-
-// The boxes: a k-d tree of `regions` leaves (a power of two), node i's children 2i+1 and 2i+2; each split
-// halves the node's points across the longest side of their bounding box.
-class RegionBoxes
-{
-public:
-  RegionBoxes(const std::vector<double>& xyz, int regions)
-    : split_(static_cast<size_t>(regions - 1))
-  {
-    std::vector<int32_t> ids(xyz.size() / 3);
-    for (size_t i = 0; i < ids.size(); ++i)
-      ids[i] = static_cast<int32_t>(i);
-    build(xyz, ids.begin(), ids.end(), 0);
-  }
-  uint8_t regionOf(const double* p) const
-  {
-    size_t node = 0;
-    while (node < split_.size())
-      node = 2 * node + (p[split_[node].axis] < split_[node].at ? 1 : 2);
-    return static_cast<uint8_t>(node - split_.size());
-  }
-
-private:
-  struct Split
-  {
-    int axis = 0;
-    double at = 0;
-  };
-  using Iter = std::vector<int32_t>::iterator;
-  void build(const std::vector<double>& xyz, Iter begin, Iter end, size_t node)
-  {
-    if (node >= split_.size())
-      return;
-    double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
-    for (Iter i = begin; i != end; ++i)
-      for (int k = 0; k < 3; ++k)
-      {
-        lo[k] = std::min(lo[k], xyz[3 * static_cast<size_t>(*i) + k]);
-        hi[k] = std::max(hi[k], xyz[3 * static_cast<size_t>(*i) + k]);
-      }
-    Split& s = split_[node];
-    s.axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (hi[k] - lo[k] > hi[s.axis] - lo[s.axis])
-        s.axis = k;
-    auto coordinate = [&](int32_t i) { return xyz[3 * static_cast<size_t>(i) + s.axis]; };
-    Iter mid = begin + (end - begin) / 2;
-    if (begin != end)
-    {
-      std::nth_element(begin, mid, end, [&](int32_t a, int32_t b) { return coordinate(a) < coordinate(b); });
-      s.at = coordinate(*mid);
-    }
-    // The children get the points as regionOf() sends them.
-    mid = std::partition(begin, end, [&](int32_t i) { return coordinate(i) < s.at; });
-    build(xyz, begin, mid, 2 * node + 1);
-    build(xyz, mid, end, 2 * node + 2);
-  }
-  std::vector<Split> split_;
-};
-
-// The region of tet t: its vertices' common region, or kSpansRegions.
-uint8_t tetRegion(const TetMesh& mesh, const std::vector<uint8_t>& vertexRegion, int32_t t)
-{
-  const int32_t* v = mesh.vertices(t);
-  const uint8_t r = vertexRegion[static_cast<size_t>(v[0])];
-  for (int i = 1; i < 4; ++i)
-    if (vertexRegion[static_cast<size_t>(v[i])] != r)
-      return kSpansRegions;
-  return r;
-}
 
 // What one region does, and what it leaves.
 struct RegionWork
@@ -146,7 +67,7 @@ void insertRegionPoint(TetEditor& editor, const RegionShared& shared, uint8_t r,
     return;
   }
   const int32_t id = work.firstId + work.inserted;
-  centroidOf(mesh, t, mesh.points.data() + 3 * static_cast<size_t>(id));
+  tetCentroid(mesh, t, mesh.points.data() + 3 * static_cast<size_t>(id));
   shared.vertexRegion[static_cast<size_t>(id)] = r;
   const auto st = editor.insertPoint(id, t, pass.beta * h, nullptr, &created);
   if (st == TetEditor::InsertStatus::Deferred)
@@ -205,26 +126,17 @@ void insertRegion(TetEditor& editor, const RegionShared& shared, uint8_t r, Regi
   editor.slotPool = nullptr;
 }
 
-// Each region's slots, set aside before the threads start: about as many as its insertions will need (a
-// region that runs out defers the rest). The mesh's free slots first, in slot order, so that each region
-// writes its own stretch of the arrays; then appended ones. The free slots no region takes go back to the
-// mesh's free list, the lowest first in line.
+// Each region's slots: about as many as its insertions will need (a region that runs out defers the rest).
 void fillPools(TetMesh& mesh, std::vector<RegionWork>& works)
 {
-  std::vector<int32_t> free = mesh.takeFreeSlots();
-  size_t used = 0;
+  std::vector<TetSlotPool*> pools;
+  std::vector<size_t> wants;
   for (RegionWork& w : works)
   {
-    const size_t want = static_cast<size_t>(kSlotsPerTodoTet * static_cast<double>(w.todo.size())) + 64;
-    const size_t fromList = std::min(free.size() - used, want);
-    std::vector<int32_t> mine(free.begin() + static_cast<ptrdiff_t>(used),
-                              free.begin() + static_cast<ptrdiff_t>(used + fromList));
-    used += fromList;
-    const int32_t appended = static_cast<int32_t>(want - fromList);
-    w.pool.assign(std::move(mine), mesh.appendTets(appended), appended);
+    pools.push_back(&w.pool);
+    wants.push_back(static_cast<size_t>(kSlotsPerTodoTet * static_cast<double>(w.todo.size())) + 64);
   }
-  for (size_t i = free.size(); i > used; --i)
-    mesh.returnSlot(free[i - 1]);
+  fillSlotPools(mesh, pools, wants);
 }
 
 // After the regions: their points renumbered to follow the mesh's (region by region), the unused numbers
@@ -257,19 +169,6 @@ void closeRegions(TetMesh& mesh, int32_t meshVertices, int32_t firstTemporaryId,
     w.pool.returnAll(mesh);
 }
 
-// The boxes, from the centroids of (a sample of at most about 2 x kBoxSample of) the pass's tets.
-RegionBoxes boxesOf(const TetMesh& mesh, const std::vector<int32_t>& todo, int regions)
-{
-  const size_t stride = std::max<size_t>(1, todo.size() / kBoxSample);
-  std::vector<double> xyz;
-  xyz.reserve(3 * (todo.size() / stride + 1));
-  for (size_t k = 0; k < todo.size(); k += stride)
-  {
-    xyz.resize(xyz.size() + 3);
-    centroidOf(mesh, todo[k], xyz.data() + xyz.size() - 3);
-  }
-  return RegionBoxes(xyz, regions);
-}
 } // namespace
 
 int fieldPointRegionCount(int64_t regionTets, int64_t todoTets)
@@ -295,24 +194,18 @@ Status FieldPointRegions::insertPass(const FieldPointPass& pass, int regions, Pr
   TetMesh& mesh = editor_.mesh;
   const std::vector<int32_t>& todo = *pass.todo;
   outcome = FieldPointRegionOutcome();
-  const RegionBoxes boxes = boxesOf(mesh, todo, regions);
+  const RegionBoxes boxes = boxesOfTets(mesh, todo, regions);
   std::vector<RegionWork> works(static_cast<size_t>(regions));
   // Temporary numbers for the new points, above every final one (a region that runs out defers the rest).
   const int32_t meshVertices = mesh.numVertices();
   int32_t temporaryIds = 0;
-  std::vector<uint8_t> vertexRegion(static_cast<size_t>(meshVertices), kSpansRegions);
-  parallelFor(threads_, meshVertices, 16384,
-              [&](int, int64_t from, int64_t to)
-              {
-                for (int64_t v = from; v < to; ++v)
-                  vertexRegion[static_cast<size_t>(v)] = boxes.regionOf(mesh.point(static_cast<int32_t>(v)));
-              });
+  std::vector<uint8_t> vertexRegion = vertexRegions(mesh, boxes, threads_);
   std::vector<uint8_t> todoRegion(todo.size());
   parallelFor(threads_, static_cast<int64_t>(todo.size()), 16384,
               [&](int, int64_t from, int64_t to)
               {
                 for (int64_t k = from; k < to; ++k)
-                  todoRegion[static_cast<size_t>(k)] = tetRegion(mesh, vertexRegion, todo[static_cast<size_t>(k)]);
+                  todoRegion[static_cast<size_t>(k)] = tetRegionOf(mesh, vertexRegion, todo[static_cast<size_t>(k)]);
               });
   // The boxes and the two labellings above take a few tenths of a second at 10M tets; nothing is changed yet.
   if (progress && progress->cancelled())
