@@ -115,7 +115,8 @@ struct ImprovementStatistics
   double coarseBoundaryFloor = 0;
   DihedralSummary before, after; // dihedral angles before the field points and after everything
   int optimizationPasses = 0;
-  int64_t flips = 0; // 2-3 flips and edge removals
+  int64_t flips = 0;          // 2-3 flips and edge removals
+  int64_t flipsInRegions = 0; // of those, made by regions on the threads (RegionFlips.h)
   int64_t smoothMoves = 0;
   // Interior faces over 70 degrees of non-orthogonality (OpenFOAM's severe limit) before and after the
   // orthogonality smoothing, and the vertices it moved.

@@ -2,6 +2,7 @@
 #include "ColouredSmoothing.h"
 #include "MeshScan.h"
 #include "ParallelFor.h"
+#include "RegionFlips.h"
 
 #include "RingTriangulation.h"
 
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -344,9 +346,10 @@ void smoothInColourClasses(TetEditor& editor, const std::vector<int32_t>& verts,
 }
 
 // Edge removal on the edges of tet t (smallest dihedral angle first), then 2-3 flips of its faces: the
-// first strict improvement is kept (created receives the new tets). True when one was made.
-bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options, OptimizationReport& report,
-                std::vector<int32_t>& created)
+// first strict improvement is kept (created receives the new tets). Deferred when that improvement needs a
+// tet outside the editor's region (RegionFlips.h).
+FlipAttempt tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options, OptimizationReport& report,
+                       std::vector<int32_t>& created)
 {
   TetMesh& mesh = editor.mesh;
   if (options.edgeRemoval)
@@ -358,22 +361,32 @@ bool tryFlipsOf(TetEditor& editor, int32_t t, const OptimizationOptions& options
     const int32_t* w = mesh.vertices(t);
     const int32_t vv[4] = { w[0], w[1], w[2], w[3] };
     for (int e = 0; e < 6; ++e)
+    {
+      editor.lastReplaceDeferred = false;
       if (tryEdgeRemoval(editor, t, vv[kEdge[order[e]][0]], vv[kEdge[order[e]][1]], options.maxRing, &created,
                          &options.orthogonalityFirst))
       {
         ++report.edgeRemovals;
         report.flips32 += created.size() == 2;
-        return true;
+        return FlipAttempt::Made;
       }
+      if (editor.lastReplaceDeferred)
+        return FlipAttempt::Deferred;
+    }
   }
   if (options.flips)
     for (int f = 0; f < 4; ++f)
+    {
+      editor.lastReplaceDeferred = false;
       if (tryFlip23(editor, t, f, &created, &options.orthogonalityFirst))
       {
         ++report.flips23;
-        return true;
+        return FlipAttempt::Made;
       }
-  return false;
+      if (editor.lastReplaceDeferred)
+        return FlipAttempt::Deferred;
+    }
+  return FlipAttempt::None;
 }
 // What optimizeMesh's passes share. The passes work on a worklist, not on the whole mesh: the tets below
 // the target at the start of the call are collected once (`bad`); from then on the only tets whose quality
@@ -449,20 +462,26 @@ struct OptimizationPasses
     std::sort(out.begin(), out.end());
   }
 
-  // Flips on every bad tet (worst first; by slot on large meshes), and on the new tets still under qT.
+  // Flips on every bad tet (worst first; by slot on large meshes, where many are first flipped by regions on
+  // the threads), and on the new tets still under qT.
   void flipBadTets(double qT)
   {
     queue.clear();
     for (const auto& b : bad)
       queue.push_back(b.second);
     if (mesh.numTets() >= options.largeMeshTets)
+    {
       std::sort(queue.begin(), queue.end());
+      const int regions = regionFlipCount(options.regionTets, static_cast<int64_t>(queue.size()));
+      if (regions > 1 && !flipByRegions(qT, regions))
+        return;
+    }
     for (size_t k = 0; k < queue.size() && !askedToStop(k); ++k)
     {
       const int32_t t = queue[k];
       if (mesh.isFree(t) || tetQ(mesh, t) >= qT)
         continue;
-      if (tryFlipsOf(editor, t, options, report, created))
+      if (tryFlipsOf(editor, t, options, report, created) == FlipAttempt::Made)
       {
         ++changes;
         touched.insert(touched.end(), created.begin(), created.end());
@@ -472,6 +491,39 @@ struct OptimizationPasses
             queue.push_back(u);
       }
     }
+  }
+
+  // The queue's flips by regions on the threads (RegionFlips.h); the queue becomes what they left. False when
+  // cancelled (stopped).
+  bool flipByRegions(double qT, int regions)
+  {
+    std::atomic<int64_t> edgeRemovals(0), flips32(0), flips23(0);
+    auto attempt = [&](TetEditor& regionEditor, int32_t t, std::vector<int32_t>& made)
+    {
+      OptimizationReport counts;
+      const FlipAttempt a = tryFlipsOf(regionEditor, t, options, counts, made);
+      edgeRemovals += counts.edgeRemovals;
+      flips32 += counts.flips32;
+      flips23 += counts.flips23;
+      return a;
+    };
+    RegionFlipOutcome out;
+    const Status s = volgrid::flipByRegions(
+      editor, queue, regions, options.threads, qT, [&](int32_t t) { return tetQ(mesh, t); }, attempt, progress, out);
+    report.edgeRemovals += edgeRemovals;
+    report.flips32 += flips32;
+    report.flips23 += flips23;
+    changes += out.made;
+    report.flipsInRegions += out.made;
+    created.clear();
+    for (int32_t u : out.created)
+      if (!mesh.isFree(u))
+        created.push_back(u);
+    touched.insert(touched.end(), created.begin(), created.end());
+    changed(created);
+    queue.swap(out.deferred);
+    stopped = stopped || !s.ok();
+    return s.ok();
   }
 
   // Smoothing of the vertices of the tets under qT (in colour classes on all threads on large meshes).

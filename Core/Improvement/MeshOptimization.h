@@ -61,6 +61,10 @@ struct OptimizationOptions
   // stage (MeshImprovement.h) takes the same size for its own large-mesh choices (spatial renumbering,
   // one run with collapses from the start); tests lower it to take those paths on small meshes.
   int64_t largeMeshTets = kLargeMeshTets;
+  // On large meshes, a flip sweep of at least 2 x regionTets tets below the target is cut into regions of
+  // space of about regionTets of them each, flipped on all threads (RegionFlips.h); 0 = the default. The
+  // mesh does not depend on the thread count; it does on this (tests set it low to reach regions).
+  int64_t regionTets = 0;
   // Removal of unlocked vertices of the tets below vertexRemovalDegrees after the flips and moves of a
   // pass, by collapsing them onto a neighbour (see tryVertexCollapse); the removed vertex stays in
   // mesh.points, used by no tet (callers that write every point keep it off).
@@ -107,6 +111,7 @@ struct OptimizationReport
   int64_t flips23 = 0;
   int64_t edgeRemovals = 0; // of which 3-2 flips:
   int64_t flips32 = 0;
+  int64_t flipsInRegions = 0; // of the flips and edge removals, those made by regions on the threads
   int64_t smoothMoves = 0;
   int64_t vertexRemovals = 0;
   int64_t belowTargetBefore = 0, belowTargetAfter = 0;

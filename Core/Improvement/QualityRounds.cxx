@@ -113,6 +113,7 @@ Status QualityRounds::optimise(int maxPasses, std::vector<std::pair<double, int3
     stats.after.minDihedral = orep.minDihedralAfter; // what the rounds below decide on (summary: at the end)
     stats.optimizationPasses += orep.passes;
     stats.flips += orep.flips23 + orep.edgeRemovals;
+    stats.flipsInRegions += orep.flipsInRegions;
     stats.smoothMoves += orep.smoothMoves;
     const int64_t gained = orep.belowTargetBefore - orep.belowTargetAfter;
     const bool minImproved = orep.minDihedralAfter > orep.minDihedralBefore + 1.0;

@@ -360,6 +360,15 @@ bool MeshNavigator::replaceTets(const std::vector<int32_t>& oldTets, const std::
   return true;
 }
 
+int32_t MeshNavigator::takePooledSlot(const std::array<int32_t, 4>& q)
+{
+  // Written in place: newTet() would touch the mesh's free list and counters, which other threads share.
+  const int32_t t = slotPool->take();
+  std::copy(q.begin(), q.end(), mesh.tetVertices.begin() + 4 * static_cast<ptrdiff_t>(t));
+  std::fill_n(mesh.tetNeighbors.begin() + 4 * static_cast<ptrdiff_t>(t), 4, TetMesh::kNoNeighbor);
+  return t;
+}
+
 void MeshNavigator::commitReplacement(const std::vector<int32_t>& oldTets,
                                       const std::vector<std::array<int32_t, 4>>& newTets)
 {
@@ -368,15 +377,24 @@ void MeshNavigator::commitReplacement(const std::vector<int32_t>& oldTets,
   for (int32_t t : oldTets)
   {
     journalTet(t);
-    mesh.freeTet(t);
+    if (slotPool)
+      slotPool->give(mesh, t);
+    else
+      mesh.freeTet(t);
   }
   std::vector<int32_t>& ids = replaceIds_;
   ids.resize(newTets.size());
   for (size_t n = 0; n < newTets.size(); ++n)
   {
     const auto& q = newTets[n];
-    journalTet(mesh.freeListHead());
-    const int32_t t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    int32_t t;
+    if (slotPool)
+      t = takePooledSlot(q);
+    else
+    {
+      journalTet(mesh.freeListHead());
+      t = mesh.newTet(q[0], q[1], q[2], q[3]);
+    }
     mesh.tetFlags[t] = userBits;
     ids[n] = t;
     for (int i = 0; i < 4; ++i)
@@ -441,12 +459,7 @@ void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone
     const auto& q = cone.tets[k];
     int32_t t;
     if (slotPool)
-    {
-      // Written in place: newTet() would touch the mesh's free list and counters, which other threads share.
-      t = slotPool->take();
-      std::copy(q.begin(), q.end(), mesh.tetVertices.begin() + 4 * static_cast<ptrdiff_t>(t));
-      std::fill_n(mesh.tetNeighbors.begin() + 4 * static_cast<ptrdiff_t>(t), 4, TetMesh::kNoNeighbor);
-    }
+      t = takePooledSlot(q);
     else
     {
       journalTet(mesh.freeListHead());

@@ -62,6 +62,16 @@ public:
   }
   // A live tet incident to v, or -1 (v in no tet), under the StaleEntries rule.
   int32_t tetOf(int32_t v);
+  // The tets `made` were created by another editor (a thread's, without a map): the live ones become their
+  // vertices' entries (every vertex whose entry such edits destroyed is in one of them; refreshVertexMap()
+  // then makes the entries canonical).
+  void mapTetsMadeElsewhere(const std::vector<int32_t>& made)
+  {
+    for (int32_t t : made)
+      if (!mesh.isFree(t))
+        for (int i = 0; i < 4; ++i)
+          mapVertex(mesh.vertex(t, i), t);
+  }
   // After an edit that leaves v in no tet (a vertex removal): tetOf(v) = -1 from then on.
   void forgetVertex(int32_t v)
   {
@@ -107,9 +117,9 @@ public:
   EditJournal* journal = nullptr;
   // Optional per-tet-slot labels (region tags): new tets take the first old tet's, resized as tets are made.
   std::vector<int32_t>* labels = nullptr;
-  // Optional slots of this editor's own (TetSlotPool.h): point insertions (replaceByCone) take their new slots
-  // from it and give the freed ones back, instead of the mesh's free list. The caller sizes `labels` to the
-  // mesh's capacity first, so that no thread grows it. Not with a journal (pooled slots are not saved).
+  // Optional slots of this editor's own (TetSlotPool.h): point insertions (replaceByCone) and replacements take
+  // their new slots from it and give the freed ones back, instead of the mesh's free list. The caller sizes `labels` to
+  // the mesh's capacity first, so that no thread grows it. Not with a journal (pooled slots are not saved).
   TetSlotPool* slotPool = nullptr;
 
 protected:
@@ -191,6 +201,8 @@ private:
       written_.push_back(v);
     }
   }
+  // A slot of slotPool holding tet q (no neighbours yet).
+  int32_t takePooledSlot(const std::array<int32_t, 4>& q);
   // replaceTets() once its faces matched: the mesh edit itself.
   void commitReplacement(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets);
   // replaceTets() scratch: a face by its sorted vertex triple; owner -1 for an old outer face (code: its

@@ -176,7 +176,20 @@ bool TetEditor::edgeRing(int32_t t, int32_t x, int32_t y, std::vector<int32_t>& 
 bool TetEditor::replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                         std::vector<int32_t>* created)
 {
-  if (oldTets.empty() || !replaceTets(oldTets, newTets, created, false))
+  lastReplaceDeferred = false;
+  if (oldTets.empty())
+    return false;
+  bool outside = false;
+  if (regionLimit)
+    for (int32_t t : oldTets)
+      outside = outside || !regionLimit->owns(mesh.vertices(t));
+  if (outside ||
+      (slotPool && slotPool->available() + static_cast<int64_t>(oldTets.size()) < static_cast<int64_t>(newTets.size())))
+  {
+    lastReplaceDeferred = true;
+    return false;
+  }
+  if (!replaceTets(oldTets, newTets, created, false))
     return false;
   ++replacements;
   return true;

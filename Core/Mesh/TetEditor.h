@@ -100,9 +100,11 @@ public:
 
   // Replace oldTets (at least one) by newTets (vertex quadruples, positively oriented, filling the same
   // region): MeshNavigator::replaceTets, closed regions only. False (mesh untouched) when the faces do not
-  // match. created (optional) receives the new tet ids.
+  // match. created (optional) receives the new tet ids. With regionLimit, only when every old tet is the
+  // region's, and with slotPool only when it has the slots; else false with lastReplaceDeferred set.
   bool replace(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets,
                std::vector<int32_t>* created = nullptr);
+  bool lastReplaceDeferred = false;
 
   // Visibility walk from `start` to a tet whose closure contains p; -1 if the walk leaves the mesh
   // (p outside, or behind a boundary concavity) or does not converge.
@@ -119,9 +121,9 @@ public:
     Deferred   // with a region: the cavity needs a tet outside it, or more slots than slotPool has; nothing changed
   };
   // Optional limit for a thread that edits one region of the mesh while others edit theirs
-  // (FieldPointRegions.h): vertexRegion[v] is v's region, and insertPoint() removes only tets whose four
-  // vertices are all in `region` (else Deferred). Tets of two different regions never share a face, so
-  // the cavity's outer neighbours are then this region's tets or tets no thread removes.
+  // (FieldPointRegions.h, RegionFlips.h): vertexRegion[v] is v's region, and insertPoint() and replace()
+  // remove only tets whose four vertices are all in `region` (else Deferred). Tets of two different regions never share
+  // a face, so the cavity's outer neighbours are then this region's tets or tets no thread removes.
   struct RegionLimit
   {
     const uint8_t* vertexRegion = nullptr;

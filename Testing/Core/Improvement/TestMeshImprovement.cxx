@@ -435,8 +435,9 @@ TEST(MeshImprovement, ACapInsideABoxOfTwelveTrianglesHolds)
 }
 
 // From OptimizationOptions::largeMeshTets on, the stage works in memory order (spatial renumbering, flips by
-// slot, smoothing in colour classes on all threads, one run with vertex collapses from the start), and from
-// 2 x FieldPointOptions::regionTets tets a field point pass is inserted by regions on the threads. Both forced
+// slot and by regions on the threads, smoothing in colour classes on all threads, one run with vertex
+// collapses from the start), and from 2 x FieldPointOptions::regionTets tets a field point pass is inserted by
+// regions on the threads. Both forced
 // here on the small sphere-in-sphere domain: the mesh is valid with the exact boundary and volume, as good
 // as the small-mesh path's within 3 degrees, and the same mesh at 1, 2 and 8 threads (README: Threads).
 TEST(MeshImprovement, LargeMeshPathIsExactAndTheSameOnAnyThreadCount)
@@ -451,8 +452,10 @@ TEST(MeshImprovement, LargeMeshPathIsExactAndTheSameOnAnyThreadCount)
     o.threads = threads;
     o.improvement.optimization.largeMeshTets = 0;
     o.improvement.fieldPointOptions.regionTets = 2048;
+    o.improvement.optimization.regionTets = 32;
     results.push_back(meshChecked(s, o, "large-mesh path"));
     EXPECT_GT(results.back().stats.improvement.fieldPointsInRegions, 0) << threads;
+    EXPECT_GT(results.back().stats.improvement.flipsInRegions, 0) << threads;
     const DihedralSummary d = dihedralsOf(results.back());
     EXPECT_EQ(d.inverted, 0) << threads;
     EXPECT_GE(d.minDihedral, ds.minDihedral - 3.0) << threads;

@@ -315,6 +315,47 @@ TEST(MeshOptimization, VertexCollapseRemovesAnInteriorPointSqueezedAgainstAFace)
   EXPECT_FALSE(tryVertexCollapse(editor, p, nullptr));           // in no tet any more
 }
 
+// Large meshes flip their many bad tets by regions of space on all threads first (RegionFlips.h; forced
+// here on a small mesh with regions of 64 bad tets): the result is the same mesh at 1, 2 and 8 threads,
+// valid with the boundary untouched, the regions made many of the flips, and the mesh is as good as the
+// slot-order sweep's on one thread without regions.
+TEST(MeshOptimization, FlipsByRegionsGiveTheSameMeshOnAnyThreadCount)
+{
+  TetMesh start;
+  fieldMesh(EnclosureShape::Sphere, 0.12, start);
+  OptimizationOptions oo;
+  oo.targetDegrees = 35; // many tets below: thousands of flips
+  oo.largeMeshTets = 0;
+  oo.regionTets = int64_t{ 1 } << 40; // no regions: the slot-order sweep
+  TetMesh bySlot = start;
+  const OptimizationReport slotReport = optimiseAndCheck(bySlot, oo);
+  EXPECT_EQ(slotReport.flipsInRegions, 0);
+  oo.regionTets = 64;
+  std::vector<TetMesh> results;
+  for (int threads : { 1, 2, 8 })
+  {
+    oo.threads = threads;
+    TetMesh mesh = start;
+    const OptimizationReport rep = optimiseAndCheck(mesh, oo);
+    const int64_t flips = rep.flips23 + rep.edgeRemovals;
+    std::printf("threads %d: %lld flips, %lld by regions; min %.2f (slot order %.2f), %lld under the target (%lld)\n",
+                threads, static_cast<long long>(flips), static_cast<long long>(rep.flipsInRegions),
+                rep.after.minDihedral, slotReport.after.minDihedral, static_cast<long long>(rep.belowTargetAfter),
+                static_cast<long long>(slotReport.belowTargetAfter));
+    EXPECT_GT(rep.flipsInRegions, flips / 3); // the later passes have too few bad tets for regions
+    EXPECT_GE(rep.after.minDihedral, slotReport.after.minDihedral - 3.0);
+    EXPECT_LE(rep.belowTargetAfter, slotReport.belowTargetAfter * 5 / 4 + 10);
+    results.push_back(std::move(mesh));
+  }
+  for (size_t k = 1; k < results.size(); ++k)
+  {
+    EXPECT_EQ(results[k].points, results[0].points) << k;
+    EXPECT_EQ(results[k].tetVertices, results[0].tetVertices) << k;
+    EXPECT_EQ(results[k].tetNeighbors, results[0].tetNeighbors) << k;
+  }
+  EXPECT_NE(results[0].tetVertices, bySlot.tetVertices); // the regions flipped in another order
+}
+
 // Large meshes smooth in colour classes on all threads (largeMeshTets, forced here on a small
 // mesh): the result is the same mesh at 1, 2 and 8 threads, valid, with the boundary untouched, and as
 // good as the one-by-one order's.
