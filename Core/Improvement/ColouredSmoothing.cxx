@@ -60,7 +60,7 @@ std::vector<std::vector<int32_t>> colourClasses(const std::vector<int32_t>& vert
 } // namespace
 
 void smoothColoured(TetEditor& editor, const std::vector<int32_t>& vertices, const SmoothingOptions& options,
-                    int threads, std::vector<SmoothMove>& moves, const OrthogonalityFirst* rule)
+                    int threads, std::vector<SmoothMove>& moves, const OrthogonalityFirst* rule, Progress* progress)
 {
   moves.assign(vertices.size(), SmoothMove::None);
   if (vertices.empty())
@@ -78,8 +78,12 @@ void smoothColoured(TetEditor& editor, const std::vector<int32_t>& vertices, con
     std::sort(star.begin(), star.end());
     return countRegion(mesh, star, *rule);
   };
+  bool first = true;
   for (const std::vector<int32_t>& members : colourClasses(vertices, s, mesh.numVertices()))
   {
+    if (!first && progress && progress->cancelled())
+      return;
+    first = false;
     if (ruled)
     {
       before.resize(members.size());

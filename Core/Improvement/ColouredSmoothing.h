@@ -9,6 +9,7 @@
 
 #include "MeshSmoothing.h"
 #include "OrthogonalityFirst.h"
+#include "Progress.h"
 
 #include <cstdint>
 #include <vector>
@@ -22,7 +23,10 @@ namespace volgrid
 // rule (optional, OrthogonalityFirst.h): once a class has moved, a move whose star the rule binds and now
 // holds more tets under the target or more severe faces is undone (in list order; the counts are taken
 // with the whole class moved, so they do not depend on the threads either).
+// progress (optional) is asked before each class but the first; when it says stop, the classes left do not
+// move (their moves stay None).
 void smoothColoured(TetEditor& editor, const std::vector<int32_t>& vertices, const SmoothingOptions& options,
-                    int threads, std::vector<SmoothMove>& moves, const OrthogonalityFirst* rule = nullptr);
+                    int threads, std::vector<SmoothMove>& moves, const OrthogonalityFirst* rule = nullptr,
+                    Progress* progress = nullptr);
 
 } // namespace volgrid

@@ -55,13 +55,14 @@ double degreesToQuality(double degrees)
 class LowTets
 {
 public:
-  LowTets(const TetMesh& mesh, double limit, int threads)
+  // progress (optional): asked during the sweep; when it says stop, the list is incomplete (the caller stops).
+  LowTets(const TetMesh& mesh, double limit, int threads, Progress* progress = nullptr)
     : mesh_(mesh)
     , limit_(limit)
     , threads_(threads)
   {
     std::vector<std::pair<double, int32_t>> low;
-    collectSineBelow(mesh, limit, threads, low);
+    collectSineBelow(mesh, limit, threads, low, progress);
     for (const auto& e : low)
       tets_.push_back(entry(e.first, e.second));
     std::sort(tets_.begin(), tets_.end());
@@ -732,7 +733,7 @@ int64_t improveWorstByInsertion(TetMesh& mesh, const FaceConstraints* constraint
     // pushes into the second's).
     if (!low)
     {
-      low = std::make_unique<LowTets>(mesh, lowLimit, options.threads);
+      low = std::make_unique<LowTets>(mesh, lowLimit, options.threads, progress);
       if (stop())
         return kept;
     }

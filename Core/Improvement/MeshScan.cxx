@@ -59,36 +59,36 @@ int64_t countSineBelow(const TetMesh& mesh, double q, int threads)
   return total;
 }
 
-void collectSineBelow(const TetMesh& mesh, double q, int threads, std::vector<std::pair<double, int32_t>>& out)
+bool collectSineBelow(const TetMesh& mesh, double q, int threads, std::vector<std::pair<double, int32_t>>& out,
+                      Progress* progress)
 {
   out.clear();
   const int64_t n = mesh.tetCapacity();
-  const int k = parallelRanges(threads, n, kMinPerThread);
-  if (k == 1)
+  const int64_t block = progress ? kSlotsPerQuestion : std::max<int64_t>(n, 1);
+  std::vector<std::vector<std::pair<double, int32_t>>> part;
+  for (int64_t first = 0; first < n; first += block)
   {
-    forLive(mesh, 0, n,
-            [&](int32_t t)
-            {
-              const double qt = quality(mesh, t);
-              if (qt < q)
-                out.emplace_back(qt, t);
-            });
-    return;
+    if (first > 0 && progress->cancelled())
+      return false;
+    const int64_t count = std::min(block, n - first);
+    part.assign(static_cast<size_t>(parallelRanges(threads, count, kMinPerThread)), {});
+    parallelFor(threads, count, kMinPerThread,
+                [&](int r, int64_t begin, int64_t end)
+                {
+                  auto& mine = part.size() == 1 ? out : part[static_cast<size_t>(r)];
+                  forLive(mesh, first + begin, first + end,
+                          [&](int32_t t)
+                          {
+                            const double qt = quality(mesh, t);
+                            if (qt < q)
+                              mine.emplace_back(qt, t);
+                          });
+                });
+    if (part.size() > 1)
+      for (const auto& p : part) // in slot order: the same for any split
+        out.insert(out.end(), p.begin(), p.end());
   }
-  std::vector<std::vector<std::pair<double, int32_t>>> part(static_cast<size_t>(k));
-  parallelFor(threads, n, kMinPerThread,
-              [&](int r, int64_t begin, int64_t end)
-              {
-                forLive(mesh, begin, end,
-                        [&](int32_t t)
-                        {
-                          const double qt = quality(mesh, t);
-                          if (qt < q)
-                            part[static_cast<size_t>(r)].emplace_back(qt, t);
-                        });
-              });
-  for (const auto& p : part)
-    out.insert(out.end(), p.begin(), p.end());
+  return true;
 }
 
 void collectSineBelowAmong(const TetMesh& mesh, double q, std::vector<int32_t>& candidates,

@@ -60,9 +60,10 @@ std::vector<int32_t> tetOrder(const TetMesh& mesh, const std::vector<int32_t>& v
   return oldToNew;
 }
 
-// Applies the maps one array at a time (the extra memory is one array, not a second mesh); each array on
-// the threads (every entry goes to its own new place).
-void permute(TetMesh& mesh, const SpatialRenumbering& r, int threads)
+// The new vertex numbers, applied one array at a time (the extra memory is one array, not a second mesh),
+// each on the threads: the points move and the tets take the new numbers in place. The mesh is valid
+// afterwards (the same tets in the same slots, its vertices renumbered).
+void renumberVertices(TetMesh& mesh, const SpatialRenumbering& r, int threads)
 {
   std::vector<double> points(mesh.points.size());
   parallelFor(threads, static_cast<int64_t>(r.vertexOldToNew.size()), kMinPerThread,
@@ -74,6 +75,22 @@ void permute(TetMesh& mesh, const SpatialRenumbering& r, int threads)
               });
   mesh.points.swap(points);
   std::vector<double>().swap(points);
+  parallelFor(threads, mesh.tetCapacity(), kMinPerThread,
+              [&](int, int64_t begin, int64_t end)
+              {
+                for (int64_t t = begin; t < end; ++t)
+                  if (r.tetOldToNew[static_cast<size_t>(t)] >= 0)
+                    for (int i = 0; i < 4; ++i)
+                    {
+                      int32_t& v = mesh.tetVertices[4 * static_cast<size_t>(t) + i];
+                      v = r.vertexOldToNew[static_cast<size_t>(v)];
+                    }
+              });
+}
+
+// The new tet slots, one array at a time as above: every live slot's entries go to its own new place.
+void moveTets(TetMesh& mesh, const SpatialRenumbering& r, int threads)
+{
   const size_t live = static_cast<size_t>(mesh.numTets());
   const int64_t slots = mesh.tetCapacity();
   // body(t, n) for each live slot t and its new slot n = tetOldToNew[t] (a template: no call through a
@@ -89,12 +106,7 @@ void permute(TetMesh& mesh, const SpatialRenumbering& r, int threads)
                 });
   };
   std::vector<int32_t> words(4 * live);
-  overLiveSlots(
-    [&](size_t t, size_t n)
-    {
-      for (int i = 0; i < 4; ++i)
-        words[4 * n + i] = r.vertexOldToNew[static_cast<size_t>(mesh.tetVertices[4 * t + i])];
-    });
+  overLiveSlots([&](size_t t, size_t n) { std::copy_n(mesh.tetVertices.data() + 4 * t, 4, words.data() + 4 * n); });
   mesh.tetVertices.swap(words);
   words.assign(4 * live, TetMesh::kNoNeighbor);
   overLiveSlots(
@@ -126,7 +138,10 @@ SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex, int thre
   r.tetOldToNew = tetOrder(mesh, r.vertexOldToNew, threads);
   if (stop())
     return SpatialRenumbering();
-  permute(mesh, r, threads);
+  renumberVertices(mesh, r, threads);
+  if (stop()) // valid, with its vertices renumbered: the caller, asking again, stops too
+    return SpatialRenumbering();
+  moveTets(mesh, r, threads);
   mesh.restoreBookkeeping({ -1, 0, 0 }); // compact: no free slot, no ghost
   return r;
 }

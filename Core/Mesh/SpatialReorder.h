@@ -33,9 +33,10 @@ struct SpatialRenumbering
 };
 
 // Renumbers mesh (see above); the returned maps let the caller carry per-vertex and per-tet arrays over.
-// A mesh with ghost tets is left as it is (empty maps). progress (optional) is asked between the three
-// steps (each about a tenth of a second at 5M tets); when it says stop before the last, the mesh is left
-// as it is and the maps are empty (the caller, asking again, stops without carrying arrays over).
+// A mesh with ghost tets is left as it is (empty maps). progress (optional) is asked between the four
+// steps (each about a tenth of a second at 5M tets); when it says stop, the maps are empty and the mesh is
+// valid: as it was, or with its vertices renumbered after the third (the caller, asking again, stops
+// without carrying arrays over).
 SpatialRenumbering reorderSpatially(TetMesh& mesh, int32_t firstVertex, int threads = 1, Progress* progress = nullptr);
 
 // Carries a per-tet-slot array over (entries of free slots dropped, the array sized to the new slots).

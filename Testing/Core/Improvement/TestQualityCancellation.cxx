@@ -5,7 +5,10 @@
 #include "Mesh/RandomDelaunay.h"
 #include "MeshChecker.h"
 #include "MeshOptimization.h"
+#include "MeshScan.h"
 
+#include <algorithm>
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace volgrid;
@@ -113,13 +116,43 @@ TEST(QualityCancellation, OptimisationStopsWithinAPass)
   OptimizationReport onePass, stopped;
   ASSERT_TRUE(optimizeMesh(full, nullptr, nullptr, nullptr, options, nullptr, &onePass).ok());
   ASSERT_GT(onePass.belowTargetBefore, 2048); // the pass has more than 1024 bad tets to go through
-  // The set-up asks twice (after the editor's map, after the sweep for the bad tets), the pass's start third,
-  // its 1024th bad tet fourth.
-  CancelFrom progress(4);
+  // The set-up asks three times (after the editor's map, after the locks, after the sweep for the bad tets:
+  // one block of slots), the pass's start fourth, its 1024th bad tet fifth.
+  CancelFrom progress(5);
   const Status s = optimizeMesh(cancelled, nullptr, nullptr, nullptr, options, &progress, &stopped);
   EXPECT_EQ(s.kind, ErrorKind::Cancelled);
-  EXPECT_EQ(progress.questions, 4);
+  EXPECT_EQ(progress.questions, 5);
   EXPECT_GT(stopped.flips23 + stopped.edgeRemovals, 0);                                      // it had begun,
   EXPECT_LT(stopped.flips23 + stopped.edgeRemovals, onePass.flips23 + onePass.edgeRemovals); // not finished
   expectValid(cancelled);
+}
+
+// The whole-mesh sweep for the bad tets asks between blocks of kSlotsPerQuestion slots (a sweep of 5M tets
+// takes a quarter of a second on one thread): here a mesh whose live tets sit in three such blocks (free
+// slots between them). Never told to stop, it gives what the sweep without questions gives; told to stop at
+// its first question, it stops after the first block.
+TEST(QualityCancellation, TheSweepForBadTetsAsksBetweenBlocks)
+{
+  TetMesh mesh;
+  randomDelaunay(mesh, 2000, 3);
+  const int32_t live = mesh.tetCapacity();
+  const int32_t first = mesh.appendTets(static_cast<int32_t>(2 * kSlotsPerQuestion));
+  for (int32_t t = first; t < mesh.tetCapacity(); ++t)
+    mesh.tetFlags[static_cast<size_t>(t)] = TetMesh::kFree;
+  // The live tets again at the end (a copy: quality is all the sweep reads).
+  const int32_t copy = mesh.appendTets(live);
+  std::copy_n(mesh.tetVertices.begin(), 4 * static_cast<size_t>(live),
+              mesh.tetVertices.begin() + 4 * static_cast<ptrdiff_t>(copy));
+  std::copy_n(mesh.tetFlags.begin(), live, mesh.tetFlags.begin() + copy);
+  const double q = std::sin(20.0 * 3.14159265358979323846 / 180.0);
+  std::vector<std::pair<double, int32_t>> plain, asked, stopped;
+  ASSERT_TRUE(collectSineBelow(mesh, q, 2, plain));
+  ASSERT_GT(plain.size(), 0u);
+  CancelFrom never(1 << 30), atOnce(1);
+  EXPECT_TRUE(collectSineBelow(mesh, q, 2, asked, &never));
+  EXPECT_EQ(never.questions, 2); // between the three blocks
+  EXPECT_EQ(asked, plain);
+  EXPECT_FALSE(collectSineBelow(mesh, q, 2, stopped, &atOnce));
+  EXPECT_EQ(atOnce.questions, 1);
+  EXPECT_EQ(2 * stopped.size(), plain.size()); // the first block's half
 }
