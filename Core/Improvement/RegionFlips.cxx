@@ -66,11 +66,7 @@ void flipRegion(TetEditor& editor, uint8_t r, const std::vector<uint8_t>& vertex
 
 int regionFlipCount(int64_t regionTets, int64_t tets)
 {
-  const int64_t perRegion = regionTets > 0 ? regionTets : kBadTetsPerRegion;
-  int regions = 1;
-  while (regions < kMaxRegions && tets / (2 * regions) >= perRegion)
-    regions *= 2;
-  return regions;
+  return regionCountFor(tets, regionTets > 0 ? regionTets : kBadTetsPerRegion, kMaxRegions);
 }
 
 Status flipByRegions(TetEditor& mainEditor, const std::vector<int32_t>& sweep, int regions, int threads, double aim,

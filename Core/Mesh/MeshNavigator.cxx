@@ -360,8 +360,13 @@ bool MeshNavigator::replaceTets(const std::vector<int32_t>& oldTets, const std::
   return true;
 }
 
-int32_t MeshNavigator::takePooledSlot(const std::array<int32_t, 4>& q)
+int32_t MeshNavigator::placeNewTet(const std::array<int32_t, 4>& q)
 {
+  if (!slotPool)
+  {
+    journalTet(mesh.freeListHead());
+    return mesh.newTet(q[0], q[1], q[2], q[3]);
+  }
   // Written in place: newTet() would touch the mesh's free list and counters, which other threads share.
   const int32_t t = slotPool->take();
   std::copy(q.begin(), q.end(), mesh.tetVertices.begin() + 4 * static_cast<ptrdiff_t>(t));
@@ -387,14 +392,7 @@ void MeshNavigator::commitReplacement(const std::vector<int32_t>& oldTets,
   for (size_t n = 0; n < newTets.size(); ++n)
   {
     const auto& q = newTets[n];
-    int32_t t;
-    if (slotPool)
-      t = takePooledSlot(q);
-    else
-    {
-      journalTet(mesh.freeListHead());
-      t = mesh.newTet(q[0], q[1], q[2], q[3]);
-    }
+    const int32_t t = placeNewTet(q);
     mesh.tetFlags[t] = userBits;
     ids[n] = t;
     for (int i = 0; i < 4; ++i)
@@ -457,14 +455,7 @@ void MeshNavigator::replaceByCone(const std::vector<int32_t>& cavity, const Cone
   for (size_t k = 0; k < n; ++k)
   {
     const auto& q = cone.tets[k];
-    int32_t t;
-    if (slotPool)
-      t = takePooledSlot(q);
-    else
-    {
-      journalTet(mesh.freeListHead());
-      t = mesh.newTet(q[0], q[1], q[2], q[3]);
-    }
+    const int32_t t = placeNewTet(q);
     mesh.tetFlags[t] = userBits;
     ids[k] = t;
     const int i = cone.apexAt[k];

@@ -201,8 +201,8 @@ private:
       written_.push_back(v);
     }
   }
-  // A slot of slotPool holding tet q (no neighbours yet).
-  int32_t takePooledSlot(const std::array<int32_t, 4>& q);
+  // A new slot holding tet q (no neighbours yet): from slotPool when there is one, else the mesh's (journaled).
+  int32_t placeNewTet(const std::array<int32_t, 4>& q);
   // replaceTets() once its faces matched: the mesh edit itself.
   void commitReplacement(const std::vector<int32_t>& oldTets, const std::vector<std::array<int32_t, 4>>& newTets);
   // replaceTets() scratch: a face by its sorted vertex triple; owner -1 for an old outer face (code: its

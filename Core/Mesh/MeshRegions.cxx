@@ -13,6 +13,14 @@ constexpr size_t kBoxSample = 32768;
 
 } // namespace
 
+int regionCountFor(int64_t tets, int64_t perRegion, int maxRegions)
+{
+  int regions = 1;
+  while (regions < maxRegions && tets / (2 * regions) >= perRegion)
+    regions *= 2;
+  return regions;
+}
+
 void tetCentroid(const TetMesh& mesh, int32_t t, double* c)
 {
   const int32_t* v = mesh.vertices(t);

@@ -20,6 +20,9 @@ namespace volgrid
 
 constexpr uint8_t kSpansRegions = 255; // a tet whose vertices lie in two or more boxes
 
+// How many regions a job of `tets` tets is cut into: the largest power of two up to maxRegions that leaves
+// each region at least perRegion tets, or 1. It depends on the job alone, never on the thread count.
+int regionCountFor(int64_t tets, int64_t perRegion, int maxRegions);
 // The centroid of tet t into c[0..2].
 void tetCentroid(const TetMesh& mesh, int32_t t, double* c);
 // The boxes of `regions` (a power of two), from the centroids of (a sample of at most about 65,536 of) tets.

@@ -173,11 +173,7 @@ void closeRegions(TetMesh& mesh, int32_t meshVertices, int32_t firstTemporaryId,
 
 int fieldPointRegionCount(int64_t regionTets, int64_t todoTets)
 {
-  const int64_t perRegion = regionTets > 0 ? regionTets : kTodoTetsPerRegion;
-  int regions = 1;
-  while (regions < kMaxRegions && todoTets / (2 * regions) >= perRegion)
-    regions *= 2;
-  return regions;
+  return regionCountFor(todoTets, regionTets > 0 ? regionTets : kTodoTetsPerRegion, kMaxRegions);
 }
 
 FieldPointRegions::FieldPointRegions(TetEditor& editor, int threads)

@@ -72,6 +72,16 @@ OptimizationReport optimiseAndCheck(TetMesh& mesh, const OptimizationOptions& oo
   EXPECT_EQ(boundaryCoordinates(mesh, faces0), xyz0);
   return rep;
 }
+// The meshes are the same: points, tets and adjacency, slot by slot.
+void expectTheSameMeshes(const std::vector<TetMesh>& results)
+{
+  for (size_t k = 1; k < results.size(); ++k)
+  {
+    EXPECT_EQ(results[k].points, results[0].points) << k;
+    EXPECT_EQ(results[k].tetVertices, results[0].tetVertices) << k;
+    EXPECT_EQ(results[k].tetNeighbors, results[0].tetNeighbors) << k;
+  }
+}
 } // namespace
 
 TEST(MeshOptimization, ImprovesMinDihedralAndKeepsBoundary)
@@ -347,12 +357,7 @@ TEST(MeshOptimization, FlipsByRegionsGiveTheSameMeshOnAnyThreadCount)
     EXPECT_LE(rep.belowTargetAfter, slotReport.belowTargetAfter * 5 / 4 + 10);
     results.push_back(std::move(mesh));
   }
-  for (size_t k = 1; k < results.size(); ++k)
-  {
-    EXPECT_EQ(results[k].points, results[0].points) << k;
-    EXPECT_EQ(results[k].tetVertices, results[0].tetVertices) << k;
-    EXPECT_EQ(results[k].tetNeighbors, results[0].tetNeighbors) << k;
-  }
+  expectTheSameMeshes(results);
   EXPECT_NE(results[0].tetVertices, bySlot.tetVertices); // the regions flipped in another order
 }
 
@@ -381,12 +386,7 @@ TEST(MeshOptimization, SmoothingInColourClassesGivesTheSameMeshOnAnyThreadCount)
     EXPECT_LE(rep.belowTargetAfter, sequentialReport.belowTargetAfter * 5 / 4 + 10);
     results.push_back(std::move(mesh));
   }
-  for (size_t k = 1; k < results.size(); ++k)
-  {
-    EXPECT_EQ(results[k].points, results[0].points) << k;
-    EXPECT_EQ(results[k].tetVertices, results[0].tetVertices) << k;
-    EXPECT_EQ(results[k].tetNeighbors, results[0].tetNeighbors) << k;
-  }
+  expectTheSameMeshes(results);
   // The colour classes do move differently from the one-by-one order (else this test shows nothing).
   EXPECT_NE(results[0].points, sequential.points);
 }
