@@ -21,7 +21,7 @@ namespace volgrid
 {
 
 // The regions for a sweep of `tets` tets: a power of two, or 1 when the sweep is too small to be worth it.
-// regionTets: the smallest region's share of the sweep (0 = the default, kBadTetsPerRegion). It depends on
+// regionTets: the smallest region's share of the sweep (0 = the default, 4,096). It depends on
 // the sweep alone, never on the thread count.
 int regionFlipCount(int64_t regionTets, int64_t tets);
 
