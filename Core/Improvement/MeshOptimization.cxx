@@ -149,10 +149,38 @@ bool addsTetsUnderTarget(const TetMesh& m, const OrthogonalityFirst* rule, doubl
     after += tetQ(m, q[0], q[1], q[2], q[3]) < rule->targetQuality;
   return after > before;
 }
+
+// Whether `replacement` pays for tets whose Region is `old`: each new tet over its floor, and
+// TetNeeds::pays. now: the Region of the replacement.
+bool paysForNeeds(const TetMesh& m, const TetNeeds& needs, const TetNeeds::Region& old,
+                  const std::vector<std::array<int32_t, 4>>& replacement, TetNeeds::Region& now)
+{
+  now = TetNeeds::Region();
+  for (const auto& q : replacement)
+  {
+    const double quality = tetQ(m, q[0], q[1], q[2], q[3]);
+    if (needs.newScore(old, q.data(), quality) < 0)
+      return false;
+    needs.add(now, q.data(), quality);
+  }
+  return needs.pays(old, now);
+}
+
+// editor.replace, and with needs its counts after the edit (TetNeeds::record).
+bool replaceFor(TetEditor& editor, const std::vector<int32_t>& old, const std::vector<std::array<int32_t, 4>>& tets,
+                std::vector<int32_t>* created, const TetNeeds* needs, const TetNeeds::Region& oldRegion,
+                const TetNeeds::Region& newRegion)
+{
+  if (!editor.replace(old, tets, created))
+    return false;
+  if (needs)
+    needs->record(oldRegion, newRegion);
+  return true;
+}
 } // namespace
 
 bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created,
-                    const OrthogonalityFirst* rule)
+                    const OrthogonalityFirst* rule, const TetNeeds* needs)
 {
   Scratch& s = scratch();
   TetMesh& m = editor.mesh;
@@ -162,16 +190,24 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
   double qOld = 2;
   for (int32_t u : s.tets)
     qOld = std::min(qOld, tetQ(m, u));
+  const TetNeeds::Region old = needs ? needs->region(m, s.tets) : TetNeeds::Region();
   const std::vector<int32_t>& r = s.ring;
+  // A tet's score: its quality, or with needs its score (TetNeeds.h).
+  auto tetScore = [&](int32_t a, int32_t b, int32_t c, int32_t d)
+  {
+    const double q = tetQ(m, a, b, c, d);
+    const int32_t w[4] = { a, b, c, d };
+    return needs ? needs->newScore(old, w, q) : q;
+  };
   // Only a triangulation better than the old star is used: the DP's floor. A split that cannot beat the
   // chord's best so far is skipped without its second tet.
-  const double floor = std::max(qOld, 0.0);
+  const double floor = needs ? old.score : std::max(qOld, 0.0);
   auto score = [&](int i, int k, int j, double bound)
   {
-    const double q1 = tetQ(m, r[i], r[k], r[j], y);
+    const double q1 = tetScore(r[i], r[k], r[j], y);
     if (!(q1 > bound))
       return q1;
-    return std::min(q1, tetQ(m, r[i], r[j], r[k], x));
+    return std::min(q1, tetScore(r[i], r[j], r[k], x));
   };
   if (!maxMinTriangulation(n, floor, s.Q, s.K, score))
     return false;
@@ -180,12 +216,15 @@ bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxR
   for (const auto& q : s.newTets)
     if (!positive(m, q))
       return false;
-  if (addsTetsUnderTarget(m, rule, qOld, s.tets, s.newTets))
+  TetNeeds::Region now;
+  if (addsTetsUnderTarget(m, rule, qOld, s.tets, s.newTets) ||
+      (needs && !paysForNeeds(m, *needs, old, s.newTets, now)))
     return false;
-  return editor.replace(s.tets, s.newTets, created); // replace() does not touch this scratch
+  return replaceFor(editor, s.tets, s.newTets, created, needs, old, now); // replace() does not touch this scratch
 }
 
-bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created, const OrthogonalityFirst* rule)
+bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created, const OrthogonalityFirst* rule,
+               const TetNeeds* needs)
 {
   TetMesh& m = editor.mesh;
   if (editor.isConstrainedFace(t, face))
@@ -201,22 +240,26 @@ bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* cre
   nt.push_back({ f[0], f[1], e, d });
   nt.push_back({ f[1], f[2], e, d });
   nt.push_back({ f[2], f[0], e, d });
+  std::vector<int32_t>& old = scratch().tets;
+  old.assign({ t, u });
   double qNew = 2;
   for (const auto& q : nt)
     qNew = std::min(qNew, tetQ(m, q[0], q[1], q[2], q[3]));
-  if (!(qNew > qOld) || !(qNew > 0))
+  const TetNeeds::Region oldRegion = needs ? needs->region(m, old) : TetNeeds::Region();
+  TetNeeds::Region now;
+  if (needs ? !paysForNeeds(m, *needs, oldRegion, nt, now) : !(qNew > qOld))
+    return false;
+  if (!(qNew > 0))
     return false;
   for (const auto& q : nt)
     if (!positive(m, q))
       return false;
-  std::vector<int32_t>& old = scratch().tets;
-  old.assign({ t, u });
   if (addsTetsUnderTarget(m, rule, qOld, old, nt))
     return false;
-  return editor.replace(old, nt, created);
+  return replaceFor(editor, old, nt, created, needs, oldRegion, now);
 }
 
-bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created)
+bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created, const TetNeeds* needs)
 {
   Scratch& s = scratch();
   TetMesh& m = editor.mesh;
@@ -233,13 +276,17 @@ bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* creat
         return false;
   }
   editor.neighbors(v, s.tets, s.ring);
+  const TetNeeds::Region old = needs ? needs->region(m, s.tets) : TetNeeds::Region();
   // The star of v, coned from w over its outer faces not through w: those new tets tile the star exactly
   // when all are strictly positive (their signed volumes add up to the star's, each point covered once).
-  double best = qOld;
+  // Each w scores its worst new tet (with needs: its smallest score, -1 under a floor or with more tets
+  // under 10 degrees).
+  double best = needs ? old.score : qOld;
   int32_t bestW = -1;
   for (int32_t w : s.ring)
   {
     double q = 2;
+    int below10 = 0;
     for (int32_t t : s.tets)
     {
       const int32_t* x = m.vertices(t);
@@ -247,7 +294,14 @@ bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* creat
         continue;
       std::array<int32_t, 4> n = { x[0], x[1], x[2], x[3] };
       *std::find(n.begin(), n.end(), v) = w;
-      q = std::min(q, tetQ(m, n[0], n[1], n[2], n[3]));
+      const double qn = tetQ(m, n[0], n[1], n[2], n[3]);
+      if (needs)
+      {
+        below10 += needs->under10(n.data(), qn);
+        q = std::min(q, below10 > old.below10 ? -1.0 : needs->newScore(old, n.data(), qn));
+      }
+      else
+        q = std::min(q, qn);
       if (!(q > best))
         break;
     }
@@ -285,7 +339,10 @@ bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* creat
     *std::find(n.begin(), n.end(), v) = bestW;
     s.newTets.push_back(n);
   }
-  if (!editor.replace(s.tets, s.newTets, created))
+  TetNeeds::Region now;
+  if (needs && !paysForNeeds(m, *needs, old, s.newTets, now)) // the share under 10 deg
+    return false;
+  if (!replaceFor(editor, s.tets, s.newTets, created, needs, old, now))
     return false;
   editor.forgetVertex(v);
   return true;

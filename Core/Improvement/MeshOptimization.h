@@ -33,6 +33,7 @@
 #include "MeshSmoothing.h"
 #include "OptionTable.h"
 #include "OrthogonalityFirst.h"
+#include "TetNeeds.h"
 #include "Progress.h"
 #include "Status.h"
 #include "TetEditor.h"
@@ -147,16 +148,18 @@ Status optimizeMesh(TetMesh& mesh, const FaceConstraints* constraints, const std
 
 // Building blocks (the editor's vertex map must be current). Each returns true after a strict improvement
 // of the worst tet of the affected region; created receives the new tets. rule (optional): refused when it
-// binds and the new tets hold more under its target than the old ones (OrthogonalityFirst.h).
+// binds and the new tets hold more under its target than the old ones (OrthogonalityFirst.h). needs
+// (optional): instead of the worst tet, what TetNeeds::pays asks.
 bool tryEdgeRemoval(TetEditor& editor, int32_t t, int32_t x, int32_t y, int maxRing, std::vector<int32_t>* created,
-                    const OrthogonalityFirst* rule = nullptr);
+                    const OrthogonalityFirst* rule = nullptr, const TetNeeds* needs = nullptr);
 bool tryFlip23(TetEditor& editor, int32_t t, int face, std::vector<int32_t>* created,
-               const OrthogonalityFirst* rule = nullptr);
+               const OrthogonalityFirst* rule = nullptr, const TetNeeds* needs = nullptr);
 // Removes unlocked vertex v (no constrained face through it) by collapsing it onto the neighbour w whose
 // collapse gives the best worst tet: the star's tets holding w go, the others get w for v. Only when every
 // new tet is strictly positive (exact orient3d) and the worst tet of the star strictly improves. v is then
 // used by no tet (its coordinates stay in mesh.points). Typical use: Steiner points that boundary recovery
 // left next to the boundary, squeezed between nearly coplanar faces no move can open.
-bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created);
+// needs (optional): the collapse pays as TetNeeds asks instead.
+bool tryVertexCollapse(TetEditor& editor, int32_t v, std::vector<int32_t>* created, const TetNeeds* needs = nullptr);
 
 } // namespace volgrid

@@ -17,12 +17,25 @@ struct Scratch
   std::vector<int32_t> star, nbrs;
   std::vector<double> q, qAt; // star qualities (star order) at the current and at a trial position
   std::vector<int32_t> order; // star indices, worst tet first
+  // Optional, in star order (smoothVertexWeighted): a tet scores weight * quality, and a position where its
+  // quality falls under its floor scores -1. Null: every tet scores its quality.
+  const double* weight = nullptr;
+  const double* floorQ = nullptr;
 };
 
 inline double tetQ(const TetMesh& m, int32_t t)
 {
   const int32_t* w = m.vertices(t);
   return tetSineQuality(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]));
+}
+
+// The score of the star's i-th tet at the current coordinates.
+inline double starScore(const TetMesh& m, const Scratch& s, size_t i)
+{
+  const double q = tetQ(m, s.star[i]);
+  if (!s.weight)
+    return q;
+  return q < s.floorQ[i] ? -1.0 : q * s.weight[i];
 }
 
 // The visiting order of tryPosition: the star's tets by quality at the current position, worst first
@@ -48,7 +61,7 @@ bool starPositive(const TetMesh& m, const std::vector<int32_t>& star)
   return true;
 }
 
-// Star minimum with v at x (written into the mesh, then restored to `home`); -2 when a tet is not
+// Star minimum score with v at x (written into the mesh, then restored to `home`); -2 when a tet is not
 // strictly positive (exact). Only a result above `floor` is used: the scan (in s.order) stops at the
 // first tet at or below it (most trial positions fail there) and returns that tet's quality. A result
 // above `floor` has every tet's quality at x in s.qAt (star order).
@@ -62,7 +75,7 @@ double tryPosition(TetMesh& m, int32_t v, const double* x, const double* home, S
   double q = 2.0;
   for (int32_t i : s.order)
   {
-    s.qAt[i] = tetQ(m, s.star[i]);
+    s.qAt[i] = starScore(m, s, static_cast<size_t>(i));
     q = std::min(q, s.qAt[i]);
     if (q <= floor)
       break;
@@ -197,14 +210,14 @@ SmoothMove moveInStar(TetMesh& m, int32_t v, double q0, Scratch& s, const Smooth
   return moved ? SmoothMove::Optimized : SmoothMove::None;
 }
 
-// The star's qualities into s.q; returns their minimum.
+// The star's scores into s.q; returns their minimum.
 double rateStar(const TetMesh& m, Scratch& s)
 {
   s.q.resize(s.star.size());
   double q0 = 2.0;
   for (size_t i = 0; i < s.star.size(); ++i)
   {
-    s.q[i] = tetQ(m, s.star[i]);
+    s.q[i] = starScore(m, s, i);
     q0 = std::min(q0, s.q[i]);
   }
   return q0;
@@ -238,6 +251,23 @@ SmoothMove smoothVertexInStar(TetMesh& mesh, int32_t v, const int32_t* star, siz
     return SmoothMove::None;
   s.nbrs.assign(nbrs, nbrs + nbrCount);
   return moveInStar(mesh, v, q0, s, options);
+}
+
+SmoothMove smoothVertexWeighted(TetMesh& mesh, int32_t v, const std::vector<int32_t>& star,
+                                const std::vector<int32_t>& nbrs, const std::vector<double>& weight,
+                                const std::vector<double>& floorQ, const SmoothingOptions& options)
+{
+  static thread_local Scratch s; // its own: the unweighted calls' scratch never sees the pointers
+  if (star.empty() || nbrs.empty() || weight.size() != star.size() || floorQ.size() != star.size())
+    return SmoothMove::None;
+  s.star = star;
+  s.nbrs = nbrs;
+  s.weight = weight.data();
+  s.floorQ = floorQ.data();
+  const double q0 = rateStar(mesh, s);
+  const SmoothMove move = q0 > 0 ? moveInStar(mesh, v, q0, s, options) : SmoothMove::None;
+  s.weight = s.floorQ = nullptr;
+  return move;
 }
 
 Status smoothMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,

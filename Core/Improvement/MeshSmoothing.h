@@ -63,6 +63,14 @@ SmoothMove smoothVertex(TetEditor& editor, int32_t v, const SmoothingOptions& op
 SmoothMove smoothVertexInStar(TetMesh& mesh, int32_t v, const int32_t* star, size_t starSize, const int32_t* nbrs,
                               size_t nbrCount, const SmoothingOptions& options);
 
+// The same move for an objective other than the star's worst quality: tet i of `star` scores
+// weight[i] * its quality, the move maximises the star's smallest score, and no position is taken where a
+// tet's quality falls under floorQ[i] (each floor at most the tet's quality now). InteriorPolish.h weighs
+// tets by the angle each must reach.
+SmoothMove smoothVertexWeighted(TetMesh& mesh, int32_t v, const std::vector<int32_t>& star,
+                                const std::vector<int32_t>& nbrs, const std::vector<double>& weight,
+                                const std::vector<double>& floorQ, const SmoothingOptions& options);
+
 // Smooth every unlocked vertex. locked: optional extra per-vertex locks (non-zero = keep), OR-ed with the
 // vertices of constrained faces. Errors: InvalidOption (ghost tets present), Cancelled.
 Status smoothMesh(TetMesh& mesh, const FaceConstraints* constraints, const std::vector<uint8_t>* locked,
