@@ -367,12 +367,13 @@ void printReport(const Arguments& args, const volgrid::MesherStatistics& s, cons
       "\"enclosed_volume\": %s, \"volume_relative_error\": %s, \"field_points\": %lld, "
       "\"cluster_points\": %lld, \"min_dihedral\": %s, \"max_dihedral\": %s, "
       "\"share_below_10\": %s, \"boundary_forced_below_10\": %lld, \"forced_tets\": %lld, "
+      "\"interior_outside_15_165\": %lld, \"interior_outside_before_polish\": %lld, "
       "\"size_ratio_p99\": %.4f, \"size_ratio_max\": %.4f, \"size_ratio_faces_above_gradation\": %lld, "
       "\"nonortho_severe_faces\": %lld, \"nonortho_severe_before_moves\": %lld, \"nonortho_moves\": %lld, "
       "\"max_edge_floor\": %s, \"seconds_improvement\": %.6f, \"seconds_stages\": {\"check\": %.6f, \"delaunay\": "
       "%.6f, "
       "\"recovery\": %.6f, \"exterior\": %.6f, \"steiner\": %.6f, \"sizing\": %.6f, "
-      "\"field_points\": %.6f, \"optimization\": %.6f}, "
+      "\"field_points\": %.6f, \"optimization\": %.6f, \"interior_polish\": %.6f}, "
       "\"longest_abort_gap_seconds\": %.3f, \"seconds\": %.6f, "
       "\"peak_rss_mb\": %.1f}\n",
       volgrid::cli::jsonString(args.surface).c_str(), static_cast<long long>(s.inputPoints),
@@ -384,12 +385,14 @@ void printReport(const Arguments& args, const volgrid::MesherStatistics& s, cons
       json(boundary.relativeVolumeError, "%.3g").c_str(), static_cast<long long>(s.improvement.fieldPoints),
       static_cast<long long>(s.improvement.clusterPoints), json(dihedral.minDihedral, "%.4f").c_str(),
       json(dihedral.maxDihedral, "%.4f").c_str(), json(dihedral.shareBelow10(), "%.6g").c_str(),
-      static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets), ratio.p99,
+      static_cast<long long>(s.improvement.boundaryForcedBelow10), static_cast<long long>(s.forcedTets),
+      static_cast<long long>(s.improvement.interiorOutside),
+      static_cast<long long>(s.improvement.interiorOutsideBeforePolish), ratio.p99,
       ratio.max, static_cast<long long>(ratio.aboveThreshold), static_cast<long long>(s.improvement.severeFacesAfter),
       static_cast<long long>(s.improvement.severeFacesBefore), static_cast<long long>(s.improvement.orthogonalityMoves),
       json(s.improvement.coarseBoundaryFloor, "%.6g").c_str(), s.secondsImprovement, s.secondsCheck, s.secondsDelaunay,
       s.secondsRecovery, s.secondsExterior, s.secondsSteiner, s.improvement.secondsSizing,
-      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, longestAbortGap, seconds,
+      s.improvement.secondsFieldPoints, s.improvement.secondsOptimization, s.improvement.secondsPolish, longestAbortGap, seconds,
       volgrid::cli::peakResidentMiB());
   }
   else

@@ -2,6 +2,7 @@
 #include "SpatialReorder.h"
 
 #include "DomainSizing.h"
+#include "InteriorPolish.h"
 #include "OrthogonalitySmoothing.h"
 #include "QualityRounds.h"
 
@@ -73,22 +74,50 @@ std::vector<uint8_t> usedVertices(const TetMesh& mesh)
 }
 
 // Tets below 10 degrees whose four vertices lie on constrained faces: their shape is set by the boundary
-// triangles (no flip or move can change it without touching the boundary).
-int64_t countBoundaryForcedBelow10(TetMesh& mesh, const FaceConstraints& fc)
+// triangles (no flip or move can change it without touching the boundary). And tets with no vertex on a
+// constrained face outside the interior range (TetNeeds.h).
+struct ShapeCounts
+{
+  int64_t boundaryForcedBelow10 = 0, interiorOutside = 0;
+};
+ShapeCounts countShapes(TetMesh& mesh, const FaceConstraints& fc)
 {
   TetEditor probe(mesh, &fc, nullptr); // builds its vertex map
   const std::vector<uint8_t> lock = probe.lockedVertices();
   const double q10 = std::sin(10.0 * 3.14159265358979323846 / 180.0);
-  int64_t n = 0;
+  const double qInterior = std::sin(kInteriorDegrees * 3.14159265358979323846 / 180.0);
+  ShapeCounts n;
   mesh.forEachTet(
     [&](int32_t t)
     {
       const int32_t* v = mesh.vertices(t);
-      if (lock[v[0]] && lock[v[1]] && lock[v[2]] && lock[v[3]] &&
-          tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) < q10)
-        ++n;
+      const int locked = lock[v[0]] + lock[v[1]] + lock[v[2]] + lock[v[3]];
+      if (locked != 0 && locked != 4)
+        return;
+      const double q = tetSineQuality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+      n.boundaryForcedBelow10 += locked == 4 && q < q10;
+      n.interiorOutside += locked == 0 && q < qInterior;
     });
   return n;
+}
+
+// The interior polish (InteriorPolish.h), the stage's last edits.
+// severeCounted: stats.severeFacesAfter holds the mesh's count (the orthogonality moves ran), which the
+// polish's edits change.
+Status polishInteriorTets(TetMesh& mesh, const FaceConstraints& fc, const std::vector<uint8_t>& clusterLock,
+                          int threads, bool severeCounted, ImprovementStatistics& stats, Progress* progress)
+{
+  TetEditor editor(mesh, &fc, nullptr); // builds its vertex map
+  InteriorPolishOptions options;
+  options.threads = threads;
+  InteriorPolishReport report;
+  const Status s = polishInterior(editor, editor.lockedVertices(), clusterLock.empty() ? nullptr : &clusterLock,
+                                  options, progress, &report);
+  stats.interiorOutsideBeforePolish = report.before;
+  stats.secondsPolish = report.seconds;
+  if (severeCounted) // the orthogonality moves' count, then the polish's edits
+    stats.severeFacesAfter += report.severeChange;
+  return s;
 }
 
 // Points removed by vertex collapses: recovery's (below nv0), field points (below nvField), split points.
@@ -251,6 +280,12 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
       stats.severeFacesAfter = orep.severeAfter;
       stats.orthogonalityMoves = orep.moves;
     }
+    if (options.interiorPolish)
+    {
+      s = polishInteriorTets(mesh, fc, clusterLock, options.threads, options.orthogonalitySmoothing, stats, progress);
+      if (!s.ok())
+        return s;
+    }
     if (progress && progress->cancelled())
       return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
     stats.after = summarizeDihedrals(mesh, options.threads, progress);
@@ -262,7 +297,9 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
   if (progress && progress->cancelled())
     return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
 
-  stats.boundaryForcedBelow10 += countBoundaryForcedBelow10(mesh, fc);
+  const ShapeCounts shapes = countShapes(mesh, fc);
+  stats.boundaryForcedBelow10 += shapes.boundaryForcedBelow10;
+  stats.interiorOutside = shapes.interiorOutside;
   if (progress && progress->cancelled())
     return Status::failure(ErrorKind::Cancelled, "Optimisation was cancelled.");
   countRemovedPoints(mesh, usedBefore, nv0, nvField, stats);

@@ -92,6 +92,10 @@ struct ImprovementOptions
   // After the rounds: vertex moves for the faces a finite-volume solver finds severely non-orthogonal,
   // never making a tet worse than the rounds left it below the target (OrthogonalitySmoothing.h).
   bool orthogonalitySmoothing = true;
+  // Last: moves, flips and collapses for the tets with no boundary vertex whose angles leave [15, 165]
+  // degrees, leaving the worst angles, the share under 10 degrees and the severe faces no worse
+  // (InteriorPolish.h).
+  bool interiorPolish = true;
   // Off by default. On: the flips, splits, insertion rounds and smoothing moves keep what a finite-volume
   // solver sees first, adding no tets under the target and no severely non-orthogonal faces where they
   // edit, except for nearly flat tets (OrthogonalityFirst.h). Fewer severe faces, a smaller worst angle.
@@ -128,7 +132,11 @@ struct ImprovementStatistics
   // Tets under 10 degrees whose four vertices are boundary (or interface) vertices: bounded by the
   // surface triangles, not by the optimisation.
   int64_t boundaryForcedBelow10 = 0;
+  // Tets with no vertex on a constrained face whose dihedral angles leave [15, 165] degrees
+  // (kInteriorDegrees, TetNeeds.h): before the interior polish (InteriorPolish.h) and in the final mesh.
+  int64_t interiorOutsideBeforePolish = 0, interiorOutside = 0;
   double secondsSizing = 0, secondsFieldPoints = 0, secondsOptimization = 0;
+  double secondsPolish = 0; // the interior polish, a part of secondsOptimization
 };
 
 // The mesher's stage (see above). `surface` gives the boundary points and triangles for the PDF;

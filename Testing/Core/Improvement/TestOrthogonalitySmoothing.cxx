@@ -1,13 +1,10 @@
 // Orthogonality smoothing (OrthogonalitySmoothing.h) on the bundled wing's mesh, where the quality stage
 // leaves thousands of severely non-orthogonal faces: it removes some, counts them as an independent
 // recount does, keeps the mesh valid and its boundary exactly, and makes no tet worse than its floor.
-#include "Enclosures.h"
 #include "MeshChecker.h"
-#include "MeshImprovement.h"
-#include "Mesher.h"
 #include "OrthogonalitySmoothing.h"
-#include "SurfaceReader.h"
 #include "TetEditor.h"
+#include "WingInSphere.h"
 
 #include <gtest/gtest.h>
 
@@ -65,22 +62,13 @@ int64_t countSevereFaces(const TetMesh& m)
   return n;
 }
 
-// The demo's domain (the wing in a sphere 5x its size) meshed at default settings without the orthogonality
-// moves, as a ghost-free TetMesh; numBoundary = the input points (the boundary vertices).
+// The demo's domain meshed at default settings without the orthogonality moves; numBoundary = the input
+// points (the boundary vertices).
 void wingMesh(TetMesh& mesh, int32_t& numBoundary)
 {
-  SurfaceMesh wing;
-  ASSERT_TRUE(readSurface(std::string(VOLGRID_TEST_DATA_DIR) + "/straight_wing.stl", wing).ok());
-  mergeCoincidentPoints(wing);
-  SurfaceMesh sphere;
-  ASSERT_TRUE(makeEnclosure(enclosureAround(boundingBox(wing, true), EnclosureShape::Sphere, 5.0), sphere).ok());
-  wing.append(sphere);
   MesherOptions options;
   options.improvement.orthogonalitySmoothing = false;
-  MesherResult r;
-  ASSERT_TRUE(meshSurface(wing, options, r).ok());
-  numBoundary = r.numInputPoints;
-  ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, mesh).ok());
+  meshWingInSphere(options, mesh, &numBoundary);
 }
 
 std::vector<std::array<int32_t, 4>> tetList(const TetMesh& m)
