@@ -121,15 +121,6 @@ Angles measure(const TetMesh& m, const std::vector<uint8_t>& boundary)
   return a;
 }
 
-// The demo's domain as the quality rounds leave it: no polish, no orthogonality moves.
-void wingMesh(TetMesh& mesh)
-{
-  MesherOptions options;
-  options.improvement.interiorPolish = false;
-  options.improvement.orthogonalitySmoothing = false;
-  meshWingInSphere(options, mesh);
-}
-
 class StopAtOnce final : public Progress
 {
 public:
@@ -137,23 +128,12 @@ public:
   bool cancelled() override { return true; }
 };
 
-class InteriorPolish : public ::testing::Test
+class InteriorPolish : public WingSuite<InteriorPolish>
 {
 protected:
-  static void SetUpTestSuite()
-  {
-    wing_ = new TetMesh;
-    wingMesh(*wing_);
-  }
-  static void TearDownTestSuite()
-  {
-    delete wing_;
-    wing_ = nullptr;
-  }
   void SetUp() override
   {
-    ASSERT_GT(wing_->numTets(), 0) << "the wing did not mesh";
-    mesh = *wing_;
+    WingSuite::SetUp();
     boundary = hullVertices(mesh);
   }
   Status polish(TetMesh& m, int threads, InteriorPolishReport& report, const std::vector<uint8_t>* locked = nullptr,
@@ -165,13 +145,8 @@ protected:
     return polishInterior(editor, editor.lockedVertices(), locked, options, progress, &report);
   }
 
-  TetMesh mesh;
   std::vector<uint8_t> boundary;
-
-private:
-  static TetMesh* wing_;
 };
-TetMesh* InteriorPolish::wing_ = nullptr;
 } // namespace
 
 TEST_F(InteriorPolish, RaisesInteriorTetsAndMakesNothingWorse)
@@ -200,12 +175,7 @@ TEST_F(InteriorPolish, RaisesInteriorTetsAndMakesNothingWorse)
   EXPECT_LE(after.under10 * before.tets, before.under10 * after.tets) << "the share of tets under 10 deg rose";
 
   // Valid; the same boundary faces with their vertices where they were.
-  MeshCheckOptions checkOptions;
-  checkOptions.delaunay = false;
-  const MeshCheckReport check = checkMesh(mesh, checkOptions);
-  EXPECT_EQ(check.invertedTets, 0) << check.summary();
-  EXPECT_EQ(check.badVertices + check.badNeighbors + check.asymmetricNeighbors + check.faceMismatches, 0)
-    << check.summary();
+  expectValidMesh(mesh);
   EXPECT_EQ(hullFaces(mesh), facesBefore);
   for (int32_t v = 0; v < mesh.numVertices(); ++v)
   {

@@ -1,7 +1,6 @@
 // Orthogonality smoothing (OrthogonalitySmoothing.h) on the bundled wing's mesh, where the quality stage
 // leaves thousands of severely non-orthogonal faces: it removes some, counts them as an independent
 // recount does, keeps the mesh valid and its boundary exactly, and makes no tet worse than its floor.
-#include "MeshChecker.h"
 #include "OrthogonalitySmoothing.h"
 #include "TetEditor.h"
 #include "WingInSphere.h"
@@ -62,15 +61,6 @@ int64_t countSevereFaces(const TetMesh& m)
   return n;
 }
 
-// The demo's domain meshed at default settings without the orthogonality moves; numBoundary = the input
-// points (the boundary vertices).
-void wingMesh(TetMesh& mesh, int32_t& numBoundary)
-{
-  MesherOptions options;
-  options.improvement.orthogonalitySmoothing = false;
-  meshWingInSphere(options, mesh, &numBoundary);
-}
-
 std::vector<std::array<int32_t, 4>> tetList(const TetMesh& m)
 {
   std::vector<std::array<int32_t, 4>> out;
@@ -78,36 +68,9 @@ std::vector<std::array<int32_t, 4>> tetList(const TetMesh& m)
   return out;
 }
 
-// The wing's mesh, built once for the suite (two seconds); each test works on a copy.
-class OrthogonalitySmoothing : public ::testing::Test
+class OrthogonalitySmoothing : public WingSuite<OrthogonalitySmoothing>
 {
-protected:
-  static void SetUpTestSuite()
-  {
-    wing_ = new TetMesh;
-    wingMesh(*wing_, numBoundary_);
-  }
-  static void TearDownTestSuite()
-  {
-    delete wing_;
-    wing_ = nullptr;
-  }
-  void SetUp() override
-  {
-    ASSERT_GT(wing_->numTets(), 0) << "the wing did not mesh";
-    mesh = *wing_;
-    numBoundary = numBoundary_;
-  }
-
-  TetMesh mesh;
-  int32_t numBoundary = 0;
-
-private:
-  static TetMesh* wing_;
-  static int32_t numBoundary_;
 };
-TetMesh* OrthogonalitySmoothing::wing_ = nullptr;
-int32_t OrthogonalitySmoothing::numBoundary_ = 0;
 } // namespace
 
 TEST_F(OrthogonalitySmoothing, RemovesSevereFacesAndMakesNoTetWorseThanItsFloor)
@@ -134,12 +97,7 @@ TEST_F(OrthogonalitySmoothing, RemovesSevereFacesAndMakesNoTetWorseThanItsFloor)
   // Valid (every tet positive, adjacency consistent; the hull checks are for a ball, this domain has two
   // boundary surfaces); the same tets; boundary vertices where they were; no tet below min(its quality
   // before, 10 deg).
-  MeshCheckOptions checkOptions;
-  checkOptions.delaunay = false;
-  const MeshCheckReport check = checkMesh(mesh, checkOptions);
-  EXPECT_EQ(check.invertedTets, 0) << check.summary();
-  EXPECT_EQ(check.badVertices + check.badNeighbors + check.asymmetricNeighbors + check.faceMismatches, 0)
-    << check.summary();
+  expectValidMesh(mesh);
   EXPECT_EQ(tetList(mesh), tetsBefore);
   for (size_t k = 0; k < 3 * static_cast<size_t>(numBoundary); ++k)
     ASSERT_EQ(mesh.points[k], pointsBefore[k]) << "boundary coordinate " << k;
