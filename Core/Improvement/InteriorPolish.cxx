@@ -111,7 +111,7 @@ public:
     floor_.resize(star_.size());
     for (size_t i = 0; i < star_.size(); ++i)
     {
-      const double need = interior(star_[i]) ? qInterior_ : qBoundary_;
+      const double need = needs_.need(m_.vertices(star_[i]));
       weight_[i] = 1 / need;
       floor_[i] = needs_.floor(quality(star_[i]), need);
     }
@@ -202,16 +202,11 @@ private:
   static constexpr size_t kNearest = 4;
   static constexpr double kAside = 1e30; // the weight of a tet set aside: never the smallest score
 
-  bool onBoundary(int32_t v) const { return static_cast<size_t>(v) >= boundary_.size() || boundary_[v]; }
   bool movable(int32_t v) const
   {
-    return !onBoundary(v) && !(locked_ && static_cast<size_t>(v) < locked_->size() && (*locked_)[v]);
+    return !needs_.onBoundary(v) && !(locked_ && static_cast<size_t>(v) < locked_->size() && (*locked_)[v]);
   }
-  bool interior(int32_t t) const
-  {
-    const int32_t* w = m_.vertices(t);
-    return !onBoundary(w[0]) && !onBoundary(w[1]) && !onBoundary(w[2]) && !onBoundary(w[3]);
-  }
+  bool interior(int32_t t) const { return !needs_.touchesBoundary(m_.vertices(t)); }
   double quality(int32_t t) const { return TetNeeds::quality(m_, m_.vertices(t)); }
 
   size_t smallestScore() const

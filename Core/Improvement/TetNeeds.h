@@ -42,10 +42,11 @@ struct TetNeeds
   {
     return static_cast<size_t>(v) >= boundaryVertex->size() || (*boundaryVertex)[static_cast<size_t>(v)];
   }
-  double need(const int32_t* w) const
+  bool touchesBoundary(const int32_t* w) const
   {
-    return onBoundary(w[0]) || onBoundary(w[1]) || onBoundary(w[2]) || onBoundary(w[3]) ? boundaryQ : interiorQ;
+    return onBoundary(w[0]) || onBoundary(w[1]) || onBoundary(w[2]) || onBoundary(w[3]);
   }
+  double need(const int32_t* w) const { return touchesBoundary(w) ? boundaryQ : interiorQ; }
   double score(const int32_t* w, double q) const { return std::min(1.0, q / need(w)); }
 
   // What the tets an edit replaces have: their smallest score, their worst quality, how many have a dihedral
