@@ -436,7 +436,11 @@ void TetEditor::addConeFaces(int32_t v, int32_t t)
     q[i] = v;
     double qc = -1; // not strictly positive: the cavity is not star-shaped from v
     if (predicates::orient3dInline(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3])) > 0)
+    {
       qc = tetSineQuality(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3]));
+      if (coneScore)
+        qc = (*coneScore)(q.data(), qc);
+    }
     cone_.push_back({ t, i, constrained, qc });
   }
 }

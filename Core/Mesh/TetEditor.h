@@ -162,6 +162,18 @@ public:
   // faces, towards the tets beyond, so the difference is the mesh's change.
   int severeChangeOfLastCavity(int32_t v, double severeCosine);
 
+  // Optional: what qualityInsertion maximises instead of the worst new tet's quality (tetSineQuality): the
+  // smallest score(new tet, its quality), a score in (0, 1] (InteriorPolish.h: the quality over the angle
+  // the tet must reach). Its return value is then that score. Null (the default): the quality.
+  struct ConeScore
+  {
+    virtual ~ConeScore() = default;
+    virtual double operator()(const int32_t tet[4], double quality) const = 0;
+  };
+  const ConeScore* coneScore = nullptr;
+  // The cavity the last qualityInsertion(commit = false) found (nothing edited since): the tets it replaces.
+  const std::vector<int32_t>& lastCavity() const { return bestCavity_; }
+
   uint64_t replacements = 0;
 
 private:
