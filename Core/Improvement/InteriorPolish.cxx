@@ -1,11 +1,13 @@
 #include "InteriorPolish.h"
 
+#include "CompassSearch.h"
 #include "EditJournal.h"
 #include "MeshOptimization.h"
 #include "MeshScan.h"
 #include "MeshSmoothing.h"
 #include "OrthogonalityFirst.h"
 #include "Quality.h"
+#include "SplitCandidates.h"
 #include "TetNeeds.h"
 
 #include <algorithm>
@@ -169,6 +171,53 @@ public:
     return false;
   }
 
+  // Inserts a point for t where the quality-driven insertion (cavity holding t) makes the best smallest
+  // score of its new tets (TetNeeds): from t's centroid, circumcentre, edge midpoints and points over its
+  // faces (SplitCandidates.h), then a compass search. Kept when the new tets pay for the cavity's (TetNeeds)
+  // and add no severe face.
+  bool split(int32_t t, std::vector<int32_t>& created)
+  {
+    const int32_t* w = m_.vertices(t);
+    const double* p[4] = { m_.point(w[0]), m_.point(w[1]), m_.point(w[2]), m_.point(w[3]) };
+    splitCandidates_.clear();
+    const double lmean = splitting::addCentres(p, splitCandidates_);
+    splitting::addFaceApexes(p, splitCandidates_);
+    const int32_t nv = m_.addPoint(splitCandidates_[0].data()); // p may move: not used below
+    boundary_.resize(static_cast<size_t>(m_.numVertices()), 0); // the new point is interior
+    const NeedScore score(needs_);
+    ed_.coneScore = &score;
+    double best = -3;
+    auto scoreAt = [&](const SplitPoint& y)
+    {
+      std::copy(y.begin(), y.end(), m_.points.data() + 3 * static_cast<size_t>(nv));
+      const int32_t start = ed_.locate(y.data(), t);
+      return start < 0 ? -3.0 : ed_.qualityInsertion(nv, start, t, nullptr, false, nullptr, kMaxCavity, best);
+    };
+    SplitPoint at{};
+    for (const SplitPoint& y : splitCandidates_)
+    {
+      const double q = scoreAt(y);
+      if (q > best)
+      {
+        best = q;
+        at = y;
+      }
+    }
+    bool kept = false;
+    if (best > -3)
+    {
+      compassSearch(at, best, 0.2 * lmean, scoreAt,
+                    [&](double step, int rounds, int) { return rounds < 12 && step > 0.01 * lmean; });
+      best = -3;
+      if (scoreAt(at) > -3) // the best position's cavity, as the editor's last
+        kept = insertAt(nv, t, at, created);
+    }
+    ed_.coneScore = nullptr;
+    if (!kept)
+      m_.points.resize(m_.points.size() - 3);
+    return kept;
+  }
+
   // Removes a movable vertex of t, or of the nearest neighbours of t's vertices, by collapsing it onto a
   // neighbour, judged by TetNeeds. The bad tets that remain after the moves sit in clusters of points the
   // quality stage added, at spacings a tenth of their neighbours'.
@@ -190,14 +239,55 @@ public:
     neighbourhood(v, candidates_);
     const int64_t before = countRegion(m_, region_, severe_).severe;
     for (int32_t x : candidates_)
-      if (keep([&](std::vector<int32_t>& made) { return tryVertexCollapse(ed_, x, &made, &needs_); }, before,
-               created))
+      if (keep([&](std::vector<int32_t>& made) { return tryVertexCollapse(ed_, x, &made, &needs_); }, before, created))
         return true;
     return false;
   }
 
 private:
   static constexpr int kMaxRing = 9;
+  static constexpr int kMaxCavity = 24; // tets a quality-driven cavity grows to, as the split rounds'
+
+  // A cone tet's score for the editor's quality-driven insertion (TetNeeds::score).
+  struct NeedScore final : TetEditor::ConeScore
+  {
+    explicit NeedScore(const TetNeeds& n)
+      : needs(n)
+    {
+    }
+    double operator()(const int32_t w[4], double q) const override { return needs.score(w, q); }
+    const TetNeeds& needs;
+  };
+
+  // split()'s insertion of nv at `at` with the editor's last cavity, judged by TetNeeds against that
+  // cavity's tets and undone unless it pays and adds no severe face.
+  bool insertAt(int32_t nv, int32_t t, const SplitPoint& at, std::vector<int32_t>& created)
+  {
+    const TetNeeds::Region old = needs_.region(m_, ed_.lastCavity());
+    region_ = ed_.lastCavity();
+    std::sort(region_.begin(), region_.end());
+    const int64_t before = countRegion(m_, region_, severe_).severe;
+    return keep(
+      [&](std::vector<int32_t>& made)
+      {
+        const int32_t start = ed_.locate(at.data(), t);
+        if (start < 0 || !(ed_.qualityInsertion(nv, start, t, nullptr, true, &made) > -3))
+          return false;
+        TetNeeds::Region now;
+        for (int32_t u : made)
+        {
+          const double q = quality(u);
+          if (needs_.newScore(old, m_.vertices(u), q) < 0)
+            return false;
+          needs_.add(now, m_.vertices(u), q);
+        }
+        if (!needs_.pays(old, now))
+          return false;
+        needs_.record(old, now);
+        return true;
+      },
+      before, created);
+  }
   static constexpr int kSetAside = 3;
   static constexpr size_t kNearest = 4;
   static constexpr double kAside = 1e30; // the weight of a tet set aside: never the smallest score
@@ -244,7 +334,8 @@ private:
       {
         const double* a = m_.point(x);
         const double* b = m_.point(y);
-        near_.push_back({ (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]), y });
+        near_.push_back(
+          { (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]), y });
       }
     const size_t n = std::min(near_.size(), kNearest);
     std::partial_sort(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(n), near_.end());
@@ -280,7 +371,13 @@ private:
     const TetNeeds::Counts counts = counts_;
     made_.clear();
     if (!edit(made_))
+    {
+      journal_.changedSince(mark, restored_, moved_);
+      journal_.rollback(mark, m_, nullptr);
+      ed_.refreshVertexMap(restored_);
+      counts_ = counts;
       return false;
+    }
     after_.clear();
     for (int32_t u : region_)
       if (!m_.isFree(u))
@@ -308,7 +405,7 @@ private:
 
   TetEditor& ed_;
   TetMesh& m_;
-  const std::vector<uint8_t>& boundary_;
+  std::vector<uint8_t> boundary_; // the caller's, and 0 for the points split() adds
   const std::vector<uint8_t>* locked_;
   const double qInterior_, qBoundary_;
   const OrthogonalityFirst severe_; // its severeCosine: checkMesh's limit
@@ -316,10 +413,11 @@ private:
   TetNeeds::Counts counts_;
   EditJournal journal_;
   int64_t severeChange_ = 0;
-  int64_t edits_ = 0;                       // a clock: one tick per vertex an edit changed
-  std::vector<int64_t> changedAt_;          // per vertex: the tick of its last change, -1 never
-  std::vector<int64_t> failedAt_;           // per tet slot: the tick when its tries last failed, -1 never
+  int64_t edits_ = 0;              // a clock: one tick per vertex an edit changed
+  std::vector<int64_t> changedAt_; // per vertex: the tick of its last change, -1 never
+  std::vector<int64_t> failedAt_;  // per tet slot: the tick when its tries last failed, -1 never
   std::vector<int32_t> star_, nbrs_, candidates_, region_, after_, made_, restored_, moved_;
+  std::vector<SplitPoint> splitCandidates_;
   std::vector<double> weight_, floor_;
   std::vector<std::pair<double, int32_t>> near_;
 };
@@ -331,9 +429,8 @@ void keepBad(const Polish& polish, std::vector<int32_t>& tets)
 }
 } // namespace
 
-Status polishInterior(TetEditor& editor, const std::vector<uint8_t>& boundaryVertex,
-                      const std::vector<uint8_t>* locked, const InteriorPolishOptions& options, Progress* progress,
-                      InteriorPolishReport* reportOut)
+Status polishInterior(TetEditor& editor, const std::vector<uint8_t>& boundaryVertex, const std::vector<uint8_t>* locked,
+                      const InteriorPolishOptions& options, Progress* progress, InteriorPolishReport* reportOut)
 {
   const auto t0 = std::chrono::steady_clock::now();
   InteriorPolishReport local;
@@ -371,7 +468,9 @@ Status polishInterior(TetEditor& editor, const std::vector<uint8_t>& boundaryVer
       moves += moved;
       const bool flipped = polish.bad(t) && polish.flip(t, created);
       const bool collapsed = !flipped && polish.bad(t) && polish.collapse(t, created);
-      if (!flipped && !collapsed)
+      const bool split = !flipped && !collapsed && polish.bad(t) && polish.split(t, created);
+      report.splits += split;
+      if (!flipped && !collapsed && !split)
       {
         if (moved == 0)
           polish.failed(t);

@@ -114,6 +114,7 @@ Status polishInteriorTets(TetMesh& mesh, const FaceConstraints& fc, const std::v
   const Status s = polishInterior(editor, editor.lockedVertices(), clusterLock.empty() ? nullptr : &clusterLock,
                                   options, progress, &report);
   stats.interiorOutsideBeforePolish = report.before;
+  stats.splitPoints += report.splits;
   stats.secondsPolish = report.seconds;
   if (severeCounted) // the orthogonality moves' count, then the polish's edits
     stats.severeFacesAfter += report.severeChange;

@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <array>
-#include <utility>
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 using namespace volgrid;
