@@ -457,7 +457,8 @@ Status polishInterior(TetEditor& editor, const std::vector<uint8_t>& boundaryVer
     int64_t moves = 0;
     for (size_t k = 0; k < tets.size(); ++k)
     {
-      if ((k & 255) == 255 && progress && progress->cancelled())
+      // A tet's edits take up to a few milliseconds (a split searches a hundred cavities): asked every 16.
+      if ((k & 15) == 15 && progress && progress->cancelled())
         return cancelled();
       const int32_t t = tets[k];
       if (!polish.bad(t) || !polish.worthTrying(t))
