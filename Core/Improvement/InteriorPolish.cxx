@@ -367,13 +367,13 @@ private:
   template<class Edit>
   bool keep(Edit&& edit, int64_t before, std::vector<int32_t>& created)
   {
-    const EditJournal::Mark mark = journal_.mark(m_, nullptr);
+    const EditJournal::Mark mark = journal_.mark(m_, ed_.labels);
     const TetNeeds::Counts counts = counts_;
     made_.clear();
     if (!edit(made_))
     {
       journal_.changedSince(mark, restored_, moved_);
-      journal_.rollback(mark, m_, nullptr);
+      journal_.rollback(mark, m_, ed_.labels);
       ed_.refreshVertexMap(restored_);
       counts_ = counts;
       return false;
@@ -389,7 +389,7 @@ private:
     if (after > before)
     {
       journal_.changedSince(mark, restored_, moved_);
-      journal_.rollback(mark, m_, nullptr);
+      journal_.rollback(mark, m_, ed_.labels);
       ed_.refreshVertexMap(restored_);
       counts_ = counts;
       return false;

@@ -101,13 +101,15 @@ ShapeCounts countShapes(TetMesh& mesh, const FaceConstraints& fc)
   return n;
 }
 
-// The interior polish (InteriorPolish.h), the stage's last edits.
+// The interior polish (InteriorPolish.h), the stage's last edits. tetRegion: per slot, the region each new
+// tet takes from the tets it replaces.
 // severeCounted: stats.severeFacesAfter holds the mesh's count (the orthogonality moves ran), which the
 // polish's edits change.
 Status polishInteriorTets(TetMesh& mesh, const FaceConstraints& fc, const std::vector<uint8_t>& clusterLock,
-                          int threads, bool severeCounted, ImprovementStatistics& stats, Progress* progress)
+                          std::vector<int32_t>& tetRegion, int threads, bool severeCounted,
+                          ImprovementStatistics& stats, Progress* progress)
 {
-  TetEditor editor(mesh, &fc, nullptr); // builds its vertex map
+  TetEditor editor(mesh, &fc, &tetRegion); // builds its vertex map
   InteriorPolishOptions options;
   options.threads = threads;
   InteriorPolishReport report;
@@ -283,7 +285,8 @@ Status improveDomainMesh(MeshEditor& editor, const BoundaryConstraints& bc, cons
     }
     if (options.interiorPolish)
     {
-      s = polishInteriorTets(mesh, fc, clusterLock, options.threads, options.orthogonalitySmoothing, stats, progress);
+      s = polishInteriorTets(mesh, fc, clusterLock, tetRegion, options.threads, options.orthogonalitySmoothing, stats,
+                             progress);
       if (!s.ok())
         return s;
     }

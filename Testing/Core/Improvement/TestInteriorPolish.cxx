@@ -137,9 +137,9 @@ protected:
     boundary = hullVertices(mesh);
   }
   Status polish(TetMesh& m, int threads, InteriorPolishReport& report, const std::vector<uint8_t>* locked = nullptr,
-                Progress* progress = nullptr)
+                Progress* progress = nullptr, std::vector<int32_t>* labels = nullptr)
   {
-    TetEditor editor(m, nullptr, nullptr); // faces without a neighbour are the constrained ones
+    TetEditor editor(m, nullptr, labels); // faces without a neighbour are the constrained ones
     InteriorPolishOptions options;
     options.threads = threads;
     return polishInterior(editor, editor.lockedVertices(), locked, options, progress, &report);
@@ -219,6 +219,35 @@ TEST_F(InteriorPolish, LockedVerticesStayAndStayUsed)
         used[mesh.vertex(t, i)] = 1;
     });
   EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0) << "a locked vertex was removed";
+}
+
+// Every tet the step makes (flips, collapses, splits: new slots among them) takes the label (region) of
+// the tets it replaces, and an undone edit leaves the labels as they were.
+TEST_F(InteriorPolish, NewTetsKeepTheirRegion)
+{
+  std::vector<int32_t> labels(static_cast<size_t>(mesh.tetCapacity()), 7);
+  const int32_t capacityBefore = mesh.tetCapacity();
+  InteriorPolishReport report;
+  ASSERT_TRUE(polish(mesh, 1, report, nullptr, nullptr, &labels).ok());
+  EXPECT_GT(report.splits, 0);
+  EXPECT_GT(mesh.tetCapacity(), capacityBefore) << "no new slot: the test shows nothing";
+  ASSERT_GE(labels.size(), static_cast<size_t>(mesh.tetCapacity()));
+  int64_t wrong = 0;
+  mesh.forEachTet([&](int32_t t) { wrong += labels[static_cast<size_t>(t)] != 7; });
+  EXPECT_EQ(wrong, 0) << "tets without their region";
+}
+
+// The same through the mesher, default options (the polish adds points there): the domain between the wing
+// and the sphere is one region, and every tet says so.
+TEST(InteriorPolishInTheMesher, EveryTetKeepsTheDomainsRegion)
+{
+  MesherResult r;
+  meshWingInSphere(MesherOptions(), r);
+  ASSERT_FALSE(r.tets.empty());
+  EXPECT_GT(r.stats.improvement.splitPoints, 0);
+  EXPECT_EQ(r.stats.regions, 1);
+  ASSERT_EQ(r.tetRegion.size(), r.tets.size() / 4);
+  EXPECT_EQ(std::count(r.tetRegion.begin(), r.tetRegion.end(), 0), static_cast<std::ptrdiff_t>(r.tetRegion.size()));
 }
 
 TEST_F(InteriorPolish, StopsWhenAskedAndLeavesAValidMesh)

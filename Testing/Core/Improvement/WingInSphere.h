@@ -15,8 +15,8 @@
 namespace volgrid
 {
 
-// numBoundary (optional): the input points, the first vertices of the mesh (the boundary vertices).
-inline void meshWingInSphere(const MesherOptions& options, TetMesh& mesh, int32_t* numBoundary = nullptr)
+// The mesher's result for the domain.
+inline void meshWingInSphere(const MesherOptions& options, MesherResult& r)
 {
   SurfaceMesh wing;
   ASSERT_TRUE(readSurface(std::string(VOLGRID_TEST_DATA_DIR) + "/straight_wing.stl", wing).ok());
@@ -24,8 +24,15 @@ inline void meshWingInSphere(const MesherOptions& options, TetMesh& mesh, int32_
   SurfaceMesh sphere;
   ASSERT_TRUE(makeEnclosure(enclosureAround(boundingBox(wing, true), EnclosureShape::Sphere, 5.0), sphere).ok());
   wing.append(sphere);
-  MesherResult r;
   ASSERT_TRUE(meshSurface(wing, options, r).ok());
+}
+
+// numBoundary (optional): the input points, the first vertices of the mesh (the boundary vertices).
+inline void meshWingInSphere(const MesherOptions& options, TetMesh& mesh, int32_t* numBoundary = nullptr)
+{
+  MesherResult r;
+  meshWingInSphere(options, r);
+  ASSERT_FALSE(r.tets.empty());
   if (numBoundary)
     *numBoundary = r.numInputPoints;
   ASSERT_TRUE(tetMeshFromTets(r.points, r.tets, mesh).ok());
