@@ -18,7 +18,7 @@
 //      (TetNeeds). The split rounds before this step judge a point by the worst raw quality, so a boundary
 //      tet at 11 degrees beside the cavity blocks a point that would lift an interior tet from 12 to 16;
 //      here that boundary tet has what it must have. On the ONERA M6 domain this leaves 56 bad interior
-//      tets where steps 1 to 3 left 62 (the handle model: 496 against 547).
+//      tets where steps 1 to 3 left 62 (the handle model: 502 against 547).
 // What never gets worse: no tet falls under min(its quality, the angle it must reach) nor under the mesh's
 // worst at the start (so the smallest and the largest dihedral angle hold), the share of tets under 10
 // degrees does not rise, and an edit that adds a severely non-orthogonal face (checkMesh's 70 degrees)
@@ -61,8 +61,9 @@ struct InteriorPolishReport
 };
 
 // boundaryVertex[v] != 0: v is on the boundary (tets holding it are not interior). locked (optional): more
-// vertices that never move (cluster points). The editor's vertex map must be current; it stays so (no tet
-// changes; points added by step 4 are in it). Errors: Cancelled (the mesh is valid; the edits made stay).
+// vertices that never move (cluster points). The editor's vertex map must be current; it stays so, for the
+// points step 4 adds too. The editor's labels (optional, per tet slot: the region) go to each new tet from
+// the tets it replaces. Errors: Cancelled (the mesh is valid; the edits made stay).
 Status polishInterior(TetEditor& editor, const std::vector<uint8_t>& boundaryVertex,
                       const std::vector<uint8_t>* locked, const InteriorPolishOptions& options,
                       Progress* progress = nullptr, InteriorPolishReport* report = nullptr);
